@@ -1,0 +1,29 @@
+#pragma once
+// Runs a scene: reads it strictly, computes only what its analysis needs,
+// writes the products into the output directory and returns a summary.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cyclone/fe/LinearAlgebra.hpp"
+
+namespace cyclone::scenes {
+
+struct SceneOverrides {
+  std::optional<std::string> outputDirectory;
+  std::optional<double> meshSize;  ///< built-in sector only
+};
+
+struct SceneSummary {
+  std::vector<std::string> computed;  ///< one line per result, for the final summary
+  std::vector<std::string> written;   ///< files produced
+};
+
+/// `source` names the scene in messages (a file name or "embedded demo scene").
+SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
+                          linalg::CommPtr comm);
+SceneSummary runSceneFile(const std::string& path, const SceneOverrides& overrides, linalg::CommPtr comm);
+/// The embedded default scene (drivers/scenes/demo.yaml).
+const char* demoScene();
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,43 @@
+#pragma once
+// Strict reading of a scene (Teuchos YAML parameter list): every value is
+// checked for type and range, and a key the code does not know is an error
+// naming the file and the full key path, so a typo never silently falls back
+// to a default.
+#include <Teuchos_ParameterList.hpp>
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace cyclone::scenes {
+
+class SceneSection {
+public:
+  SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path);
+
+  bool has(const std::string& key) const;
+  double getDouble(const std::string& key, double fallback);
+  double requireDouble(const std::string& key);
+  int getInt(const std::string& key, int fallback);
+  std::string getString(const std::string& key, const std::string& fallback);
+  std::vector<std::string> getStringList(const std::string& key, const std::vector<std::string>& fallback);
+  std::array<double, 3> getVector3(const std::string& key, const std::array<double, 3>& fallback);
+  SceneSection section(const std::string& key);  ///< empty section if absent
+  std::vector<std::string> sectionNames();       ///< names of all sublists (marks them used)
+
+  /// Throws InputError for any key that was never asked for.
+  void rejectUnknownKeys() const;
+  /// "file: parameter 'path/key'" for messages.
+  std::string where(const std::string& key) const;
+  /// "file: section 'path'" for messages about the section as a whole.
+  std::string location() const;
+
+private:
+  const Teuchos::ParameterList& list_;
+  std::string file_, path_;
+  std::set<std::string> used_;
+  void markUsed(const std::string& key);
+};
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,115 @@
+#include "cyclone/scenes/SceneSection.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::scenes {
+
+namespace {
+const Teuchos::ParameterList& emptyList() {
+  static const Teuchos::ParameterList empty;
+  return empty;
+}
+}  // namespace
+
+SceneSection::SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path)
+    : list_(list), file_(std::move(file)), path_(std::move(path)) {}
+
+std::string SceneSection::where(const std::string& key) const {
+  return file_ + ": parameter '" + (path_.empty() ? key : path_ + "/" + key) + "'";
+}
+
+std::string SceneSection::location() const { return file_ + ": section '" + path_ + "'"; }
+
+void SceneSection::markUsed(const std::string& key) { used_.insert(key); }
+
+bool SceneSection::has(const std::string& key) const { return list_.isParameter(key); }
+
+double SceneSection::getDouble(const std::string& key, double fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<double>(key)) return list_.get<double>(key);
+  if (list_.isType<int>(key)) return list_.get<int>(key);
+  throw InputError(where(key), "expected a number, got '" + list_.getEntry(key).getAny().typeName() + "'");
+}
+
+double SceneSection::requireDouble(const std::string& key) {
+  if (!has(key)) throw InputError(where(key), "is required");
+  return getDouble(key, 0.0);
+}
+
+int SceneSection::getInt(const std::string& key, int fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<int>(key)) return list_.get<int>(key);
+  throw InputError(where(key), "expected an integer");
+}
+
+std::string SceneSection::getString(const std::string& key, const std::string& fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<std::string>(key)) return list_.get<std::string>(key);
+  throw InputError(where(key), "expected a string");
+}
+
+std::vector<std::string> SceneSection::getStringList(const std::string& key, const std::vector<std::string>& fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<Teuchos::Array<std::string>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<std::string>>(key);
+    return std::vector<std::string>(a.begin(), a.end());
+  }
+  if (list_.isType<std::string>(key)) return {list_.get<std::string>(key)};
+  throw InputError(where(key), "expected a list of names, e.g. [bore]");
+}
+
+std::array<double, 3> SceneSection::getVector3(const std::string& key, const std::array<double, 3>& fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  std::vector<double> v;
+  if (list_.isType<Teuchos::Array<double>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<double>>(key);
+    v.assign(a.begin(), a.end());
+  } else if (list_.isType<Teuchos::Array<int>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<int>>(key);
+    v.assign(a.begin(), a.end());
+  } else {
+    throw InputError(where(key), "expected a list of 3 numbers, e.g. [0.0, 0.0, 1.0]");
+  }
+  if (v.size() != 3) throw InputError(where(key), "expected 3 numbers, got " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+SceneSection SceneSection::section(const std::string& key) {
+  markUsed(key);
+  const std::string path = path_.empty() ? key : path_ + "/" + key;
+  if (!has(key)) return SceneSection(emptyList(), file_, path);
+  if (!list_.isSublist(key)) throw InputError(where(key), "expected a section (a map of parameters)");
+  return SceneSection(list_.sublist(key), file_, path);
+}
+
+std::vector<std::string> SceneSection::sectionNames() {
+  std::vector<std::string> names;
+  for (auto it = list_.begin(); it != list_.end(); ++it) {
+    const auto& name = list_.name(it);
+    if (list_.isSublist(name)) {
+      names.push_back(name);
+      markUsed(name);
+    }
+  }
+  return names;
+}
+
+void SceneSection::rejectUnknownKeys() const {
+  for (auto it = list_.begin(); it != list_.end(); ++it) {
+    const auto& name = list_.name(it);
+    if (!used_.count(name)) {
+      std::string known;
+      for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
+      throw InputError(where(name), "unknown key (known here: " + known + ")");
+    }
+  }
+}
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,30 @@
+#include "cyclone/core/Log.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+namespace cyclone::log {
+namespace {
+bool g_quiet = false;
+int g_rank = 0;
+const auto g_start = std::chrono::steady_clock::now();
+double elapsed() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - g_start).count();
+}
+}  // namespace
+
+void setQuiet(bool quiet) { g_quiet = quiet; }
+void setRank(int rank) { g_rank = rank; }
+
+void info(const std::string& message) {
+  if (g_quiet || g_rank != 0) return;
+  std::printf("[cyclone %7.1fs] %s\n", elapsed(), message.c_str());
+  std::fflush(stdout);
+}
+
+void warn(const std::string& message) {
+  if (g_rank != 0) return;
+  std::fprintf(stderr, "[cyclone %7.1fs] warning: %s\n", elapsed(), message.c_str());
+}
+
+}  // namespace cyclone::log

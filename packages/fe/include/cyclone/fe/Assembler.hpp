@@ -1,0 +1,65 @@
+#pragma once
+// Global FE operators of a mesh on MPI ranks: Tpetra FECrsGraph/FECrsMatrix
+// and FEMultiVector assembly (owned + shared rows), elements distributed over
+// the ranks, constrained DOFs eliminated by the DofMap.
+//
+// The mesh is replicated on every rank (each rank reads or generates it); each
+// rank owns a contiguous range of equations and assembles the elements whose
+// lowest equation it owns. A partitioned mesh would change only this class.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "cyclone/fe/DofMap.hpp"
+#include "cyclone/fe/ElementKernels.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/mesh/Mesh.hpp"
+
+namespace cyclone::fe {
+
+class Assembler {
+public:
+  struct Impl;  // Tpetra graph, maps and importer: defined in Assembler.cpp only
+  Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr comm);
+  ~Assembler();
+  Assembler(const Assembler&) = delete;
+  Assembler& operator=(const Assembler&) = delete;
+
+  const mesh::Mesh& mesh() const { return mesh_; }
+  const DofMap& dofs() const { return dofs_; }
+  linalg::CommPtr comm() const;
+  /// Owned equations of this rank (row, domain and range map of every operator).
+  Teuchos::RCP<const linalg::Map> map() const;
+
+  Teuchos::RCP<linalg::Matrix> stiffness(const IsotropicElastic& material) const;
+  Teuchos::RCP<linalg::Matrix> mass(const IsotropicElastic& material) const;
+  /// Centrifugal body load at angular speed omega (rad/s) about the axis, undeformed geometry.
+  Teuchos::RCP<linalg::MultiVector> centrifugalLoad(const IsotropicElastic& material, double omega,
+                                                    const Axis& axis) const;
+  /// Uniform body force density b (force per volume), e.g. gravity rho*g.
+  Teuchos::RCP<linalg::MultiVector> bodyLoad(const Eigen::Vector3d& b) const;
+  /// Force on each listed node (components on constrained DOFs are dropped).
+  Teuchos::RCP<linalg::MultiVector> nodalLoad(const std::vector<mesh::Index>& nodes,
+                                              const Eigen::Vector3d& forcePerNode) const;
+
+  /// The 6 rigid-body motions (3 translations, 3 rotations about the origin) on the free
+  /// DOFs: MueLu's near null space for elasticity, and a check for free-body models.
+  Teuchos::RCP<linalg::MultiVector> rigidBodyModes() const;
+
+  /// Full nodal field (numNodes x 3, zeros on constrained components) of column `column`
+  /// of a distributed solution, the same on every rank.
+  std::vector<std::array<double, 3>> nodalField(const linalg::MultiVector& u, int column = 0) const;
+
+  /// Elements assembled on this rank (global element indices).
+  const std::vector<mesh::Index>& localElements() const;
+  /// Element coordinates (n x 3) of a global element.
+  ElementCoords elementCoords(mesh::Index globalElement) const;
+
+private:
+  const mesh::Mesh& mesh_;
+  const DofMap& dofs_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cyclone::fe

@@ -1,0 +1,51 @@
+#pragma once
+// Element kernels: pure functions of the element's node coordinates and the
+// material. No mesh, no Trilinos. Element DOFs are node-major:
+// [u0x u0y u0z u1x ...]. Node order is Exodus order (ElementType.hpp).
+#include <Eigen/Dense>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/mesh/ElementType.hpp"
+
+namespace cyclone::fe {
+
+using mesh::ElementType;
+using ElementCoords = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // n x 3
+
+/// Rotation axis: a point on it and a direction (normalised by the kernels).
+struct Axis {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+};
+
+/// Thrown when det J <= 0 at an integration point; the assembler adds the element id.
+/// A det J below 1e-14 h^3 (h the element's bounding-box diagonal) counts as zero: that
+/// element is flat to round-off.
+class InvalidElementGeometry : public Error {
+public:
+  InvalidElementGeometry(int point, double detJ);
+  int point;
+  double detJ;
+};
+
+/// Linear elastic stiffness (3n x 3n), stiffnessRule.
+Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat);
+/// Consistent mass (3n x 3n), massRule.
+Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho);
+/// Consistent centrifugal body load  int N^T rho Omega^2 r_perp dV  (3n), r_perp the
+/// distance vector from the axis at the undeformed position; massRule.
+Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
+                                       const Axis& axis);
+/// Consistent load of a uniform body force density b (force/volume) (3n).
+Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b);
+/// Element volume.
+double elementVolume(ElementType type, const ElementCoords& X);
+/// Small-strain Cauchy stress (Voigt xx yy zz yz xz xy) at each stiffness-rule point for the
+/// element displacement vector ue (3n); one row per point.
+Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const ElementCoords& X,
+                                                         const IsotropicElastic& mat, const Eigen::VectorXd& ue);
+/// von Mises equivalent of a Voigt stress.
+double vonMises(const Eigen::Matrix<double, 6, 1>& s);
+
+}  // namespace cyclone::fe

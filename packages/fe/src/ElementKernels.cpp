@@ -1,0 +1,226 @@
+#include "cyclone/fe/ElementKernels.hpp"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cyclone/mesh/ReferenceElement.hpp"
+
+namespace cyclone::fe {
+
+namespace {
+
+std::string geometryMessage(int point, double detJ) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "inverted or degenerate element: det J = " << detJ << " at integration point " << point;
+  return s.str();
+}
+
+// Shape values and reference gradients at the points of one rule, computed once per
+// (element type, rule): the kernels then do no shape-function work per element.
+struct ShapeTable {
+  std::vector<double> weights;
+  std::vector<mesh::ShapeValues> N;
+  std::vector<mesh::ShapeGradients> dN;
+  int numPoints() const { return static_cast<int>(weights.size()); }
+};
+
+ShapeTable tabulate(ElementType type, const mesh::QuadratureRule& rule) {
+  ShapeTable t;
+  t.weights = rule.weights;
+  t.N.resize(rule.points.size());
+  t.dN.resize(rule.points.size());
+  for (std::size_t q = 0; q < rule.points.size(); ++q) mesh::evaluateShape(type, rule.points[q], t.N[q], t.dN[q]);
+  return t;
+}
+
+enum class Rule { Stiffness, Mass };
+
+const ShapeTable& shapeTable(ElementType type, Rule rule) {
+  constexpr std::array<ElementType, 4> types = {ElementType::Tet4, ElementType::Tet10, ElementType::Hex8,
+                                                ElementType::Hex20};
+  static const std::array<ShapeTable, 8> tables = [&] {
+    std::array<ShapeTable, 8> all;
+    for (int i = 0; i < 4; ++i) {
+      all[2 * i] = tabulate(types[i], mesh::stiffnessRule(types[i]));
+      all[2 * i + 1] = tabulate(types[i], mesh::massRule(types[i]));
+    }
+    return all;
+  }();
+  return tables[2 * static_cast<int>(type) + (rule == Rule::Mass ? 1 : 0)];
+}
+
+int checkedNodeCount(ElementType type, const ElementCoords& X) {
+  const int n = mesh::nodesPerElement(type);
+  if (X.rows() != n)
+    throw Error("element kernel: " + std::to_string(X.rows()) + " coordinate rows for a " +
+                mesh::exodusName(type) + " element of " + std::to_string(n) + " nodes");
+  return n;
+}
+
+// det J below this fraction of (bounding-box diagonal)^3 is round-off of a flat element:
+// treated as degenerate like det J <= 0, since its stiffness would be meaningless.
+constexpr double kDegenerateRelativeDetJ = 1e-14;
+
+double degenerateDetJ(const ElementCoords& X) {
+  const double h = (X.colwise().maxCoeff() - X.colwise().minCoeff()).norm();
+  return kDegenerateRelativeDetJ * h * h * h;
+}
+
+// Jacobian J(i,j) = dx_i/dxi_j at point q; throws for an inverted or degenerate element.
+Eigen::Matrix3d jacobian(const ShapeTable& t, int q, const ElementCoords& X, double floor, double& detJ) {
+  const Eigen::Matrix3d J = X.transpose().lazyProduct(t.dN[q]);
+  detJ = J.determinant();
+  if (!(detJ > floor)) throw InvalidElementGeometry(q, detJ);
+  return J;
+}
+
+// Strain-displacement matrix, Voigt xx yy zz yz xz xy with engineering shear, from the
+// physical gradients G (n x 3); B must be 6 x 3n and zero outside the filled pattern.
+void fillB(const ElementCoords& G, Eigen::Matrix<double, 6, Eigen::Dynamic>& B) {
+  for (Eigen::Index a = 0; a < G.rows(); ++a) {
+    const double gx = G(a, 0), gy = G(a, 1), gz = G(a, 2);
+    const Eigen::Index c = 3 * a;
+    B(0, c) = gx;
+    B(1, c + 1) = gy;
+    B(2, c + 2) = gz;
+    B(3, c + 1) = gz, B(3, c + 2) = gy;
+    B(4, c) = gz, B(4, c + 2) = gx;
+    B(5, c) = gy, B(5, c + 1) = gx;
+  }
+}
+
+// B at rule point q; returns w * det J.
+double strainDisplacement(const ShapeTable& t, int q, const ElementCoords& X, double floor, ElementCoords& G,
+                          Eigen::Matrix<double, 6, Eigen::Dynamic>& B) {
+  double detJ;
+  const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
+  const Eigen::Matrix3d Jinv = J.inverse();
+  G.noalias() = t.dN[q].lazyProduct(Jinv);  // dN/dx = dN/dxi * dxi/dx
+  fillB(G, B);
+  return t.weights[q] * detJ;
+}
+
+Eigen::Vector3d unitAxis(const Axis& axis) {
+  const double norm = axis.direction.norm();
+  if (!(norm > 0) || !std::isfinite(norm)) throw Error("centrifugal load: the rotation axis direction is zero");
+  return axis.direction / norm;
+}
+
+}  // namespace
+
+InvalidElementGeometry::InvalidElementGeometry(int point, double detJ)
+    : Error(geometryMessage(point, detJ)), point(point), detJ(detJ) {}
+
+Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat) {
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Stiffness);
+  const double floor = degenerateDetJ(X);
+  const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, 3 * n), DB(6, 3 * n);
+  ElementCoords G(n, 3);
+  for (int q = 0; q < t.numPoints(); ++q) {
+    const double wdetJ = strainDisplacement(t, q, X, floor, G, B);
+    DB.noalias() = wdetJ * D * B;
+    K.noalias() += B.transpose() * DB;
+  }
+  // Exactly symmetric, whatever the product's summation order did.
+  K = 0.5 * (K + K.transpose()).eval();
+  return K;
+}
+
+Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho) {
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Mass);
+  const double floor = degenerateDetJ(X);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);  // scalar mass, the same for each direction
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    jacobian(t, q, X, floor, detJ);
+    m.selfadjointView<Eigen::Lower>().rankUpdate(t.N[q], rho * t.weights[q] * detJ);
+  }
+  m = m.selfadjointView<Eigen::Lower>();  // exactly symmetric
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      for (int d = 0; d < 3; ++d) M(3 * a + d, 3 * b + d) = m(a, b);
+  return M;
+}
+
+Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
+                                       const Axis& axis) {
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Mass);
+  const double floor = degenerateDetJ(X);
+  const Eigen::Vector3d a = unitAxis(axis);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    jacobian(t, q, X, floor, detJ);
+    const Eigen::Vector3d x = X.transpose().lazyProduct(t.N[q]);
+    Eigen::Vector3d r = x - axis.point;
+    r -= r.dot(a) * a;  // distance vector from the axis
+    const Eigen::Vector3d density = (rho * omega * omega * t.weights[q] * detJ) * r;
+    for (int b = 0; b < n; ++b) f.segment<3>(3 * b) += t.N[q][b] * density;
+  }
+  return f;
+}
+
+Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b) {
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Mass);
+  const double floor = degenerateDetJ(X);
+  Eigen::VectorXd nodal = Eigen::VectorXd::Zero(n);  // int N_a dV
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    jacobian(t, q, X, floor, detJ);
+    nodal += (t.weights[q] * detJ) * t.N[q];
+  }
+  Eigen::VectorXd f(3 * n);
+  for (int a = 0; a < n; ++a) f.segment<3>(3 * a) = nodal[a] * b;
+  return f;
+}
+
+double elementVolume(ElementType type, const ElementCoords& X) {
+  checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Mass);  // the rule of the mass matrix: total mass = rho * volume
+  const double floor = degenerateDetJ(X);
+  double volume = 0;
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    jacobian(t, q, X, floor, detJ);
+    volume += t.weights[q] * detJ;
+  }
+  return volume;
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const ElementCoords& X,
+                                                         const IsotropicElastic& mat, const Eigen::VectorXd& ue) {
+  const int n = checkedNodeCount(type, X);
+  if (ue.size() != 3 * n)
+    throw Error("elementStresses: displacement vector of size " + std::to_string(ue.size()) + " for a " +
+                mesh::exodusName(type) + " element of " + std::to_string(n) + " nodes");
+  const auto& t = shapeTable(type, Rule::Stiffness);
+  const double floor = degenerateDetJ(X);
+  const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, 3 * n);
+  ElementCoords G(n, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 6> S(t.numPoints(), 6);
+  for (int q = 0; q < t.numPoints(); ++q) {
+    strainDisplacement(t, q, X, floor, G, B);
+    const Eigen::Matrix<double, 6, 1> strain = B * ue;
+    S.row(q) = (D * strain).transpose();
+  }
+  return S;
+}
+
+double vonMises(const Eigen::Matrix<double, 6, 1>& s) {
+  const double dxy = s[0] - s[1], dyz = s[1] - s[2], dzx = s[2] - s[0];
+  return std::sqrt(0.5 * (dxy * dxy + dyz * dyz + dzx * dzx) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+}  // namespace cyclone::fe

@@ -1,0 +1,31 @@
+#pragma once
+// Pairs the nodes of two faces related by a rotation about an axis (the left
+// and right side faces of a cyclic sector): right[i] sits at R(angle) left[i].
+#include <string>
+#include <vector>
+
+#include "cyclone/mesh/Mesh.hpp"
+
+namespace cyclone::mesh {
+
+struct RotationAxis {
+  Point point{0, 0, 0};
+  Point direction{0, 0, 1};
+};
+
+/// Rotates p by `angle` (radians, right-handed) about the axis.
+Point rotate(const Point& p, double angle, const RotationAxis& axis);
+
+struct NodePairing {
+  std::vector<Index> left, right;  ///< right[i] = partner of left[i]
+  double maxDistance = 0;          ///< largest |R x_left - x_right| over the pairs
+};
+
+/// Every node of `left` must find exactly one node of `right` within `tolerance`
+/// of its rotated position, and the counts must agree; otherwise InputError naming
+/// `what` (e.g. "shroud faces"), how many nodes failed, the first few with their
+/// ids and distances.
+NodePairing pairRotatedNodes(const Mesh& mesh, const std::vector<Index>& left, const std::vector<Index>& right,
+                             double angle, const RotationAxis& axis, double tolerance, const std::string& what);
+
+}  // namespace cyclone::mesh

@@ -1,0 +1,195 @@
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/mesh/GmshIO.hpp"
+#include "cyclone/mesh/MeshGeometryCheck.hpp"
+#include "cyclone/mesh/RotatedNodePairing.hpp"
+
+namespace cyclone::mesh {
+
+void ShroudedSectorParameters::validate(const std::string& where) const {
+  auto need = [&](bool ok, const std::string& param, const std::string& why) {
+    if (!ok) throw InputError(where, "parameter '" + param + "' " + why);
+  };
+  need(sectors >= 3, "sectors", "must be at least 3");
+  need(boreRadius > 0, "bore_radius", "must be positive");
+  need(rimRadius > boreRadius, "rim_radius", "must exceed bore_radius");
+  need(discThickness > 0, "disc_thickness", "must be positive");
+  need(bladeHeight > 0, "blade_height", "must be positive");
+  need(bladeChord > 0, "blade_chord", "must be positive");
+  need(bladeThickness > 0, "blade_thickness", "must be positive");
+  need(shroudThickness > 0, "shroud_thickness", "must be positive");
+  need(shroudWidth > 0, "shroud_width", "must be positive");
+  need(meshSize > 0, "mesh_size", "must be positive");
+  need(elementOrder == 1 || elementOrder == 2, "element_order", "must be 1 (tet4) or 2 (tet10)");
+  need(std::abs(bladeStaggerDeg) < 80, "blade_stagger_deg", "must lie in (-80, 80) degrees");
+  const double stagger = bladeStaggerDeg * M_PI / 180;
+  const double tangential = bladeChord * std::abs(std::sin(stagger)) + bladeThickness * std::cos(stagger);
+  const double arcAtRim = 2 * rimRadius * std::sin(M_PI / sectors);
+  std::ostringstream why;
+  why << "makes the blade " << tangential << " wide tangentially, more than the sector's " << arcAtRim
+      << " at the rim: reduce chord or stagger, or the number of sectors";
+  need(tangential < 0.8 * arcAtRim, "blade_chord", why.str());
+  const double axial = bladeChord * std::cos(stagger) + bladeThickness * std::abs(std::sin(stagger));
+  need(axial <= discThickness, "blade_chord",
+       "makes the blade longer axially than the disc is thick (" + std::to_string(axial) + " > " +
+           std::to_string(discThickness) + ")");
+}
+
+namespace {
+
+// gmsh 4.8 throws std::string (or std::exception) from its API.
+template <class F>
+void gmshCall(const std::string& what, F&& f) {
+  try {
+    f();
+  } catch (const std::string& e) {
+    throw Error("gmsh failed while " + what + ": " + e);
+  } catch (const cyclone::Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error("gmsh failed while " + what + ": " + e.what());
+  }
+}
+
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+};
+
+double angleOf(double x, double y) { return std::atan2(y, x); }
+
+}  // namespace
+
+Mesh generateShroudedSector(const ShroudedSectorParameters& p) {
+  p.validate("shrouded sector");
+  const double alpha = 2 * M_PI / p.sectors;
+  const double rTip = p.tipRadius();
+  Timer timer;
+  GmshSession session;
+  Mesh mesh;
+  gmshCall("building the sector geometry", [&] {
+    namespace occ = gmsh::model::occ;
+    gmsh::model::add("shrouded_sector");
+    // Disc and shroud: differences of cylinder sectors spanning [0, alpha], turned to [-alpha/2, alpha/2].
+    const int discOuter = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.rimRadius, -1, alpha);
+    const int discInner = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.boreRadius, -1, alpha);
+    gmsh::vectorpair disc;
+    std::vector<gmsh::vectorpair> map;
+    occ::cut({{3, discOuter}}, {{3, discInner}}, disc, map);
+    const double rOut = rTip + p.shroudThickness;
+    const int shroudOuter = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rOut, -1, alpha);
+    const int shroudInner = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rTip, -1, alpha);
+    gmsh::vectorpair shroud;
+    occ::cut({{3, shroudOuter}}, {{3, shroudInner}}, shroud, map);
+    gmsh::vectorpair rings = disc;
+    rings.insert(rings.end(), shroud.begin(), shroud.end());
+    occ::rotate(rings, 0, 0, 0, 0, 0, 1, -alpha / 2);
+    // Blade: a plate along +x reaching into disc and shroud so the fuse bonds them, staggered about x.
+    const double overlapIn = std::min(2.0 * p.bladeThickness, 0.25 * (p.rimRadius - p.boreRadius));
+    const double overlapOut = 0.5 * p.shroudThickness;
+    const int blade = occ::addBox(p.rimRadius - overlapIn, -p.bladeThickness / 2, -p.bladeChord / 2,
+                                  p.bladeHeight + overlapIn + overlapOut, p.bladeThickness, p.bladeChord);
+    occ::rotate({{3, blade}}, 0, 0, 0, 1, 0, 0, p.bladeStaggerDeg * M_PI / 180);
+    gmsh::vectorpair fused;
+    std::vector<gmsh::vectorpair> fusedMap;
+    occ::fuse(disc, {{3, blade}, shroud[0]}, fused, fusedMap);
+    occ::synchronize();
+    if (fused.size() != 1)
+      throw Error("shrouded sector: disc, blade and shroud did not fuse into one volume (" +
+                  std::to_string(fused.size()) + " volumes)");
+    gmsh::model::addPhysicalGroup(3, {fused[0].second}, 1);
+    gmsh::model::setPhysicalName(3, 1, "sector");
+
+    // Side faces: planar faces whose centre of mass lies at angle -alpha/2 (left) or +alpha/2 (right).
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    struct Face { int tag; double r, z; };
+    std::vector<Face> left, right;
+    for (const auto& [dim, tag] : surfaces) {
+      double x, y, z;
+      occ::getCenterOfMass(dim, tag, x, y, z);
+      const double a = angleOf(x, y), r = std::hypot(x, y);
+      if (std::abs(a + alpha / 2) < 1e-9) left.push_back({tag, r, z});
+      if (std::abs(a - alpha / 2) < 1e-9) right.push_back({tag, r, z});
+    }
+    if (left.size() != 2 || right.size() != 2)
+      throw Error("shrouded sector: expected 2 side faces per side (disc, shroud), found " +
+                  std::to_string(left.size()) + " left and " + std::to_string(right.size()) + " right");
+    auto byRadius = [](const Face& a, const Face& b) { return a.r < b.r; };
+    std::sort(left.begin(), left.end(), byRadius);
+    std::sort(right.begin(), right.end(), byRadius);
+    // Right = R(alpha) left: gmsh's affine transform maps the master (left) onto the slave (right).
+    const double c = std::cos(alpha), s = std::sin(alpha);
+    const std::vector<double> T = {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    gmsh::model::mesh::setPeriodic(2, {right[0].tag, right[1].tag}, {left[0].tag, left[1].tag}, T);
+
+    gmsh::option::setNumber("Mesh.CharacteristicLengthMax", p.meshSize);
+    gmsh::option::setNumber("Mesh.CharacteristicLengthMin", 0.0);
+    // A thin blade needs elements no thicker than itself to bend right.
+    gmsh::vectorpair bladePoints;
+    gmsh::model::getEntitiesInBoundingBox(p.rimRadius - 1e-6, -rTip, -p.discThickness, rTip + 1e-6, rTip,
+                                          p.discThickness, bladePoints, 0);
+    gmsh::model::mesh::setSize(bladePoints, std::min(p.meshSize, 2.0 * p.bladeThickness));
+    gmsh::option::setNumber("Mesh.ElementOrder", p.elementOrder);
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay
+    std::ostringstream msg;
+    msg << "meshing the shrouded sector (" << p.sectors << " sectors, mesh size " << p.meshSize << ")";
+    log::info(msg.str());
+    gmsh::model::mesh::generate(3);
+    mesh = meshFromGmshModel("built-in shrouded sector");
+  });
+
+  // Named node sets from the geometry (tolerance relative to the model size).
+  const double tol = 1e-7 * rTip;
+  std::vector<Index> bore, discL, discR, shroudL, shroudR;
+  const double cl = std::cos(-alpha / 2), sl = std::sin(-alpha / 2), cr = std::cos(alpha / 2), sr = std::sin(alpha / 2);
+  Index midBlade = -1;
+  double best = 1e300;
+  const double rMid = p.rimRadius + 0.5 * p.bladeHeight;
+  for (Index n = 0; n < mesh.numNodes(); ++n) {
+    const auto& x = mesh.coords[n];
+    const double r = std::hypot(x[0], x[1]);
+    if (std::abs(r - p.boreRadius) < tol) bore.push_back(n);
+    // Distance to the cyclic planes through the axis at -alpha/2 and +alpha/2 (normals in the xy-plane).
+    const double dLeft = std::abs(-sl * x[0] + cl * x[1]), dRight = std::abs(-sr * x[0] + cr * x[1]);
+    const bool onLeft = dLeft < tol && (cl * x[0] + sl * x[1]) > 0;
+    const bool onRight = dRight < tol && (cr * x[0] + sr * x[1]) > 0;
+    if (onLeft) (r < p.rimRadius + tol ? discL : shroudL).push_back(n);
+    if (onRight) (r < p.rimRadius + tol ? discR : shroudR).push_back(n);
+    const double d = std::hypot(x[0] - rMid, x[1], x[2]);
+    if (d < best) best = d, midBlade = n;
+  }
+  mesh.nodeSets["bore"] = bore;
+  mesh.nodeSets["disc_left"] = discL;
+  mesh.nodeSets["disc_right"] = discR;
+  mesh.nodeSets["shroud_left"] = shroudL;
+  mesh.nodeSets["shroud_right"] = shroudR;
+  mesh.nodeSets["mid_blade"] = {midBlade};
+  const RotationAxis axis;
+  pairRotatedNodes(mesh, discL, discR, alpha, axis, 1e-6 * rTip, "disc side faces");
+  const auto contact = pairRotatedNodes(mesh, shroudL, shroudR, alpha, axis, 1e-6 * rTip, "shroud side faces");
+  mesh.nodeSets["shroud_contact_left"] = contact.left;
+  mesh.nodeSets["shroud_contact_right"] = contact.right;
+  checkConsistency(mesh);
+  checkElementGeometry(mesh);
+  std::ostringstream msg;
+  msg << "shrouded sector: " << mesh.numNodes() << " nodes, " << mesh.numElements() << " "
+      << exodusName(mesh.blocks[0].type) << " elements, " << discL.size() << "+" << shroudL.size()
+      << " nodes per side face, " << timer.seconds() << " s";
+  log::info(msg.str());
+  return mesh;
+}
+
+}  // namespace cyclone::mesh

@@ -1,0 +1,37 @@
+#pragma once
+// Generalised symmetric eigenproblem K x = lambda M x, lowest modes, by
+// Anasazi's block Krylov-Schur on the shift-inverted operator (K - sigma M)^{-1} M
+// with the CHOLMOD factorization. Block size >= 2 so that double modes (cyclic
+// pairs, symmetric structures) are caught together.
+#include <vector>
+
+#include "cyclone/fe/LinearAlgebra.hpp"
+
+namespace cyclone::solvers {
+
+struct ModalOptions {
+  int numModes = 10;
+  /// Shift sigma in (rad/s)^2; must lie below the lowest eigenvalue so that
+  /// K - sigma M is positive definite. 0 suits constrained models. A free body
+  /// needs a negative shift of the order of its first elastic eigenvalue: a tiny
+  /// one leaves K - sigma M so ill-conditioned that elastic modes cannot converge.
+  double shift = 0.0;
+  int blockSize = 4;  ///< at least the largest multiplicity sought (6 for a free body)
+  int numBlocks = 0;  ///< Krylov blocks; 0 picks enough for numModes
+  double tolerance = 1e-10;
+  int maxRestarts = 200;
+};
+
+struct ModalResult {
+  std::vector<double> eigenvalues;   ///< omega^2, ascending
+  std::vector<double> frequenciesHz;
+  std::vector<double> residuals;     ///< ||K x - lambda M x|| / ((||K||_F + |lambda| ||M||_F) ||x||)
+  Teuchos::RCP<linalg::MultiVector> modes;  ///< mass-normalised: x^T M x = 1
+  int operatorApplies = 0;
+  double factorSeconds = 0, solveSeconds = 0;
+};
+
+/// Throws SolverError when fewer than numModes converge (with how many did).
+ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options);
+
+}  // namespace cyclone::solvers

@@ -1,0 +1,142 @@
+// The only translation unit that instantiates Anasazi's solver manager: it is
+// expensive to compile (about a minute), so nothing else includes Anasazi.
+#include "cyclone/solvers/ModalSolver.hpp"
+
+#include <AnasaziBasicEigenproblem.hpp>
+#include <AnasaziBlockKrylovSchurSolMgr.hpp>
+#include <AnasaziTpetraAdapter.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numeric>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/solvers/DirectSolver.hpp"
+
+namespace cyclone::solvers {
+
+namespace {
+
+using OP = Tpetra::Operator<>;
+using MV = linalg::MultiVector;
+
+// Y = (K - sigma M)^{-1} M X
+class ShiftInvertOperator : public OP {
+public:
+  ShiftInvertOperator(const linalg::Matrix& M, const DirectSolver& solver) : M_(M), solver_(solver) {}
+  Teuchos::RCP<const linalg::Map> getDomainMap() const override { return M_.getDomainMap(); }
+  Teuchos::RCP<const linalg::Map> getRangeMap() const override { return M_.getRangeMap(); }
+  void apply(const MV& X, MV& Y, Teuchos::ETransp, double alpha, double beta) const override {
+    MV MX(X.getMap(), X.getNumVectors());
+    M_.apply(X, MX);
+    if (alpha == 1.0 && beta == 0.0) {
+      solver_.solve(MX, Y);
+    } else {
+      MV Z(Y.getMap(), Y.getNumVectors());
+      solver_.solve(MX, Z);
+      Y.update(alpha, Z, beta);
+    }
+    applies += int(X.getNumVectors());
+  }
+  mutable int applies = 0;
+
+private:
+  const linalg::Matrix& M_;
+  const DirectSolver& solver_;
+};
+
+}  // namespace
+
+ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& opt) {
+  ModalResult result;
+  const long long n = K.getGlobalNumRows();
+  if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
+  if (opt.numModes >= n)
+    throw InputError("modes", "asked for " + std::to_string(opt.numModes) + " modes of a model with only " +
+                                  std::to_string(n) + " free degrees of freedom");
+  Timer timer;
+  std::unique_ptr<DirectSolver> factored;
+  try {
+    factored = std::make_unique<DirectSolver>(K, &M, opt.shift);
+  } catch (const SolverError& e) {
+    throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
+                      std::to_string(opt.shift) +
+                      " must be positive definite; an unconstrained (free) model needs a negative shift "
+                      "of the order of its first elastic eigenvalue (2 pi f)^2");
+  }
+  const DirectSolver& solver = *factored;
+  result.factorSeconds = timer.seconds();
+
+  timer.restart();
+  auto op = Teuchos::rcp(new ShiftInvertOperator(M, solver));
+  const int bs = std::max(2, opt.blockSize);
+  const int nev = opt.numModes;
+  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(4, (2 * nev + bs - 1) / bs + 2);
+  nb = int(std::min<long long>(nb, std::max<long long>(2, n / bs - 1)));
+  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
+  X0->randomize();
+  auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, Teuchos::rcpFromRef(M), X0));
+  problem->setHermitian(true);
+  problem->setNEV(nev);
+  if (!problem->setProblem()) throw SolverError("Anasazi rejected the eigenproblem set-up");
+
+  Teuchos::ParameterList pl;
+  pl.set("Which", "LM");  // largest 1/(lambda - sigma): eigenvalues nearest the shift
+  pl.set("Block Size", bs);
+  pl.set("Num Blocks", nb);
+  pl.set("Maximum Restarts", opt.maxRestarts);
+  pl.set("Convergence Tolerance", opt.tolerance);
+  pl.set("Verbosity", int(Anasazi::Errors));
+  Anasazi::BlockKrylovSchurSolMgr<double, MV, OP> manager(problem, pl);
+  const auto status = manager.solve();
+  const auto& sol = problem->getSolution();
+  if (status != Anasazi::Converged || sol.numVecs < nev)
+    throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
+                      " modes converged after " + std::to_string(opt.maxRestarts) +
+                      " restarts (raise the restarts or block count, or move the shift)");
+
+  // lambda = sigma + 1/theta, ascending.
+  std::vector<int> order(sol.numVecs);
+  std::vector<double> lambda(sol.numVecs);
+  for (int i = 0; i < sol.numVecs; ++i) lambda[i] = opt.shift + 1.0 / sol.Evals[i].realpart;
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda[a] < lambda[b]; });
+
+  result.modes = Teuchos::rcp(new MV(K.getRowMap(), nev));
+  MV Kx(K.getRowMap(), 1), Mx(K.getRowMap(), 1);
+  const double normK = K.getFrobeniusNorm(), normM = M.getFrobeniusNorm();
+  for (int i = 0; i < nev; ++i) {
+    const int j = sol.index[order[i]];  // Hermitian problem: index is 0 for every real vector
+    (void)j;
+    auto src = sol.Evecs->getVector(order[i]);
+    auto dst = result.modes->getVectorNonConst(i);
+    dst->assign(*src);
+    // Mass normalisation (Anasazi returns M-orthonormal vectors; make it exact and explicit).
+    M.apply(*dst, Mx);
+    const double xMx = dst->dot(*Mx.getVector(0));
+    dst->scale(1.0 / std::sqrt(xMx));
+    const double lam = lambda[order[i]];
+    K.apply(*dst, Kx);
+    M.apply(*dst, Mx);
+    Kx.update(-lam, Mx, 1.0);
+    result.eigenvalues.push_back(lam);
+    result.frequenciesHz.push_back(std::sqrt(std::max(lam, 0.0)) / (2 * M_PI));
+    // Normwise backward error: meaningful for zero (rigid-body) eigenvalues too.
+    result.residuals.push_back(Kx.getVector(0)->norm2() / ((normK + std::abs(lam) * normM) * dst->norm2()));
+  }
+  for (int i = 0; i < nev; ++i)
+    if (!(result.residuals[i] < 1e-6))
+      throw SolverError("eigen-solution: mode " + std::to_string(i + 1) + " has relative residual " +
+                        std::to_string(result.residuals[i]) +
+                        " (ill-conditioned shift-invert: move the shift closer to the wanted eigenvalues)");
+  result.operatorApplies = op->applies;
+  result.solveSeconds = timer.seconds();
+  return result;
+}
+
+}  // namespace cyclone::solvers

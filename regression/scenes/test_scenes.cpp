@@ -1,0 +1,123 @@
+// Scenes through the library entry point: the demo's products exist and are
+// physically sane; bad scenes give errors naming the file and key and leave no
+// product behind.
+#include <Tpetra_Core.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/mesh/ExodusIO.hpp"
+#include "cyclone/scenes/SceneRunner.hpp"
+
+using namespace cyclone;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path freshDir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("cyclone_scene_test_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string smallScene(const std::string& extra = "", const std::string& sectorExtra = "") {
+  return "cyclone:\n"
+         "  analysis: static\n"
+         "  mesh:\n"
+         "    source: shrouded_sector\n"
+         "    shrouded_sector:\n"
+         "      mesh_size: 10.0\n" +
+         sectorExtra +
+         "  constraints:\n"
+         "    fixed_node_sets: [bore]\n"
+         "  loads:\n"
+         "    speed_rpm: 10000.0\n" +
+         extra;
+}
+
+// Runs a scene that must fail; returns the message.
+std::string failure(const std::string& yaml, const fs::path& dir) {
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  try {
+    scenes::runSceneText(yaml, "bad.yaml", o, Tpetra::getDefaultComm());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "scene did not fail";
+  return "";
+}
+
+}  // namespace
+
+TEST(Scenes, DemoSceneWritesSaneProducts) {
+  log::setQuiet(true);
+  const auto dir = freshDir("demo");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  o.meshSize = 10.0;
+  const auto summary = scenes::runSceneText(scenes::demoScene(), "demo", o, Tpetra::getDefaultComm());
+  ASSERT_EQ(summary.written.size(), 3u);
+  for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
+
+  const auto mesh = mesh::readExodus((dir / "static.exo").string());
+  const auto results = mesh::readExodusResults((dir / "static.exo").string());
+  ASSERT_EQ(results.steps.size(), 1u);
+  ASSERT_EQ(results.nodalNames.size(), 4u);
+  const auto& u = results.steps[0].nodal;
+  // The bore is fixed; the shroud moves outward under the centrifugal load.
+  for (auto n : mesh.nodeSet("bore"))
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(u[d][n], 0.0);
+  double radial = 0;
+  for (auto n : mesh.nodeSet("shroud_left")) {
+    const auto& x = mesh.coords[n];
+    radial += (x[0] * u[0][n] + x[1] * u[1][n]) / std::hypot(x[0], x[1]);
+  }
+  EXPECT_GT(radial, 0.0);
+  // No temporary files left behind.
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST(Scenes, UnknownKeyIsNamedWithItsPath) {
+  const auto dir = freshDir("unknown");
+  const auto msg = failure(smallScene("", "      sectorz: 12\n"), dir);
+  EXPECT_NE(msg.find("bad.yaml"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cyclone/mesh/shrouded_sector/sectorz"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "static.exo"));
+}
+
+TEST(Scenes, WrongTypeAndImpossibleGeometryAreReported) {
+  const auto dir = freshDir("types");
+  auto msg = failure(smallScene("", "      sectors: many\n"), dir);
+  EXPECT_NE(msg.find("sectors"), std::string::npos) << msg;
+  msg = failure(smallScene("", "      sectors: 90\n"), dir);  // blade wider than the sector
+  EXPECT_NE(msg.find("blade_chord"), std::string::npos) << msg;
+  msg = failure(smallScene("", "      rim_radius: 30.0\n"), dir);
+  EXPECT_NE(msg.find("rim_radius"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "static.exo"));
+}
+
+TEST(Scenes, MissingNodeSetAndMissingConstraintsAreReported) {
+  const auto dir = freshDir("sets");
+  std::string yaml = smallScene();
+  yaml = std::regex_replace(yaml, std::regex("\\[bore\\]"), "[hub]");
+  auto msg = failure(yaml, dir);
+  EXPECT_NE(msg.find("hub"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("bore"), std::string::npos) << "the message should list the sets that exist: " << msg;
+  yaml = std::regex_replace(smallScene(), std::regex("    fixed_node_sets: \\[bore\\]\n"), "");
+  msg = failure(yaml, dir);
+  EXPECT_NE(msg.find("fixed_node_sets"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "static.exo"));
+}
+
+TEST(Scenes, MissingMeshFileIsNamed) {
+  const auto dir = freshDir("file");
+  const std::string yaml = "cyclone:\n  analysis: mesh\n  mesh:\n    source: no_such_mesh.inp\n";
+  const auto msg = failure(yaml, dir);
+  EXPECT_NE(msg.find("no_such_mesh.inp"), std::string::npos) << msg;
+}

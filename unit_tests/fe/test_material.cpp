@@ -1,0 +1,75 @@
+// Isotropic elasticity: the stiffness matrix inverts the textbook compliance, and
+// validation rejects non-physical parameters with a message naming them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/fe/Material.hpp"
+
+using cyclone::InputError;
+using cyclone::fe::IsotropicElastic;
+
+namespace {
+
+// Compliance eps = S sigma: eps_xx = (s_xx - nu (s_yy + s_zz)) / E, gamma = 2 (1 + nu) tau / E.
+Eigen::Matrix<double, 6, 6> compliance(double E, double nu) {
+  Eigen::Matrix<double, 6, 6> S = Eigen::Matrix<double, 6, 6>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) S(i, j) = -nu / E;
+    S(i, i) = 1 / E;
+    S(i + 3, i + 3) = 2 * (1 + nu) / E;
+  }
+  return S;
+}
+
+TEST(IsotropicElastic, ElasticityInvertsTheCompliance) {
+  for (double nu : {-0.5, 0.0, 0.3, 0.34, 0.49}) {
+    IsotropicElastic m;
+    m.E = 2.1e5;
+    m.nu = nu;
+    const Eigen::Matrix<double, 6, 6> product = m.elasticity() * compliance(m.E, nu);
+    EXPECT_LT((product - Eigen::Matrix<double, 6, 6>::Identity()).cwiseAbs().maxCoeff(), 1e-12) << "nu = " << nu;
+  }
+}
+
+TEST(IsotropicElastic, UniaxialStressGivesYoungsModulusAndPoissonContraction) {
+  IsotropicElastic m;  // titanium defaults
+  Eigen::Matrix<double, 6, 1> strain;
+  strain << 1e-3, -m.nu * 1e-3, -m.nu * 1e-3, 0, 0, 0;
+  const Eigen::Matrix<double, 6, 1> stress = m.elasticity() * strain;
+  EXPECT_NEAR(stress[0], m.E * 1e-3, 1e-9 * m.E);
+  for (int i = 1; i < 6; ++i) EXPECT_NEAR(stress[i], 0.0, 1e-12 * m.E);
+}
+
+TEST(IsotropicElastic, ValidateAcceptsDefaults) { EXPECT_NO_THROW(IsotropicElastic().validate("scene.yaml")); }
+
+void expectRejected(const IsotropicElastic& m, const std::string& parameter) {
+  try {
+    m.validate("scene.yaml:7");
+    FAIL() << "accepted " << parameter;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "scene.yaml:7");
+    EXPECT_NE(std::string(e.what()).find(parameter), std::string::npos) << e.what();
+  }
+}
+
+TEST(IsotropicElastic, ValidateRejectsNonPhysicalParameters) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double E : {0.0, -1.0, nan}) {
+    IsotropicElastic m;
+    m.E = E;
+    expectRejected(m, "Young's modulus");
+  }
+  for (double nu : {0.5, 0.6, -1.0, nan}) {
+    IsotropicElastic m;
+    m.nu = nu;
+    expectRejected(m, "Poisson's ratio");
+  }
+  IsotropicElastic m;
+  m.rho = -1e-9;
+  expectRejected(m, "density");
+}
+
+}  // namespace

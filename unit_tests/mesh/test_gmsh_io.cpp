@@ -1,0 +1,192 @@
+// Gmsh: the node order conversion checked against gmsh's own reference elements,
+// and meshes built with the gmsh API here (a box), written to .msh and read back:
+// counts against gmsh's, volume against the box's, mid-edge nodes at mid-edges.
+#include <gtest/gtest.h>
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <set>
+
+#include "MeshTestSupport.hpp"
+#include "cyclone/mesh/GmshIO.hpp"
+#include "cyclone/mesh/GmshNodeOrder.hpp"
+#include "cyclone/mesh/MeshGeometryCheck.hpp"
+#include "cyclone/mesh/ReferenceElement.hpp"
+
+using namespace cyclone::mesh;
+using cyclone::mesh::testing::expectInputError;
+using cyclone::mesh::testing::maxMidEdgeOffset;
+using cyclone::mesh::testing::meshVolume;
+using cyclone::mesh::testing::TempDirectory;
+
+namespace {
+
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+};
+
+// gmsh's reference nodes, reordered by the conversion, must be Cyclone's reference nodes.
+TEST(GmshNodeOrder, MapsGmshReferenceNodesOntoCyclones) {
+  GmshSession session;
+  for (ElementType type : {ElementType::Tet4, ElementType::Tet10, ElementType::Hex8, ElementType::Hex20}) {
+    std::string name;
+    int dim = 0, order = 0, numNodes = 0, numPrimary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(gmshElementType(type), name, dim, order, numNodes, local, numPrimary);
+    SCOPED_TRACE(name);
+    ASSERT_EQ(dim, 3);
+    ASSERT_EQ(numNodes, nodesPerElement(type));
+    EXPECT_EQ(elementTypeFromGmsh(gmshElementType(type)), type);
+    const auto ours = referenceNodes(type);
+    const auto& fromGmsh = gmshNodeForExodusNode(type);
+    ASSERT_EQ(static_cast<int>(fromGmsh.size()), numNodes);
+    EXPECT_EQ(std::set<int>(fromGmsh.begin(), fromGmsh.end()).size(), fromGmsh.size());  // a permutation
+    // gmsh's tetrahedron is the unit one and its hexahedron is [-1,1]^3, like ours: no coordinate map needed.
+    for (int i = 0; i < numNodes; ++i)
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(local[3 * fromGmsh[i] + d], ours(i, d), 1e-14) << "Exodus node " << i << ", coordinate " << d;
+  }
+  EXPECT_FALSE(elementTypeFromGmsh(6).has_value());   // prism
+  EXPECT_FALSE(elementTypeFromGmsh(12).has_value());  // hex27
+}
+
+// A 2 x 1 x 0.5 box meshed with tet10, a named volume and a named face x = 0.
+struct BoxCounts {
+  std::size_t nodes = 0, tet10 = 0, nodesOnFixedFace = 0;
+};
+
+BoxCounts meshTet10Box(const std::string& mshPath) {
+  gmsh::model::add("box");
+  const int box = gmsh::model::occ::addBox(0, 0, 0, 2, 1, 0.5);
+  gmsh::model::occ::synchronize();
+  gmsh::model::addPhysicalGroup(3, {box}, 11);
+  gmsh::model::setPhysicalName(3, 11, "solid");
+  gmsh::vectorpair faces;
+  gmsh::model::getEntitiesInBoundingBox(-1e-6, -1e-6, -1e-6, 1e-6, 1 + 1e-6, 0.5 + 1e-6, faces, 2);
+  EXPECT_EQ(faces.size(), 1u);
+  gmsh::model::addPhysicalGroup(2, {faces[0].second}, 21);
+  gmsh::model::setPhysicalName(2, 21, "fixed");
+  gmsh::vectorpair origin;
+  gmsh::model::getEntitiesInBoundingBox(-1e-6, -1e-6, -1e-6, 1e-6, 1e-6, 1e-6, origin, 0);
+  EXPECT_EQ(origin.size(), 1u);
+  gmsh::model::addPhysicalGroup(0, {origin[0].second}, 31);  // the corner at the origin, unnamed
+  gmsh::option::setNumber("Mesh.CharacteristicLengthMax", 0.35);
+  gmsh::option::setNumber("Mesh.ElementOrder", 2);
+  gmsh::model::mesh::generate(3);
+  BoxCounts counts;
+  std::vector<std::size_t> nodeTags, elementTags, elementNodes;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(nodeTags, xyz, parametric, -1, -1, false, false);
+  counts.nodes = nodeTags.size();
+  for (std::size_t i = 0; i < nodeTags.size(); ++i) counts.nodesOnFixedFace += std::abs(xyz[3 * i]) < 1e-12;
+  gmsh::model::mesh::getElementsByType(11, elementTags, elementNodes);
+  counts.tet10 = elementTags.size();
+  gmsh::write(mshPath);
+  return counts;
+}
+
+TEST(GmshReader, Tet10BoxMatchesGmshAndGeometry) {
+  TempDirectory dir;
+  const std::string path = dir.file("box.msh");
+  BoxCounts counts;
+  {
+    GmshSession session;
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    counts = meshTet10Box(path);
+  }
+  ASSERT_GT(counts.tet10, 20u);
+  const Mesh mesh = readGmsh(path);
+  EXPECT_EQ(mesh.source, path);
+  EXPECT_EQ(static_cast<std::size_t>(mesh.numNodes()), counts.nodes);
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "solid");
+  EXPECT_EQ(mesh.blocks[0].type, ElementType::Tet10);
+  EXPECT_EQ(static_cast<std::size_t>(mesh.blocks[0].numElements()), counts.tet10);
+  EXPECT_NEAR(meshVolume(mesh), 2 * 1 * 0.5, 1e-12);
+  // Straight edges: every mid-edge node at its edge's midpoint (only true in the right node order).
+  EXPECT_LT(maxMidEdgeOffset(mesh), 1e-12);
+  EXPECT_NO_THROW(checkElementGeometry(mesh));
+  // Node set "fixed": exactly the nodes with x = 0, high-order ones included.
+  const auto& fixed = mesh.nodeSet("fixed");
+  EXPECT_EQ(fixed.size(), counts.nodesOnFixedFace);
+  for (Index n : fixed) EXPECT_EQ(mesh.coords[n][0], 0.0);
+  // The unnamed point group: the box corner at the origin.
+  ASSERT_EQ(mesh.nodeSet("point_31").size(), 1u);
+  EXPECT_EQ(mesh.coords[mesh.nodeSet("point_31")[0]], (Point{0, 0, 0}));
+  // Ids are gmsh's tags: unique and positive.
+  EXPECT_EQ(std::set<Index>(mesh.nodeIds.begin(), mesh.nodeIds.end()).size(), mesh.nodeIds.size());
+  EXPECT_GT(*std::min_element(mesh.nodeIds.begin(), mesh.nodeIds.end()), 0);
+}
+
+// Structured hex20 (serendipity) box without physical groups, converted from the live model.
+TEST(GmshModel, Hex20BoxWithoutPhysicalGroups) {
+  GmshSession session;
+  gmsh::model::add("bricks");
+  gmsh::model::occ::addBox(0, 0, 0, 3, 2, 1);
+  gmsh::model::occ::synchronize();
+  gmsh::vectorpair curves, surfaces, volumes;
+  gmsh::model::getEntities(curves, 1);
+  for (const auto& [dim, tag] : curves) gmsh::model::mesh::setTransfiniteCurve(tag, 3);
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [dim, tag] : surfaces) {
+    gmsh::model::mesh::setTransfiniteSurface(tag);
+    gmsh::model::mesh::setRecombine(dim, tag);
+  }
+  gmsh::model::getEntities(volumes, 3);
+  gmsh::model::mesh::setTransfiniteVolume(volumes[0].second);
+  gmsh::option::setNumber("Mesh.ElementOrder", 2);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 1);
+  gmsh::model::mesh::generate(3);
+
+  const Mesh mesh = meshFromGmshModel("bricks");
+  EXPECT_EQ(mesh.source, "bricks");
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "HEX20");
+  EXPECT_EQ(mesh.blocks[0].type, ElementType::Hex20);
+  EXPECT_EQ(mesh.blocks[0].numElements(), 8);  // 2 x 2 x 2 bricks
+  // 3 x 3 x 3 corner nodes + one mid-edge node on each of the 3 * 2*3*3 = 54 edges.
+  EXPECT_EQ(mesh.numNodes(), 27 + 54);
+  EXPECT_NEAR(meshVolume(mesh), 6.0, 1e-12);
+  EXPECT_LT(maxMidEdgeOffset(mesh), 1e-12);
+  EXPECT_NO_THROW(checkConsistency(mesh));
+  EXPECT_NO_THROW(checkElementGeometry(mesh));
+  EXPECT_TRUE(mesh.nodeSets.empty());
+}
+
+TEST(GmshModel, UnsupportedElementsAreAnInputError) {
+  GmshSession session;
+  gmsh::model::add("hex27");
+  gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+  gmsh::model::occ::synchronize();
+  gmsh::vectorpair curves, surfaces, volumes;
+  gmsh::model::getEntities(curves, 1);
+  for (const auto& [dim, tag] : curves) gmsh::model::mesh::setTransfiniteCurve(tag, 2);
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [dim, tag] : surfaces) {
+    gmsh::model::mesh::setTransfiniteSurface(tag);
+    gmsh::model::mesh::setRecombine(dim, tag);
+  }
+  gmsh::model::getEntities(volumes, 3);
+  gmsh::model::mesh::setTransfiniteVolume(volumes[0].second);
+  gmsh::option::setNumber("Mesh.ElementOrder", 2);  // complete: 27-node hexahedra
+  gmsh::model::mesh::generate(3);
+  expectInputError([] { meshFromGmshModel("hex27 box"); },
+                   {"hex27 box", "gmsh type", "(12)", "Mesh.SecondOrderIncomplete"});
+
+  gmsh::model::add("empty");
+  expectInputError([] { meshFromGmshModel("empty model"); }, {"empty model", "no 3D elements"});
+}
+
+TEST(GmshReader, BadFilesNameTheFile) {
+  TempDirectory dir;
+  expectInputError([&] { readGmsh(dir.file("none.msh")); }, {"none.msh", "does not exist"});
+  const std::string garbage = dir.write("garbage.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\nrubbish\n");
+  expectInputError([&] { readGmsh(garbage); }, {"garbage.msh"});
+}
+
+}  // namespace

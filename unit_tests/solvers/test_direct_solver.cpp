@@ -1,0 +1,103 @@
+// The direct and iterative solvers against a dense LAPACK-grade solve (Eigen
+// LLT) of the same assembled stiffness.
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <gtest/gtest.h>
+
+#include "BoxMesh.hpp"
+#include "cyclone/fe/Assembler.hpp"
+#include "cyclone/solvers/DirectSolver.hpp"
+#include "cyclone/solvers/LinearSolver.hpp"
+
+using namespace cyclone;
+
+namespace {
+
+Eigen::MatrixXd toDense(const linalg::Matrix& A) {
+  const int n = int(A.getGlobalNumRows());
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(n, n);
+  linalg::Matrix::global_inds_host_view_type cols;
+  linalg::Matrix::values_host_view_type vals;
+  for (int r = 0; r < n; ++r) {
+    std::size_t len = A.getNumEntriesInGlobalRow(r);
+    linalg::Matrix::nonconst_global_inds_host_view_type c("c", len);
+    linalg::Matrix::nonconst_values_host_view_type v("v", len);
+    A.getGlobalRowCopy(r, c, v, len);
+    for (std::size_t k = 0; k < len; ++k) D(r, c(k)) = v(k);
+  }
+  return D;
+}
+
+struct Cantilever {
+  mesh::Mesh mesh = test_support::makeBoxMesh(4.0, 1.0, 1.0, 4, 1, 1, mesh::ElementType::Tet10);
+  fe::IsotropicElastic steel{"steel", 2.1e5, 0.3, 7.85e-9};
+  fe::DofMap dofs{mesh.numNodes()};
+  std::unique_ptr<fe::Assembler> assembler;
+  Cantilever() {
+    dofs.constrain(mesh.nodeSet("x0"));
+    dofs.finalize();
+    assembler = std::make_unique<fe::Assembler>(mesh, dofs, Teuchos::rcp(new Teuchos::SerialComm<int>));
+  }
+};
+
+}  // namespace
+
+TEST(DirectSolver, MatchesDenseCholeskyOnAssembledStiffness) {
+  Cantilever c;
+  auto K = c.assembler->stiffness(c.steel);
+  linalg::MultiVector b(c.assembler->map(), 3), x(c.assembler->map(), 3);
+  b.randomize();
+  solvers::DirectSolver solver(*K);
+  solver.solve(b, x);
+
+  const Eigen::MatrixXd D = toDense(*K);
+  ASSERT_LT((D - D.transpose()).norm(), 1e-12 * D.norm()) << "assembled stiffness is not symmetric";
+  Eigen::MatrixXd B(D.rows(), 3), X(D.rows(), 3);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < D.rows(); ++i) B(i, j) = b.getData(j)[i], X(i, j) = x.getData(j)[i];
+  const Eigen::MatrixXd reference = D.llt().solve(B);
+  EXPECT_LT((X - reference).norm() / reference.norm(), 1e-10);
+  EXPECT_GT(solver.statistics().nonzerosFactor, 0);
+}
+
+TEST(DirectSolver, ShiftedFactorizationSolvesKMinusSigmaM) {
+  Cantilever c;
+  auto K = c.assembler->stiffness(c.steel);
+  auto M = c.assembler->mass(c.steel);
+  const double sigma = -1.0e6;
+  linalg::MultiVector b(c.assembler->map(), 1), x(c.assembler->map(), 1);
+  b.randomize();
+  solvers::DirectSolver solver(*K, M.get(), sigma);
+  solver.solve(b, x);
+  const Eigen::MatrixXd A = toDense(*K) - sigma * toDense(*M);
+  Eigen::VectorXd B(A.rows()), X(A.rows());
+  for (int i = 0; i < A.rows(); ++i) B(i) = b.getData(0)[i], X(i) = x.getData(0)[i];
+  EXPECT_LT((A * X - B).norm() / B.norm(), 1e-10);
+}
+
+TEST(DirectSolver, UnconstrainedStiffnessIsReportedNotPositiveDefinite) {
+  auto mesh = test_support::makeBoxMesh(1.0, 1.0, 1.0, 1, 1, 1, mesh::ElementType::Hex8);
+  fe::DofMap dofs(mesh.numNodes());
+  dofs.finalize();
+  fe::Assembler assembler(mesh, dofs, Teuchos::rcp(new Teuchos::SerialComm<int>));
+  auto K = assembler.stiffness(fe::IsotropicElastic{});
+  EXPECT_THROW(solvers::DirectSolver solver(*K), SolverError);
+}
+
+TEST(IterativeSolver, AgreesWithDirectSolve) {
+  Cantilever c;
+  auto K = c.assembler->stiffness(c.steel);
+  linalg::MultiVector b(c.assembler->map(), 1), xd(c.assembler->map(), 1), xi(c.assembler->map(), 1);
+  b.randomize();
+  solvers::LinearSolveOptions direct;
+  solvers::solveLinear(*K, b, xd, direct);
+  solvers::LinearSolveOptions iterative;
+  iterative.kind = solvers::LinearSolverKind::Iterative;
+  iterative.tolerance = 1e-12;
+  iterative.nearNullSpace = c.assembler->rigidBodyModes();
+  const auto report = solvers::solveLinear(*K, b, xi, iterative);
+  EXPECT_GT(report.iterations, 0);
+  xi.update(-1.0, xd, 1.0);
+  EXPECT_LT(xi.getVector(0)->norm2() / xd.getVector(0)->norm2(), 1e-8);
+}
+
