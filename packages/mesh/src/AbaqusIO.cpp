@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -486,6 +487,17 @@ Mesh readAbaqusInp(const std::string& path) {
   return DeckParser(path).parse();
 }
 
+// A number in at most 20 characters, CalculiX's field width (it rejects longer
+// fields), with as many significant digits as fit (16 when they do).
+static std::string deckNumber(double value) {
+  char buffer[40];
+  for (int digits = 16; digits > 6; --digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+    if (std::strlen(buffer) <= 20) break;
+  }
+  return buffer;
+}
+
 void writeAbaqusInp(const std::string& path, const Mesh& input) {
   checkConsistency(input);
   // Ids for messages and for the deck; a copy only if the mesh lacks some.
@@ -512,8 +524,8 @@ void writeAbaqusInp(const std::string& path, const Mesh& input) {
   std::fprintf(f, "** Cyclone mesh written from %s\n", mesh.source.c_str());
   std::fprintf(f, "*NODE\n");
   for (Index n = 0; n < mesh.numNodes(); ++n)
-    std::fprintf(f, "%lld, %.16g, %.16g, %.16g\n", static_cast<Id>(mesh.nodeIds[n]), mesh.coords[n][0],
-                 mesh.coords[n][1], mesh.coords[n][2]);
+    std::fprintf(f, "%lld, %s, %s, %s\n", static_cast<Id>(mesh.nodeIds[n]), deckNumber(mesh.coords[n][0]).c_str(),
+                 deckNumber(mesh.coords[n][1]).c_str(), deckNumber(mesh.coords[n][2]).c_str());
 
   std::vector<Id> globalElementIds;
   for (const auto& block : mesh.blocks) {
