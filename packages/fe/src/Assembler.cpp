@@ -27,17 +27,34 @@ struct Assembler::Impl {
   Teuchos::RCP<const Tpetra::Import<>> importer;
   Teuchos::RCP<const FEGraph> graph;
   std::vector<mesh::Index> elements;               // assembled on this rank
-  std::vector<std::vector<GlobalIndex>> equations;  // per local element, -1 where constrained
+  std::vector<std::vector<GlobalIndex>> equations;  // per local element: its unknowns, sorted
 };
 
 namespace {
 
-// Equations of an element's DOFs, node-major; -1 for constrained components.
-std::vector<GlobalIndex> elementEquations(const DofMap& dofs, const mesh::Index* nodes, int n) {
-  std::vector<GlobalIndex> eq(3 * n);
-  for (int a = 0; a < n; ++a)
-    for (int d = 0; d < 3; ++d) eq[3 * a + d] = dofs.equation(nodes[a], d);
+// The unknowns an element's DOFs depend on, over all copies, sorted and unique.
+std::vector<GlobalIndex> elementEquations(const DofTransform& T, const mesh::Index* nodes, int n) {
+  std::vector<GlobalIndex> eq;
+  for (int c = 0; c < T.copies(); ++c)
+    for (int a = 0; a < n; ++a)
+      for (int d = 0; d < 3; ++d)
+        for (const auto& t : T.terms(nodes[a], d, c)) eq.push_back(t.equation);
+  std::sort(eq.begin(), eq.end());
+  eq.erase(std::unique(eq.begin(), eq.end()), eq.end());
   return eq;
+}
+
+// T_c restricted to one element: rows = element DOFs (node-major), columns = its unknowns.
+Eigen::MatrixXd elementTransform(const DofTransform& T, const mesh::Index* nodes, int n, int copy,
+                                 const std::vector<GlobalIndex>& eq) {
+  Eigen::MatrixXd Te = Eigen::MatrixXd::Zero(3 * n, eq.size());
+  for (int a = 0; a < n; ++a)
+    for (int d = 0; d < 3; ++d)
+      for (const auto& t : T.terms(nodes[a], d, copy)) {
+        const auto col = std::lower_bound(eq.begin(), eq.end(), t.equation) - eq.begin();
+        Te(3 * a + d, col) += t.coefficient;
+      }
+  return Te;
 }
 
 std::string elementName(const mesh::Mesh& mesh, mesh::Index globalElement) {
@@ -50,12 +67,18 @@ std::string elementName(const mesh::Mesh& mesh, mesh::Index globalElement) {
 }  // namespace
 
 Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr comm)
-    : mesh_(mesh), dofs_(dofs), impl_(std::make_unique<Impl>()) {
+    : Assembler(mesh, dofs.transform(), std::move(comm)) {}
+
+Assembler::Assembler(const mesh::Mesh& mesh, DofTransform transform, linalg::CommPtr comm)
+    : mesh_(mesh), transform_(std::move(transform)), impl_(std::make_unique<Impl>()) {
   auto& I = *impl_;
   I.comm = comm;
-  const GlobalIndex n = dofs.numFree();
+  const GlobalIndex n = transform_.numEquations();
   const int ranks = comm->getSize(), rank = comm->getRank();
   if (n == 0) throw InputError(mesh.source, "every degree of freedom is constrained: nothing to solve");
+  if (transform_.numNodes() != mesh.numNodes())
+    throw Error("Assembler: the DOF transform is for " + std::to_string(transform_.numNodes()) +
+                " nodes, the mesh has " + std::to_string(mesh.numNodes()));
 
   // Contiguous ownership of equations.
   I.owned = Teuchos::rcp(new linalg::Map(n, 0, comm));
@@ -66,19 +89,16 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr
     return g < extra * (base + 1) ? int(g / (base + 1)) : int(extra + (g - extra * (base + 1)) / base);
   };
 
-  // Elements go to the rank owning their lowest free equation.
+  // Elements go to the rank owning their lowest unknown.
   std::set<GlobalIndex> shared;
   mesh::Index globalElement = 0;
   for (const auto& block : mesh.blocks) {
     const int nn = mesh::nodesPerElement(block.type);
     for (mesh::Index e = 0; e < block.numElements(); ++e, ++globalElement) {
-      auto eq = elementEquations(dofs, block.element(e), nn);
-      GlobalIndex lowest = -1;
+      auto eq = elementEquations(transform_, block.element(e), nn);
+      if (eq.empty() || ownerOf(eq.front()) != rank) continue;
       for (auto g : eq)
-        if (g >= 0 && (lowest < 0 || g < lowest)) lowest = g;
-      if (lowest < 0 || ownerOf(lowest) != rank) continue;
-      for (auto g : eq)
-        if (g >= 0 && !ownedHere(g)) shared.insert(g);
+        if (!ownedHere(g)) shared.insert(g);
       I.elements.push_back(globalElement);
       I.equations.push_back(std::move(eq));
     }
@@ -98,10 +118,8 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr
   std::vector<std::vector<GlobalIndex>> columns(nLocal);
   for (const auto& eq : I.equations)
     for (auto r : eq) {
-      if (r < 0) continue;
       auto& row = columns[I.ownedPlusShared->getLocalElement(r)];
-      for (auto c : eq)
-        if (c >= 0) row.push_back(c);
+      row.insert(row.end(), eq.begin(), eq.end());
     }
   Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("row counts", nLocal);
   for (std::size_t r = 0; r < nLocal; ++r) {
@@ -142,15 +160,20 @@ ElementCoords Assembler::elementCoords(mesh::Index globalElement) const {
 
 namespace {
 
-// Runs a kernel on every local element; a kernel's geometry error becomes an
-// input error naming the element.
+// Runs a kernel on every local element with its element transforms; a kernel's
+// geometry error becomes an input error naming the element.
 template <class Kernel>
-void forEachElement(const Assembler& A, const std::vector<mesh::Index>& elements, Kernel&& kernel) {
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    const auto e = elements[i];
+void forEachElement(const Assembler& A, const Assembler::Impl& I, Kernel&& kernel) {
+  const auto& T = A.transform();
+  for (std::size_t i = 0; i < I.elements.size(); ++i) {
+    const auto e = I.elements[i];
     auto [b, local] = A.mesh().locateElement(e);
+    const auto& block = A.mesh().blocks[b];
+    const int nn = mesh::nodesPerElement(block.type);
     try {
-      kernel(i, A.mesh().blocks[b].type, A.elementCoords(e));
+      kernel(i, block.type, A.elementCoords(e), [&](int copy) {
+        return elementTransform(T, block.element(local), nn, copy, I.equations[i]);
+      });
     } catch (const InvalidElementGeometry& err) {
       throw InputError(A.mesh().source, elementName(A.mesh(), e) + ": inverted or degenerate element (det J = " +
                                             std::to_string(err.detJ) + " at integration point " +
@@ -159,45 +182,40 @@ void forEachElement(const Assembler& A, const std::vector<mesh::Index>& elements
   }
 }
 
-}  // namespace
-
-static Teuchos::RCP<linalg::Matrix> assembleMatrix(
+Teuchos::RCP<linalg::Matrix> assembleMatrix(
     const Assembler& A, const Assembler::Impl& I,
     const std::function<Eigen::MatrixXd(ElementType, const ElementCoords&)>& kernel) {
   auto matrix = Teuchos::rcp(new FEMatrix(I.graph));
   matrix->beginAssembly();
-  std::vector<GlobalIndex> cols;
-  std::vector<double> vals;
-  forEachElement(A, I.elements, [&](std::size_t i, ElementType type, const ElementCoords& X) {
+  std::vector<double> row;
+  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf) {
     const Eigen::MatrixXd Ke = kernel(type, X);
     const auto& eq = I.equations[i];
+    Eigen::MatrixXd Kr = Eigen::MatrixXd::Zero(eq.size(), eq.size());
+    for (int c = 0; c < A.transform().copies(); ++c) {
+      const Eigen::MatrixXd Te = transformOf(c);
+      Kr.noalias() += Te.transpose() * Ke * Te;
+    }
+    row.resize(eq.size());
     for (std::size_t r = 0; r < eq.size(); ++r) {
-      if (eq[r] < 0) continue;
-      cols.clear();
-      vals.clear();
-      for (std::size_t c = 0; c < eq.size(); ++c)
-        if (eq[c] >= 0) {
-          cols.push_back(eq[c]);
-          vals.push_back(Ke(r, c));
-        }
-      matrix->sumIntoGlobalValues(eq[r], Teuchos::ArrayView<const GlobalIndex>(cols),
-                                  Teuchos::ArrayView<const double>(vals));
+      for (std::size_t c = 0; c < eq.size(); ++c) row[c] = Kr(r, c);
+      matrix->sumIntoGlobalValues(eq[r], Teuchos::ArrayView<const GlobalIndex>(eq),
+                                  Teuchos::ArrayView<const double>(row));
     }
   });
   matrix->endAssembly();
   return matrix;
 }
 
-static Teuchos::RCP<linalg::MultiVector> assembleVector(
+Teuchos::RCP<linalg::MultiVector> assembleVector(
     const Assembler& A, const Assembler::Impl& I,
     const std::function<Eigen::VectorXd(ElementType, const ElementCoords&)>& kernel) {
   auto vec = Teuchos::rcp(new FEVector(I.owned, I.importer, 1));
   vec->beginAssembly();
-  forEachElement(A, I.elements, [&](std::size_t i, ElementType type, const ElementCoords& X) {
-    const Eigen::VectorXd fe = kernel(type, X);
+  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf) {
+    const Eigen::VectorXd fr = transformOf(0).transpose() * kernel(type, X);  // loads act on copy 0
     const auto& eq = I.equations[i];
-    for (std::size_t r = 0; r < eq.size(); ++r)
-      if (eq[r] >= 0) vec->sumIntoGlobalValue(eq[r], 0, fe(r));
+    for (std::size_t r = 0; r < eq.size(); ++r) vec->sumIntoGlobalValue(eq[r], 0, fr(r));
   });
   vec->endAssembly();
   // Hand out a plain owned MultiVector (an FEMultiVector cannot be copied or resized).
@@ -205,6 +223,8 @@ static Teuchos::RCP<linalg::MultiVector> assembleVector(
   out->assign(*vec);
   return out;
 }
+
+}  // namespace
 
 Teuchos::RCP<linalg::Matrix> Assembler::stiffness(const IsotropicElastic& material) const {
   return assembleMatrix(*this, *impl_, [&](ElementType t, const ElementCoords& X) {
@@ -233,44 +253,47 @@ Teuchos::RCP<linalg::MultiVector> Assembler::bodyLoad(const Eigen::Vector3d& b) 
 
 Teuchos::RCP<linalg::MultiVector> Assembler::nodalLoad(const std::vector<mesh::Index>& nodes,
                                                        const Eigen::Vector3d& forcePerNode) const {
+  // Every rank adds the terms it owns; T^T f for copy 0.
   auto out = Teuchos::rcp(new linalg::MultiVector(impl_->owned, 1));
   for (auto node : nodes)
-    for (int d = 0; d < 3; ++d) {
-      const GlobalIndex g = dofs_.equation(node, d);
-      if (g >= 0 && impl_->owned->isNodeGlobalElement(g)) out->sumIntoGlobalValue(g, 0, forcePerNode[d]);
-    }
+    for (int d = 0; d < 3; ++d)
+      for (const auto& t : transform_.terms(node, d, 0))
+        if (impl_->owned->isNodeGlobalElement(t.equation))
+          out->sumIntoGlobalValue(t.equation, 0, t.coefficient * forcePerNode[d]);
   return out;
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::rigidBodyModes() const {
+  // Each unknown takes the rigid motion's value at its master DOF (exact for plain
+  // constraints; for cyclic transforms a near null space good enough for MueLu).
   auto modes = Teuchos::rcp(new linalg::MultiVector(impl_->owned, 6));
-  for (mesh::Index node = 0; node < mesh_.numNodes(); ++node) {
+  const auto& master = transform_.masterDof();
+  for (std::size_t i = 0; i < impl_->owned->getNodeNumElements(); ++i) {
+    const GlobalIndex g = impl_->owned->getGlobalElement(i);
+    if (master[g] < 0) continue;
+    const auto node = master[g] / 3;
+    const int d = int(master[g] % 3);
     const auto& x = mesh_.coords[node];
     // Columns: translations x, y, z; rotations about x, y, z (u = e_k cross x).
     const double values[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
                                  {0, -x[2], x[1]}, {x[2], 0, -x[0]}, {-x[1], x[0], 0}};
-    for (int d = 0; d < 3; ++d) {
-      const GlobalIndex g = dofs_.equation(node, d);
-      if (g < 0 || !impl_->owned->isNodeGlobalElement(g)) continue;
-      for (int k = 0; k < 6; ++k) modes->replaceGlobalValue(g, k, values[k][d]);
-    }
+    for (int k = 0; k < 6; ++k) modes->replaceLocalValue(i, k, values[k][d]);
   }
   return modes;
 }
 
-std::vector<std::array<double, 3>> Assembler::nodalField(const linalg::MultiVector& u, int column) const {
-  // Every rank contributes its owned values; a sum over ranks replicates the field.
-  const mesh::Index nn = mesh_.numNodes();
-  std::vector<double> local(3 * nn, 0.0), global(3 * nn, 0.0);
+std::vector<std::array<double, 3>> Assembler::nodalField(const linalg::MultiVector& u, int column, int copy) const {
+  // Replicate the unknowns on every rank, then expand through the transform.
+  const GlobalIndex n = transform_.numEquations();
+  std::vector<double> local(n, 0.0), global(n, 0.0);
   auto data = u.getData(column);
+  for (std::size_t i = 0; i < impl_->owned->getNodeNumElements(); ++i) local[impl_->owned->getGlobalElement(i)] = data[i];
+  Teuchos::reduceAll(*impl_->comm, Teuchos::REDUCE_SUM, int(n), local.data(), global.data());
+  const mesh::Index nn = mesh_.numNodes();
+  std::vector<std::array<double, 3>> field(nn, {0.0, 0.0, 0.0});
   for (mesh::Index node = 0; node < nn; ++node)
-    for (int d = 0; d < 3; ++d) {
-      const GlobalIndex g = dofs_.equation(node, d);
-      if (g >= 0 && impl_->owned->isNodeGlobalElement(g)) local[3 * node + d] = data[impl_->owned->getLocalElement(g)];
-    }
-  Teuchos::reduceAll(*impl_->comm, Teuchos::REDUCE_SUM, int(3 * nn), local.data(), global.data());
-  std::vector<std::array<double, 3>> field(nn);
-  for (mesh::Index node = 0; node < nn; ++node) field[node] = {global[3 * node], global[3 * node + 1], global[3 * node + 2]};
+    for (int d = 0; d < 3; ++d)
+      for (const auto& t : transform_.terms(node, d, copy)) field[node][d] += t.coefficient * global[t.equation];
   return field;
 }
 

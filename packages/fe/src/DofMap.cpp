@@ -21,4 +21,14 @@ void DofMap::finalize() {
   finalized_ = true;
 }
 
+DofTransform DofMap::transform() const {
+  if (!finalized_) throw Error("DofMap::transform called before finalize");
+  DofTransform t(numNodes_, 1);
+  for (Index n = 0; n < numNodes_; ++n)
+    for (int d = 0; d < 3; ++d)
+      if (equation_[3 * n + d] >= 0) t.set(n, d, 0, {{equation_[3 * n + d], 1.0}});
+  t.finalize(numFree_);
+  return t;
+}
+
 }  // namespace cyclone::fe

@@ -6,6 +6,10 @@
 // The mesh is replicated on every rank (each rank reads or generates it); each
 // rank owns a contiguous range of equations and assembles the elements whose
 // lowest equation it owns. A partitioned mesh would change only this class.
+//
+// The unknowns are given by a DofTransform (DofMap::transform() for plain
+// constraints, cyclic transforms per harmonic index): every operator is
+// sum over copies of T_c^T A T_c; loads act on copy 0 (the real part).
 #include <array>
 #include <memory>
 #include <vector>
@@ -22,12 +26,13 @@ class Assembler {
 public:
   struct Impl;  // Tpetra graph, maps and importer: defined in Assembler.cpp only
   Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr comm);
+  Assembler(const mesh::Mesh& mesh, DofTransform transform, linalg::CommPtr comm);
   ~Assembler();
   Assembler(const Assembler&) = delete;
   Assembler& operator=(const Assembler&) = delete;
 
   const mesh::Mesh& mesh() const { return mesh_; }
-  const DofMap& dofs() const { return dofs_; }
+  const DofTransform& transform() const { return transform_; }
   linalg::CommPtr comm() const;
   /// Owned equations of this rank (row, domain and range map of every operator).
   Teuchos::RCP<const linalg::Map> map() const;
@@ -48,8 +53,9 @@ public:
   Teuchos::RCP<linalg::MultiVector> rigidBodyModes() const;
 
   /// Full nodal field (numNodes x 3, zeros on constrained components) of column `column`
-  /// of a distributed solution, the same on every rank.
-  std::vector<std::array<double, 3>> nodalField(const linalg::MultiVector& u, int column = 0) const;
+  /// of a distributed solution, in copy `copy` (0: real part, 1: imaginary part), the
+  /// same on every rank.
+  std::vector<std::array<double, 3>> nodalField(const linalg::MultiVector& u, int column = 0, int copy = 0) const;
 
   /// Elements assembled on this rank (global element indices).
   const std::vector<mesh::Index>& localElements() const;
@@ -58,7 +64,7 @@ public:
 
 private:
   const mesh::Mesh& mesh_;
-  const DofMap& dofs_;
+  DofTransform transform_;
   std::unique_ptr<Impl> impl_;
 };
 

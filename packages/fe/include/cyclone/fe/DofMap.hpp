@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/fe/DofTransform.hpp"
 #include "cyclone/mesh/Mesh.hpp"
 
 namespace cyclone::fe {
@@ -26,6 +27,8 @@ public:
   Index numConstrained() const { return 3 * numNodes_ - numFree_; }
   /// Equation of (node, component), or -1 when constrained.
   Index equation(Index node, int component) const { return equation_[3 * node + component]; }
+  /// The same numbering as a one-copy transform (what the Assembler consumes).
+  DofTransform transform() const;
 
 private:
   Index numNodes_;
