@@ -57,6 +57,30 @@ Eigen::MatrixXd elementTransform(const DofTransform& T, const mesh::Index* nodes
   return Te;
 }
 
+// The same as a scatter when every element DOF has at most one term: position
+// among the element's unknowns (-1: fixed) and coefficient; `simple` false otherwise.
+struct ElementScatter {
+  std::vector<int> position;
+  std::vector<double> coefficient;
+  bool simple = true;
+};
+ElementScatter elementScatter(const DofTransform& T, const mesh::Index* nodes, int n, int copy,
+                              const std::vector<GlobalIndex>& eq) {
+  ElementScatter s{std::vector<int>(3 * n, -1), std::vector<double>(3 * n, 0.0), true};
+  for (int a = 0; a < n && s.simple; ++a)
+    for (int d = 0; d < 3; ++d) {
+      const auto terms = T.terms(nodes[a], d, copy);
+      if (terms.empty()) continue;
+      if (terms.last - terms.first > 1) {
+        s.simple = false;
+        break;
+      }
+      s.position[3 * a + d] = int(std::lower_bound(eq.begin(), eq.end(), terms.first->equation) - eq.begin());
+      s.coefficient[3 * a + d] = terms.first->coefficient;
+    }
+  return s;
+}
+
 std::string elementName(const mesh::Mesh& mesh, mesh::Index globalElement) {
   auto [b, e] = mesh.locateElement(globalElement);
   const auto& block = mesh.blocks[b];
@@ -171,9 +195,10 @@ void forEachElement(const Assembler& A, const Assembler::Impl& I, Kernel&& kerne
     const auto& block = A.mesh().blocks[b];
     const int nn = mesh::nodesPerElement(block.type);
     try {
-      kernel(i, block.type, A.elementCoords(e), [&](int copy) {
-        return elementTransform(T, block.element(local), nn, copy, I.equations[i]);
-      });
+      kernel(
+          i, block.type, A.elementCoords(e),
+          [&](int copy) { return elementTransform(T, block.element(local), nn, copy, I.equations[i]); },
+          [&](int copy) { return elementScatter(T, block.element(local), nn, copy, I.equations[i]); });
     } catch (const InvalidElementGeometry& err) {
       throw InputError(A.mesh().source, elementName(A.mesh(), e) + ": inverted or degenerate element (det J = " +
                                             std::to_string(err.detJ) + " at integration point " +
@@ -188,13 +213,24 @@ Teuchos::RCP<linalg::Matrix> assembleMatrix(
   auto matrix = Teuchos::rcp(new FEMatrix(I.graph));
   matrix->beginAssembly();
   std::vector<double> row;
-  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf) {
+  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf,
+                           auto&& scatterOf) {
     const Eigen::MatrixXd Ke = kernel(type, X);
     const auto& eq = I.equations[i];
     Eigen::MatrixXd Kr = Eigen::MatrixXd::Zero(eq.size(), eq.size());
     for (int c = 0; c < A.transform().copies(); ++c) {
-      const Eigen::MatrixXd Te = transformOf(c);
-      Kr.noalias() += Te.transpose() * Ke * Te;
+      // Most elements have at most one term per DOF (no right-face node): scatter.
+      const auto& [pos, coef, simple] = scatterOf(c);
+      if (simple) {
+        for (int r = 0; r < Ke.rows(); ++r) {
+          if (pos[r] < 0) continue;
+          for (int q = 0; q < Ke.cols(); ++q)
+            if (pos[q] >= 0) Kr(pos[r], pos[q]) += coef[r] * coef[q] * Ke(r, q);
+        }
+      } else {
+        const Eigen::MatrixXd Te = transformOf(c);
+        Kr.noalias() += Te.transpose() * Ke * Te;
+      }
     }
     row.resize(eq.size());
     for (std::size_t r = 0; r < eq.size(); ++r) {
@@ -212,7 +248,7 @@ Teuchos::RCP<linalg::MultiVector> assembleVector(
     const std::function<Eigen::VectorXd(ElementType, const ElementCoords&)>& kernel) {
   auto vec = Teuchos::rcp(new FEVector(I.owned, I.importer, 1));
   vec->beginAssembly();
-  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf) {
+  forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf, auto&&) {
     const Eigen::VectorXd fr = transformOf(0).transpose() * kernel(type, X);  // loads act on copy 0
     const auto& eq = I.equations[i];
     for (std::size_t r = 0; r < eq.size(); ++r) vec->sumIntoGlobalValue(eq[r], 0, fr(r));

@@ -76,7 +76,8 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
   auto op = Teuchos::rcp(new ShiftInvertOperator(M, solver));
   const int bs = std::max(2, opt.blockSize);
   const int nev = opt.numModes;
-  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(4, (2 * nev + bs - 1) / bs + 2);
+  // A Krylov space of about 3 nev keeps restarts few (each restart costs solves).
+  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * nev + bs - 1) / bs + 2);
   nb = int(std::min<long long>(nb, std::max<long long>(2, n / bs - 1)));
   auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
   X0->randomize();

@@ -1,0 +1,44 @@
+#pragma once
+// Modes of a cyclic sector for each requested harmonic index (nodal
+// diameter): the cyclic transform per k, assembled K and M, Anasazi
+// shift-invert. Mode shapes are mass-normalised over the sector in the real
+// form: sum over the copies of u_c^T M u_c = 1.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+
+namespace cyclone::cyclic {
+
+struct CyclicModalProblem {
+  fe::IsotropicElastic material;
+  std::vector<std::string> fixedNodeSets;
+  std::vector<int> harmonics;     ///< empty: all of 0..N/2
+  int modesPerHarmonic = 6;       ///< distinct frequencies per k (a pair counts once)
+  double shift = 0.0;             ///< (rad/s)^2, below the lowest eigenvalue
+};
+
+struct HarmonicModes {
+  int harmonic = 0;
+  int copies = 1;
+  long long equations = 0;
+  double seconds = 0;
+  std::vector<double> frequenciesHz;  ///< ascending; each member of a pair listed
+  /// Nodal shapes per mode: real part (copy a) and imaginary part (copy b; zero when single).
+  std::vector<std::vector<std::array<double, 3>>> shapeReal, shapeImag;
+};
+
+std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
+                                            const CyclicModalProblem& problem, linalg::CommPtr comm);
+
+/// frequencies.csv: rpm,nd,mode,freq_hz (mode from 1 within each nd). Atomic.
+void writeFrequenciesCsv(const std::string& path, double rpm, const std::vector<HarmonicModes>& modes);
+/// Modes in Exodus: one step per mode (time = frequency in Hz), nodal ux,uy,uz (real
+/// part) and ux_imag,uy_imag,uz_imag, globals nd, mode, rpm. Atomic.
+void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,
+                      const std::vector<HarmonicModes>& modes);
+
+}  // namespace cyclone::cyclic
