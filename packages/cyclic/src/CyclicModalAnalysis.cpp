@@ -34,7 +34,7 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     hm.copies = copiesFor(sector.sectors, k);
     fe::Assembler assembler(mesh, cyclicTransform(mesh, sector, k, problem.fixedNodeSets), comm);
     hm.equations = assembler.transform().numEquations();
-    auto K = assembler.stiffness(problem.material);
+    auto K = tangentStiffness(assembler, problem.material, problem.prestress);
     auto M = assembler.mass(problem.material);
     solvers::ModalOptions opt;
     opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));

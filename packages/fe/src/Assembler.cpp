@@ -207,15 +207,14 @@ void forEachElement(const Assembler& A, const Assembler::Impl& I, Kernel&& kerne
   }
 }
 
-Teuchos::RCP<linalg::Matrix> assembleMatrix(
-    const Assembler& A, const Assembler::Impl& I,
-    const std::function<Eigen::MatrixXd(ElementType, const ElementCoords&)>& kernel) {
+Teuchos::RCP<linalg::Matrix> assembleMatrix(const Assembler& A, const Assembler::Impl& I,
+                                            const Assembler::ElementMatrixKernel& kernel) {
   auto matrix = Teuchos::rcp(new FEMatrix(I.graph));
   matrix->beginAssembly();
   std::vector<double> row;
   forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf,
                            auto&& scatterOf) {
-    const Eigen::MatrixXd Ke = kernel(type, X);
+    const Eigen::MatrixXd Ke = kernel(I.elements[i], type, X);
     const auto& eq = I.equations[i];
     Eigen::MatrixXd Kr = Eigen::MatrixXd::Zero(eq.size(), eq.size());
     for (int c = 0; c < A.transform().copies(); ++c) {
@@ -262,16 +261,16 @@ Teuchos::RCP<linalg::MultiVector> assembleVector(
 
 }  // namespace
 
+Teuchos::RCP<linalg::Matrix> Assembler::assemble(const ElementMatrixKernel& kernel) const {
+  return assembleMatrix(*this, *impl_, kernel);
+}
+
 Teuchos::RCP<linalg::Matrix> Assembler::stiffness(const IsotropicElastic& material) const {
-  return assembleMatrix(*this, *impl_, [&](ElementType t, const ElementCoords& X) {
-    return elementStiffness(t, X, material);
-  });
+  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementStiffness(t, X, material); });
 }
 
 Teuchos::RCP<linalg::Matrix> Assembler::mass(const IsotropicElastic& material) const {
-  return assembleMatrix(*this, *impl_, [&](ElementType t, const ElementCoords& X) {
-    return elementMass(t, X, material.rho);
-  });
+  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementMass(t, X, material.rho); });
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::centrifugalLoad(const IsotropicElastic& material, double omega,

@@ -218,6 +218,44 @@ Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const
   return S;
 }
 
+Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords& X,
+                                          const Eigen::Matrix<double, Eigen::Dynamic, 6>& stress) {
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Stiffness);
+  if (stress.rows() != t.numPoints())
+    throw Error("elementGeometricStiffness: " + std::to_string(stress.rows()) + " stress rows for a rule of " +
+                std::to_string(t.numPoints()) + " points");
+  const double floor = degenerateDetJ(X);
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, n);  // scalar part, the same for each direction
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
+    const ElementCoords G = t.dN[q] * J.inverse();
+    const auto& s = stress.row(q);
+    Eigen::Matrix3d S;
+    S << s(0), s(5), s(4), s(5), s(1), s(3), s(4), s(3), s(2);
+    g.noalias() += (t.weights[q] * detJ) * (G * S * G.transpose());
+  }
+  g = 0.5 * (g + g.transpose()).eval();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      for (int d = 0; d < 3; ++d) K(3 * a + d, 3 * b + d) = g(a, b);
+  return K;
+}
+
+Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
+                                     const Axis& axis) {
+  const int n = checkedNodeCount(type, X);
+  const Eigen::Vector3d a = unitAxis(axis);
+  const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();
+  const Eigen::MatrixXd M = elementMass(type, X, rho * omega * omega);  // blocks m_ab I_3
+  Eigen::MatrixXd K(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) K.block<3, 3>(3 * i, 3 * j) = M(3 * i, 3 * j) * P;
+  return K;
+}
+
 double vonMises(const Eigen::Matrix<double, 6, 1>& s) {
   const double dxy = s[0] - s[1], dyz = s[1] - s[2], dzx = s[2] - s[0];
   return std::sqrt(0.5 * (dxy * dxy + dyz * dyz + dzx * dzx) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 
@@ -19,6 +20,8 @@ struct CyclicModalProblem {
   std::vector<int> harmonics;     ///< empty: all of 0..N/2
   int modesPerHarmonic = 6;       ///< distinct frequencies per k (a pair counts once)
   double shift = 0.0;             ///< (rad/s)^2, below the lowest eigenvalue
+  /// Prestressed tangent K + K_sigma - K_Omega at this state's speed; null: K alone.
+  const PrestressState* prestress = nullptr;
 };
 
 struct HarmonicModes {

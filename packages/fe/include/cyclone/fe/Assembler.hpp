@@ -11,6 +11,7 @@
 // constraints, cyclic transforms per harmonic index): every operator is
 // sum over copies of T_c^T A T_c; loads act on copy 0 (the real part).
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,11 @@ public:
   linalg::CommPtr comm() const;
   /// Owned equations of this rank (row, domain and range map of every operator).
   Teuchos::RCP<const linalg::Map> map() const;
+
+  /// Any element matrix (3n x 3n, node-major) summed into the global operator;
+  /// the kernel gets the global element index, its type and coordinates.
+  using ElementMatrixKernel = std::function<Eigen::MatrixXd(mesh::Index, ElementType, const ElementCoords&)>;
+  Teuchos::RCP<linalg::Matrix> assemble(const ElementMatrixKernel& kernel) const;
 
   Teuchos::RCP<linalg::Matrix> stiffness(const IsotropicElastic& material) const;
   Teuchos::RCP<linalg::Matrix> mass(const IsotropicElastic& material) const;

@@ -45,6 +45,16 @@ double elementVolume(ElementType type, const ElementCoords& X);
 /// element displacement vector ue (3n); one row per point.
 Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const ElementCoords& X,
                                                          const IsotropicElastic& mat, const Eigen::VectorXd& ue);
+/// Geometric (stress) stiffness for a stress state given at the stiffness-rule points
+/// (one Voigt row per point, e.g. from elementStresses):
+///   K_ab = (int grad N_a . S grad N_b dV) I_3   (stiffness rule).
+Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords& X,
+                                          const Eigen::Matrix<double, Eigen::Dynamic, 6>& stress);
+/// Spin softening: the centrifugal load's change with displacement,
+///   K_ab = rho Omega^2 (int N_a N_b dV) (I - a a^T)   (mass rule),
+/// subtracted from the tangent (the load follows the deformed position).
+Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
+                                     const Axis& axis);
 /// von Mises equivalent of a Voigt stress.
 double vonMises(const Eigen::Matrix<double, 6, 1>& s);
 

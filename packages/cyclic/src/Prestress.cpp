@@ -1,0 +1,61 @@
+#include "cyclone/cyclic/Prestress.hpp"
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/solvers/LinearSolver.hpp"
+
+namespace cyclone::cyclic {
+
+PrestressState solveLinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
+                                    const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                    linalg::CommPtr comm) {
+  Timer timer;
+  PrestressState state;
+  state.speedRpm = speedRpm;
+  state.omega = speedRpm * 2 * M_PI / 60;
+  state.axis = axis;
+  fe::Assembler assembler(mesh, transform, comm);
+  auto K = assembler.stiffness(material);
+  auto f = assembler.centrifugalLoad(material, state.omega, axis);
+  linalg::MultiVector u(assembler.map(), 1);
+  solvers::LinearSolveOptions options;
+  const auto report = solvers::solveLinear(*K, *f, u, options);
+  state.displacement = assembler.nodalField(u);
+  // Stresses of every element on every rank: the tangent of any harmonic needs them.
+  state.stress.resize(mesh.numElements());
+  mesh::Index e = 0;
+  for (const auto& block : mesh.blocks) {
+    const int n = mesh::nodesPerElement(block.type);
+    for (mesh::Index le = 0; le < block.numElements(); ++le, ++e) {
+      Eigen::VectorXd ue(3 * n);
+      for (int a = 0; a < n; ++a)
+        for (int d = 0; d < 3; ++d) ue(3 * a + d) = state.displacement[block.element(le)[a]][d];
+      state.stress[e] = fe::elementStresses(block.type, assembler.elementCoords(e), material, ue);
+    }
+  }
+  state.solveSeconds = timer.seconds();
+  std::ostringstream msg;
+  msg << "linear prestress at " << speedRpm << " rpm: " << transform.numEquations() << " equations, residual "
+      << report.relativeResidual << ", " << state.solveSeconds << " s";
+  log::info(msg.str());
+  return state;
+}
+
+Teuchos::RCP<linalg::Matrix> tangentStiffness(const fe::Assembler& assembler, const fe::IsotropicElastic& material,
+                                              const PrestressState* prestress) {
+  if (!prestress || prestress->omega == 0) return assembler.stiffness(material);
+  return assembler.assemble([&](mesh::Index e, fe::ElementType type, const fe::ElementCoords& X) {
+    Eigen::MatrixXd K = fe::elementStiffness(type, X, material);
+    K += fe::elementGeometricStiffness(type, X, prestress->stress[e]);
+    K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
+    return K;
+  });
+}
+
+}  // namespace cyclone::cyclic
