@@ -9,6 +9,8 @@
 
 #include "DemoScene.hpp"
 #include "cyclone/analysis/StaticAnalysis.hpp"
+#include "cyclone/cyclic/CyclicModalAnalysis.hpp"
+#include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
@@ -44,7 +46,9 @@ mesh::ShroudedSectorParameters readSectorParameters(SceneSection s) {
 
 // The mesh stage: built-in generator or a file; optional copies in Exodus and .inp.
 mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std::string& sceneDir,
-                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary) {
+                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary,
+                     int& builtInSectors) {
+  builtInSectors = 0;
   const bool writer = comm.getRank() == 0;
   const std::string source = s.getString("source", "shrouded_sector");
   const auto write = s.getStringList("write", {});
@@ -54,6 +58,7 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
     auto p = readSectorParameters(sector);
     if (overrides.meshSize) p.meshSize = *overrides.meshSize;
     mesh = mesh::generateShroudedSector(p);
+    builtInSectors = p.sectors;
   } else {
     sector.rejectUnknownKeys();
     const std::filesystem::path path = std::filesystem::path(source).is_absolute()
@@ -82,18 +87,116 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
   return mesh;
 }
 
+fe::IsotropicElastic readMaterial(SceneSection m) {
+  fe::IsotropicElastic material;
+  material.name = m.getString("name", material.name);
+  material.E = m.getDouble("E", material.E);
+  material.nu = m.getDouble("nu", material.nu);
+  material.rho = m.getDouble("rho", material.rho);
+  m.rejectUnknownKeys();
+  material.validate(m.location());
+  return material;
+}
+
+std::string rpmTag(double rpm) {
+  std::ostringstream s;
+  s << rpm << "rpm";
+  return s.str();
+}
+
+// Cyclic modal analysis: per speed, optional prestress (k = 0), then modes for
+// the requested nodal diameters; frequencies.csv, modes and prestress in Exodus.
+void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir,
+                linalg::CommPtr comm, SceneSummary& summary) {
+  const auto material = readMaterial(scene.section("material"));
+  auto c = scene.section("constraints");
+  const auto fixedSets = c.getStringList("fixed_node_sets", {});
+  c.rejectUnknownKeys();
+  for (const auto& name : fixedSets) mesh.nodeSet(name);
+
+  auto cy = scene.section("cyclic");
+  const int sectors = cy.getInt("sectors", builtInSectors);
+  if (sectors == 0) throw InputError(cy.where("sectors"), "is required for a mesh read from a file");
+  const std::string configuration = cy.getString("configuration", "fixed_shroud");
+  std::vector<std::string> left, right;
+  if (configuration == "fixed_shroud") left = {"disc_left", "shroud_left"}, right = {"disc_right", "shroud_right"};
+  else if (configuration == "cantilever") left = {"disc_left"}, right = {"disc_right"};
+  else throw InputError(cy.where("configuration"), "unknown configuration '" + configuration +
+                                                       "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc faces only)");
+  left = cy.getStringList("left_node_sets", left);
+  right = cy.getStringList("right_node_sets", right);
+  const auto ap = cy.getVector3("axis_point", {0, 0, 0}), ad = cy.getVector3("axis_direction", {0, 0, 1});
+  cy.rejectUnknownKeys();
+  mesh::RotationAxis axis{ap, ad};
+  const auto sector = cyclic::makeCyclicSector(mesh, sectors, axis, left, right);
+  {
+    std::ostringstream msg;
+    msg << "cyclic sector: " << sectors << " sectors, " << sector.left.size() << " paired side-face nodes (max mismatch "
+        << sector.maxMismatch << ")";
+    log::info(msg.str());
+  }
+
+  auto m = scene.section("modal");
+  cyclic::CyclicModalProblem problem;
+  problem.material = material;
+  problem.fixedNodeSets = fixedSets;
+  problem.harmonics = m.getIntList("nodal_diameters", {});
+  problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
+  problem.shift = m.getDouble("shift", 0.0);
+  const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
+  const std::string prestress = m.getString("prestress", "linear");
+  if (prestress != "linear" && prestress != "none")
+    throw InputError(m.where("prestress"), "unknown prestress '" + prestress + "' (use linear or none)");
+  m.rejectUnknownKeys();
+  for (int k : problem.harmonics)
+    if (k < 0 || k > sectors / 2)
+      throw InputError(m.where("nodal_diameters"), "nodal diameter " + std::to_string(k) + " is outside 0.." +
+                                                        std::to_string(sectors / 2) + " for " +
+                                                        std::to_string(sectors) + " sectors");
+  if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
+  for (double rpm : speeds)
+    if (!(rpm >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
+  scene.rejectUnknownKeys();
+  if (fixedSets.empty())
+    log::warn("modal analysis without fixed node sets: rigid-body modes exist; give modal/shift < 0");
+
+  const bool writer = comm->getRank() == 0;
+  std::vector<cyclic::SpeedModes> results;
+  for (double rpm : speeds) {
+    cyclic::PrestressState state;
+    const cyclic::PrestressState* used = nullptr;
+    if (prestress == "linear" && rpm > 0) {
+      fe::Axis feAxis;
+      feAxis.point = Eigen::Vector3d(ap[0], ap[1], ap[2]);
+      feAxis.direction = Eigen::Vector3d(ad[0], ad[1], ad[2]);
+      state = cyclic::solveLinearPrestress(mesh, cyclic::cyclicTransform(mesh, sector, 0, fixedSets), material, rpm,
+                                           feAxis, comm);
+      used = &state;
+      const std::string path = outDir + "/prestress_" + rpmTag(rpm) + ".exo";
+      if (writer) cyclic::writePrestressExodus(path, mesh, state);
+      summary.written.push_back(path);
+    }
+    problem.prestress = used;
+    log::info("modes at " + rpmTag(rpm) + (used ? " (prestressed, spin softening; Coriolis neglected)" : ""));
+    cyclic::SpeedModes sm{rpm, cyclic::solveCyclicModes(mesh, sector, problem, comm)};
+    const std::string path = outDir + "/modes_" + rpmTag(rpm) + ".exo";
+    if (writer) cyclic::writeModesExodus(path, mesh, rpm, sm.harmonics);
+    summary.written.push_back(path);
+    std::ostringstream line;
+    line << "modes at " << rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
+         << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";
+    summary.computed.push_back(line.str());
+    results.push_back(std::move(sm));
+  }
+  const std::string csv = outDir + "/frequencies.csv";
+  if (writer) cyclic::writeFrequenciesCsv(csv, results);
+  summary.written.push_back(csv);
+}
+
 void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
                  SceneSummary& summary) {
   analysis::StaticProblem problem;
-  {
-    auto m = scene.section("material");
-    problem.material.name = m.getString("name", problem.material.name);
-    problem.material.E = m.getDouble("E", problem.material.E);
-    problem.material.nu = m.getDouble("nu", problem.material.nu);
-    problem.material.rho = m.getDouble("rho", problem.material.rho);
-    m.rejectUnknownKeys();
-    problem.material.validate(m.location());
-  }
+  problem.material = readMaterial(scene.section("material"));
   {
     auto c = scene.section("constraints");
     problem.fixedNodeSets = c.getStringList("fixed_node_sets", {});
@@ -173,16 +276,18 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   SceneSection scene(top, source, "cyclone");
   SceneSummary summary;
   const std::string analysis = scene.getString("analysis", "static");
-  if (analysis != "static" && analysis != "mesh")
-    throw InputError(scene.where("analysis"), "unknown analysis '" + analysis + "' (use static or mesh)");
+  if (analysis != "static" && analysis != "mesh" && analysis != "modal")
+    throw InputError(scene.where("analysis"), "unknown analysis '" + analysis + "' (use static, modal or mesh)");
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");
   if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
   comm->barrier();
 
-  auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary);
+  int builtInSectors = 0;
+  auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
   if (analysis == "static") staticStage(scene, mesh, outDir, comm, summary);
+  if (analysis == "modal") modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
   scene.rejectUnknownKeys();
   return summary;
 }

@@ -64,6 +64,33 @@ std::vector<std::string> SceneSection::getStringList(const std::string& key, con
   throw InputError(where(key), "expected a list of names, e.g. [bore]");
 }
 
+std::vector<int> SceneSection::getIntList(const std::string& key, const std::vector<int>& fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<Teuchos::Array<int>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<int>>(key);
+    return std::vector<int>(a.begin(), a.end());
+  }
+  if (list_.isType<int>(key)) return {list_.get<int>(key)};
+  throw InputError(where(key), "expected a list of integers, e.g. [0, 1, 2]");
+}
+
+std::vector<double> SceneSection::getDoubleList(const std::string& key, const std::vector<double>& fallback) {
+  markUsed(key);
+  if (!has(key)) return fallback;
+  if (list_.isType<Teuchos::Array<double>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<double>>(key);
+    return std::vector<double>(a.begin(), a.end());
+  }
+  if (list_.isType<Teuchos::Array<int>>(key)) {
+    const auto& a = list_.get<Teuchos::Array<int>>(key);
+    return std::vector<double>(a.begin(), a.end());
+  }
+  if (list_.isType<double>(key)) return {list_.get<double>(key)};
+  if (list_.isType<int>(key)) return {double(list_.get<int>(key))};
+  throw InputError(where(key), "expected a list of numbers, e.g. [0.0, 5000.0]");
+}
+
 std::array<double, 3> SceneSection::getVector3(const std::string& key, const std::array<double, 3>& fallback) {
   markUsed(key);
   if (!has(key)) return fallback;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <regex>
 
 #include "cyclone/core/Error.hpp"
@@ -120,4 +122,54 @@ TEST(Scenes, MissingMeshFileIsNamed) {
   const std::string yaml = "cyclone:\n  analysis: mesh\n  mesh:\n    source: no_such_mesh.inp\n";
   const auto msg = failure(yaml, dir);
   EXPECT_NE(msg.find("no_such_mesh.inp"), std::string::npos) << msg;
+}
+
+TEST(Scenes, ModalSceneWritesFrequenciesPerNodalDiameter) {
+  log::setQuiet(true);
+  const auto dir = freshDir("modal");
+  const std::string yaml =
+      "cyclone:\n  analysis: modal\n  mesh:\n    shrouded_sector:\n      sectors: 12\n      mesh_size: 12.0\n"
+      "  constraints:\n    fixed_node_sets: [bore]\n  cyclic:\n    configuration: cantilever\n"
+      "  modal:\n    nodal_diameters: [0, 3, 6]\n    modes_per_nd: 2\n    speeds_rpm: [0, 12000]\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(yaml, "modal.yaml", o, Tpetra::getDefaultComm());
+  for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
+  std::ifstream csv(dir / "frequencies.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "rpm,nd,mode,freq_hz");
+  // Rows: per speed, ND 0 and 6 (= N/2) single (2 modes), ND 3 pairs (4 modes).
+  std::map<std::pair<double, int>, std::vector<double>> f;
+  while (std::getline(csv, line)) {
+    double rpm, hz;
+    int nd, mode;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%d,%d,%lf", &rpm, &nd, &mode, &hz), 4) << line;
+    f[{rpm, nd}].push_back(hz);
+  }
+  auto at = [&](double rpm, int nd) { return f[std::make_pair(rpm, nd)]; };
+  EXPECT_EQ(f.size(), 6u);
+  EXPECT_EQ(at(0.0, 0).size(), 2u);
+  EXPECT_EQ(at(0.0, 3).size(), 4u);
+  EXPECT_EQ(at(0.0, 6).size(), 2u);
+  EXPECT_NEAR(at(0.0, 3)[0] / at(0.0, 3)[1], 1.0, 1e-8);  // a travelling-wave pair
+  // Centrifugal stiffening raises the first blade-dominated frequency of each ND.
+  for (int nd : {0, 3, 6}) EXPECT_GT(at(12000.0, nd)[0], at(0.0, nd)[0]) << "ND " << nd;
+}
+
+TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
+  const auto dir = freshDir("modalbad");
+  const std::string base =
+      "cyclone:\n  analysis: modal\n  mesh:\n    shrouded_sector:\n      sectors: 12\n      mesh_size: 12.0\n"
+      "  constraints:\n    fixed_node_sets: [bore]\n";
+  auto msg = failure(base + "  modal:\n    nodal_diameters: [7]\n", dir);
+  EXPECT_NE(msg.find("nodal_diameters"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("0..6"), std::string::npos) << msg;
+  msg = failure(base + "  cyclic:\n    configuration: glued\n", dir);
+  EXPECT_NE(msg.find("configuration"), std::string::npos) << msg;
+  msg = failure(base + "  cyclic:\n    sectors: 1\n", dir);
+  EXPECT_NE(msg.find("at least 2 sectors"), std::string::npos) << msg;
+  msg = failure(base + "  cyclic:\n    sectors: 13\n", dir);  // faces do not match a 13-sector rotation
+  EXPECT_NE(msg.find("do not match"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "frequencies.csv"));
 }

@@ -61,14 +61,15 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   return out;
 }
 
-void writeFrequenciesCsv(const std::string& path, double rpm, const std::vector<HarmonicModes>& modes) {
+void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {
   AtomicFile file(path);
   std::FILE* f = std::fopen(file.tempPath().c_str(), "w");
   if (!f) throw Error("cannot write " + path);
   std::fprintf(f, "rpm,nd,mode,freq_hz\n");
-  for (const auto& hm : modes)
-    for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i)
-      std::fprintf(f, "%.10g,%d,%zu,%.12g\n", rpm, hm.harmonic, i + 1, hm.frequenciesHz[i]);
+  for (const auto& speed : speeds)
+    for (const auto& hm : speed.harmonics)
+      for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i)
+        std::fprintf(f, "%.10g,%d,%zu,%.12g\n", speed.rpm, hm.harmonic, i + 1, hm.frequenciesHz[i]);
   const bool ok = std::fclose(f) == 0;
   if (!ok) throw Error("cannot write " + path);
   file.commit();

@@ -22,6 +22,8 @@ public:
   int getInt(const std::string& key, int fallback);
   std::string getString(const std::string& key, const std::string& fallback);
   std::vector<std::string> getStringList(const std::string& key, const std::vector<std::string>& fallback);
+  std::vector<int> getIntList(const std::string& key, const std::vector<int>& fallback);
+  std::vector<double> getDoubleList(const std::string& key, const std::vector<double>& fallback);
   std::array<double, 3> getVector3(const std::string& key, const std::array<double, 3>& fallback);
   SceneSection section(const std::string& key);  ///< empty section if absent
   std::vector<std::string> sectionNames();       ///< names of all sublists (marks them used)

@@ -37,8 +37,14 @@ struct HarmonicModes {
 std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm);
 
+/// The modes of every harmonic at one speed.
+struct SpeedModes {
+  double rpm = 0;
+  std::vector<HarmonicModes> harmonics;
+};
+
 /// frequencies.csv: rpm,nd,mode,freq_hz (mode from 1 within each nd). Atomic.
-void writeFrequenciesCsv(const std::string& path, double rpm, const std::vector<HarmonicModes>& modes);
+void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds);
 /// Modes in Exodus: one step per mode (time = frequency in Hz), nodal ux,uy,uz (real
 /// part) and ux_imag,uy_imag,uz_imag, globals nd, mode, rpm. Atomic.
 void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,

@@ -28,6 +28,10 @@ PrestressState solveLinearPrestress(const mesh::Mesh& mesh, const fe::DofTransfo
                                     const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
                                     linalg::CommPtr comm);
 
+/// Exodus file of a prestress state: nodal ux uy uz von_mises, element s_xx..s_xy and
+/// von_mises (means over the integration points), one step at time = rpm.
+void writePrestressExodus(const std::string& path, const mesh::Mesh& mesh, const PrestressState& state);
+
 /// K (+ K_sigma - K_Omega when a prestress is given) on the assembler's unknowns.
 Teuchos::RCP<linalg::Matrix> tangentStiffness(const fe::Assembler& assembler, const fe::IsotropicElastic& material,
                                               const PrestressState* prestress);
