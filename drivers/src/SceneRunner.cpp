@@ -3,6 +3,8 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/post/CampbellDiagram.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
@@ -154,9 +157,17 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                                                         std::to_string(sectors / 2) + " for " +
                                                         std::to_string(sectors) + " sectors");
   if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
-  for (double rpm : speeds)
-    if (!(rpm >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
-  scene.rejectUnknownKeys();
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    if (!(speeds[i] >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
+    if (i > 0 && !(speeds[i] > speeds[i - 1])) throw InputError(m.where("speeds_rpm"), "speeds must increase");
+  }
+  auto dg = scene.section("diagrams");
+  std::vector<int> defaultOrders;
+  for (int eo = 1; eo <= sectors; ++eo) defaultOrders.push_back(eo);
+  const auto engineOrders = dg.getIntList("engine_orders", defaultOrders);
+  for (int eo : engineOrders)
+    if (eo < 1) throw InputError(dg.where("engine_orders"), "engine orders must be positive, got " + std::to_string(eo));
+  dg.rejectUnknownKeys();
   if (fixedSets.empty())
     log::warn("modal analysis without fixed node sets: rigid-body modes exist; give modal/shift < 0");
 
@@ -191,6 +202,31 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   const std::string csv = outDir + "/frequencies.csv";
   if (writer) cyclic::writeFrequenciesCsv(csv, results);
   summary.written.push_back(csv);
+
+  // Diagrams: SAFE at any speed set; Campbell and resonances need a speed range.
+  const auto branches = post::trackFamilies(results);
+  const auto resonances = speeds.size() > 1 ? post::findResonances(branches, sectors, engineOrders)
+                                            : std::vector<post::Resonance>{};
+  if (writer) post::writeSafeSvg(outDir + "/safe.svg", branches, sectors, engineOrders, resonances);
+  summary.written.push_back(outDir + "/safe.svg");
+  if (speeds.size() > 1) {
+    if (writer) {
+      post::writeCampbellSvg(outDir + "/campbell.svg", branches, engineOrders, resonances);
+      post::writeCampbellCsv(outDir + "/campbell.csv", branches);
+      post::writeResonancesCsv(outDir + "/resonances.csv", resonances);
+    }
+    for (const char* f : {"/campbell.svg", "/campbell.csv", "/resonances.csv"}) summary.written.push_back(outDir + f);
+    std::ostringstream line;
+    line << "diagrams: " << branches.size() << " branches tracked by MAC, " << resonances.size()
+         << " resonances in " << speeds.front() << ".." << speeds.back() << " rpm";
+    for (std::size_t i = 0; i < resonances.size() && i < 3; ++i)
+      line << (i ? "; " : ": ") << "EO " << resonances[i].engineOrder << " ND " << resonances[i].nd << " family "
+           << resonances[i].family << " at " << std::round(resonances[i].rpm) << " rpm, "
+           << std::round(resonances[i].freqHz) << " Hz";
+    summary.computed.push_back(line.str());
+  } else {
+    log::info("one speed: SAFE diagram only (a Campbell diagram and resonances need speeds_rpm with 2 or more values)");
+  }
 }
 
 void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
@@ -235,7 +271,6 @@ void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string&
     problem.solver.maxIterations = s.getInt("max_iterations", problem.solver.maxIterations);
     s.rejectUnknownKeys();
   }
-  scene.rejectUnknownKeys();
   if (problem.fixedNodeSets.empty())
     throw InputError(scene.where("constraints/fixed_node_sets"),
                      "a static analysis needs fixed node sets (the model would move as a rigid body)");
@@ -275,9 +310,14 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
   SceneSection scene(top, source, "cyclone");
   SceneSummary summary;
-  const std::string analysis = scene.getString("analysis", "static");
-  if (analysis != "static" && analysis != "mesh" && analysis != "modal")
-    throw InputError(scene.where("analysis"), "unknown analysis '" + analysis + "' (use static, modal or mesh)");
+  const auto analyses = scene.getStringList("analysis", {"static"});
+  for (const auto& a : analyses)
+    if (a != "static" && a != "mesh" && a != "modal")
+      throw InputError(scene.where("analysis"), "unknown analysis '" + a + "' (use static, modal or mesh, or a list)");
+  auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
+  // Top-level keys are checked before anything runs, so a typo costs no computation.
+  scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
+                             "cyclic", "modal", "diagrams"});
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");
@@ -286,9 +326,8 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
 
   int builtInSectors = 0;
   auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
-  if (analysis == "static") staticStage(scene, mesh, outDir, comm, summary);
-  if (analysis == "modal") modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
-  scene.rejectUnknownKeys();
+  if (wants("static")) staticStage(scene, mesh, outDir, comm, summary);
+  if (wants("modal")) modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
   return summary;
 }
 

@@ -128,6 +128,17 @@ std::vector<std::string> SceneSection::sectionNames() {
   return names;
 }
 
+void SceneSection::rejectKeysOtherThan(const std::set<std::string>& known) const {
+  for (auto it = list_.begin(); it != list_.end(); ++it) {
+    const auto& name = list_.name(it);
+    if (!known.count(name)) {
+      std::string all;
+      for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
+      throw InputError(where(name), "unknown key (known here: " + all + ")");
+    }
+  }
+}
+
 void SceneSection::rejectUnknownKeys() const {
   for (auto it = list_.begin(); it != list_.end(); ++it) {
     const auto& name = list_.name(it);

@@ -30,6 +30,8 @@ public:
 
   /// Throws InputError for any key that was never asked for.
   void rejectUnknownKeys() const;
+  /// Throws InputError for any key not in `known` (before the keys are read).
+  void rejectKeysOtherThan(const std::set<std::string>& known) const;
   /// "file: parameter 'path/key'" for messages.
   std::string where(const std::string& key) const;
   /// "file: section 'path'" for messages about the section as a whole.
