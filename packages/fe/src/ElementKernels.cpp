@@ -256,6 +256,60 @@ Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, d
   return K;
 }
 
+TotalLagrangianElement elementTotalLagrangian(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                                              const Eigen::VectorXd& ue, bool wantTangent) {
+  const int n = checkedNodeCount(type, X);
+  if (ue.size() != 3 * n) throw Error("elementTotalLagrangian: displacement vector of the wrong size");
+  const auto& t = shapeTable(type, Rule::Stiffness);
+  const double floor = degenerateDetJ(X);
+  const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
+  TotalLagrangianElement out;
+  out.internalForce = Eigen::VectorXd::Zero(3 * n);
+  if (wantTangent) out.tangent = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  out.secondPK.resize(t.numPoints(), 6);
+  out.cauchy.resize(t.numPoints(), 6);
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, 3 * n);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> U(n, 3);
+  for (int a = 0; a < n; ++a) U.row(a) = ue.segment<3>(3 * a).transpose();
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
+    const ElementCoords G = t.dN[q] * J.inverse();  // dN/dX in the reference configuration
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + U.transpose() * G;
+    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+    Eigen::Matrix<double, 6, 1> e;
+    e << E(0, 0), E(1, 1), E(2, 2), 2 * E(1, 2), 2 * E(0, 2), 2 * E(0, 1);
+    const Eigen::Matrix<double, 6, 1> S = D * e;
+    out.secondPK.row(q) = S.transpose();
+    Eigen::Matrix3d St;
+    St << S(0), S(5), S(4), S(5), S(1), S(3), S(4), S(3), S(2);
+    const Eigen::Matrix3d sigma = F * St * F.transpose() / F.determinant();
+    out.cauchy.row(q) << sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(1, 2), sigma(0, 2), sigma(0, 1);
+    // delta E = B delta u: row ij of node a, component k: (F_ki G_aj + F_kj G_ai) / (1 or 2).
+    for (int a = 0; a < n; ++a)
+      for (int k = 0; k < 3; ++k) {
+        const int c = 3 * a + k;
+        B(0, c) = F(k, 0) * G(a, 0);
+        B(1, c) = F(k, 1) * G(a, 1);
+        B(2, c) = F(k, 2) * G(a, 2);
+        B(3, c) = F(k, 1) * G(a, 2) + F(k, 2) * G(a, 1);
+        B(4, c) = F(k, 0) * G(a, 2) + F(k, 2) * G(a, 0);
+        B(5, c) = F(k, 0) * G(a, 1) + F(k, 1) * G(a, 0);
+      }
+    const double w = t.weights[q] * detJ;
+    out.internalForce.noalias() += w * (B.transpose() * S);
+    if (wantTangent) {
+      out.tangent.noalias() += w * (B.transpose() * D * B);
+      const Eigen::MatrixXd g = w * (G * St * G.transpose());
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b)
+          for (int d = 0; d < 3; ++d) out.tangent(3 * a + d, 3 * b + d) += g(a, b);
+    }
+  }
+  if (wantTangent) out.tangent = 0.5 * (out.tangent + out.tangent.transpose()).eval();
+  return out;
+}
+
 double vonMises(const Eigen::Matrix<double, 6, 1>& s) {
   const double dxy = s[0] - s[1], dyz = s[1] - s[2], dzx = s[2] - s[0];
   return std::sqrt(0.5 * (dxy * dxy + dyz * dyz + dzx * dzx) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));

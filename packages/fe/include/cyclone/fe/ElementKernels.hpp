@@ -55,6 +55,21 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
 /// subtracted from the tangent (the load follows the deformed position).
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
                                      const Axis& axis);
+/// Geometrically nonlinear element (Total Lagrangian, St Venant-Kirchhoff) at the
+/// element displacement ue, stiffness rule: Green-Lagrange strain E = (F^T F - I)/2,
+/// second Piola-Kirchhoff stress S = D E,
+///   internal force  f = int B(u)^T S dV0,
+///   tangent         K = int B(u)^T D B(u) dV0 + int G^T S G dV0 (material + geometric),
+/// with B(u) the strain variation operator (F^T-weighted gradients).
+struct TotalLagrangianElement {
+  Eigen::VectorXd internalForce;
+  Eigen::MatrixXd tangent;                          ///< empty unless asked for
+  Eigen::Matrix<double, Eigen::Dynamic, 6> secondPK;  ///< per stiffness-rule point
+  Eigen::Matrix<double, Eigen::Dynamic, 6> cauchy;    ///< sigma = F S F^T / det F, per point
+};
+TotalLagrangianElement elementTotalLagrangian(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                                              const Eigen::VectorXd& ue, bool wantTangent);
+
 /// von Mises equivalent of a Voigt stress.
 double vonMises(const Eigen::Matrix<double, 6, 1>& s);
 
