@@ -148,8 +148,8 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   problem.shift = m.getDouble("shift", 0.0);
   const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
   const std::string prestress = m.getString("prestress", "linear");
-  if (prestress != "linear" && prestress != "none")
-    throw InputError(m.where("prestress"), "unknown prestress '" + prestress + "' (use linear or none)");
+  if (prestress != "linear" && prestress != "nonlinear" && prestress != "none")
+    throw InputError(m.where("prestress"), "unknown prestress '" + prestress + "' (use linear, nonlinear or none)");
   m.rejectUnknownKeys();
   for (int k : problem.harmonics)
     if (k < 0 || k > sectors / 2)
@@ -176,12 +176,13 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   for (double rpm : speeds) {
     cyclic::PrestressState state;
     const cyclic::PrestressState* used = nullptr;
-    if (prestress == "linear" && rpm > 0) {
+    if (prestress != "none" && rpm > 0) {
       fe::Axis feAxis;
       feAxis.point = Eigen::Vector3d(ap[0], ap[1], ap[2]);
       feAxis.direction = Eigen::Vector3d(ad[0], ad[1], ad[2]);
-      state = cyclic::solveLinearPrestress(mesh, cyclic::cyclicTransform(mesh, sector, 0, fixedSets), material, rpm,
-                                           feAxis, comm);
+      const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, fixedSets);
+      state = prestress == "linear" ? cyclic::solveLinearPrestress(mesh, k0, material, rpm, feAxis, comm)
+                                    : cyclic::solveNonlinearPrestress(mesh, k0, material, rpm, feAxis, comm);
       used = &state;
       const std::string path = outDir + "/prestress_" + rpmTag(rpm) + ".exo";
       if (writer) cyclic::writePrestressExodus(path, mesh, state);

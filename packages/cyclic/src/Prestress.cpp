@@ -9,6 +9,8 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/LinearSolver.hpp"
 
 namespace cyclone::cyclic {
@@ -81,9 +83,147 @@ void writePrestressExodus(const std::string& path, const mesh::Mesh& mesh, const
   mesh::writeExodus(path, mesh, out);
 }
 
+namespace {
+
+// The element's displacements gathered from a nodal field.
+Eigen::VectorXd elementDisplacement(const mesh::Mesh& mesh, mesh::Index e,
+                                    const std::vector<std::array<double, 3>>& field) {
+  auto [b, le] = mesh.locateElement(e);
+  const auto& block = mesh.blocks[b];
+  const int n = mesh::nodesPerElement(block.type);
+  Eigen::VectorXd ue(3 * n);
+  for (int a = 0; a < n; ++a)
+    for (int d = 0; d < 3; ++d) ue(3 * a + d) = field[block.element(le)[a]][d];
+  return ue;
+}
+
+}  // namespace
+
+PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
+                                       const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                       linalg::CommPtr comm, const NonlinearPrestressOptions& opt) {
+  Timer timer;
+  PrestressState state;
+  state.speedRpm = speedRpm;
+  state.omega = speedRpm * 2 * M_PI / 60;
+  state.axis = axis;
+  state.nonlinear = true;
+  fe::Assembler A(mesh, transform, comm);
+  // The load on the deformed position is affine in u: f(u) = f1 + K1 u at full speed, scaled by lambda.
+  const auto f1 = A.centrifugalLoad(material, state.omega, axis);
+  const auto K1 = A.assemble([&](mesh::Index, fe::ElementType t, const fe::ElementCoords& X) {
+    return fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
+  });
+  const double loadNorm = f1->getVector(0)->norm2();
+  auto residual = [&](const linalg::MultiVector& u, double lambda, linalg::MultiVector& R) {
+    const auto field = A.nodalField(u);
+    auto fint = A.assembleVector([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
+      return fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), false).internalForce;
+    });
+    K1->apply(u, R);                      // K1 u
+    R.update(1.0, *f1, 1.0);              // f1 + K1 u
+    R.update(1.0, *fint, -lambda);        // fint - lambda (f1 + K1 u)
+    return R.getVector(0)->norm2();
+  };
+
+  linalg::MultiVector u(A.map(), 1), trial(A.map(), 1), R(A.map(), 1), du(A.map(), 1), probe(A.map(), 1);
+  Teuchos::RCP<linalg::Matrix> K0;
+  double lambda = 0, step = std::min(1.0, opt.initialLoadStep);
+  while (lambda < 1.0) {
+    const double target = std::min(1.0, lambda + step);
+    // Predictor: at u = 0 the tangent has the full spin softening but no stress
+    // stiffening yet, so Newton from zero overshoots; start instead from the linear
+    // solution (stiffening and softening then balance from the first iteration),
+    // and later steps from the load-proportional extrapolation of the last state.
+    if (lambda == 0) {
+      if (!K0) K0 = A.stiffness(material);
+      linalg::MultiVector load(A.map(), 1);
+      load.update(target, *f1, 0.0);
+      solvers::DirectSolver(*K0).solve(load, trial);
+    } else {
+      trial.assign(u);
+      trial.scale(target / lambda);
+    }
+    bool converged = false;
+    int iterations = 0;
+    try {
+      double rnorm = residual(trial, target, R);
+      for (; iterations < opt.maxNewtonIterations; ++iterations) {
+        if (rnorm <= opt.tolerance * target * loadNorm) {
+          converged = true;
+          break;
+        }
+        const auto field = A.nodalField(trial);
+        auto J = A.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
+          Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), true).tangent;
+          Ke -= target * fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
+          return Ke;
+        });
+        solvers::DirectSolver solver(*J);
+        R.scale(-1.0);
+        solver.solve(R, du);
+        // Backtracking: halve the step until the residual decreases.
+        double alpha = 1.0, next = 0;
+        for (int halving = 0; halving < 8; ++halving, alpha *= 0.5) {
+          probe.assign(trial);
+          probe.update(alpha, du, 1.0);
+          next = residual(probe, target, R);
+          if (next < (1 - 1e-4 * alpha) * rnorm) break;
+        }
+        trial.assign(probe);
+        rnorm = next;
+        ++state.newtonIterations;
+      }
+    } catch (const SolverError&) {
+      converged = false;  // a singular tangent in the step: cut it like a non-converged step
+    }
+    if (converged) {
+      u.assign(trial);
+      lambda = target;
+      ++state.loadSteps;
+      step = std::min(2 * step, 1.0);
+      std::ostringstream msg;
+      msg << "nonlinear prestress: " << speedRpm * std::sqrt(lambda) << " rpm reached (" << iterations
+          << " Newton iterations)";
+      log::info(msg.str());
+    } else {
+      step *= 0.5;
+      if (step < opt.minLoadStep) {
+        std::ostringstream msg;
+        msg << "nonlinear prestress: " << speedRpm << " rpm cannot be reached; Newton failed even with load step "
+            << step * 2 << " of Omega^2; the last converged state is at " << speedRpm * std::sqrt(lambda) << " rpm";
+        throw SolverError(msg.str());
+      }
+    }
+  }
+  state.displacement = A.nodalField(u);
+  state.stress.resize(mesh.numElements());
+  for (mesh::Index e = 0; e < mesh.numElements(); ++e) {
+    auto [b, le] = mesh.locateElement(e);
+    state.stress[e] = fe::elementTotalLagrangian(mesh.blocks[b].type, A.elementCoords(e), material,
+                                                 elementDisplacement(mesh, e, state.displacement), false)
+                          .cauchy;
+  }
+  state.solveSeconds = timer.seconds();
+  std::ostringstream msg;
+  msg << "nonlinear prestress at " << speedRpm << " rpm: " << state.loadSteps << " load steps, "
+      << state.newtonIterations << " Newton iterations, " << state.solveSeconds << " s";
+  log::info(msg.str());
+  return state;
+}
+
 Teuchos::RCP<linalg::Matrix> tangentStiffness(const fe::Assembler& assembler, const fe::IsotropicElastic& material,
                                               const PrestressState* prestress) {
   if (!prestress || prestress->omega == 0) return assembler.stiffness(material);
+  if (prestress->nonlinear)
+    return assembler.assemble([&](mesh::Index e, fe::ElementType type, const fe::ElementCoords& X) {
+      Eigen::MatrixXd K = fe::elementTotalLagrangian(type, X, material,
+                                                     elementDisplacement(assembler.mesh(), e, prestress->displacement),
+                                                     true)
+                              .tangent;
+      K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
+      return K;
+    });
   return assembler.assemble([&](mesh::Index e, fe::ElementType type, const fe::ElementCoords& X) {
     Eigen::MatrixXd K = fe::elementStiffness(type, X, material);
     K += fe::elementGeometricStiffness(type, X, prestress->stress[e]);

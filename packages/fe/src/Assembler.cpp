@@ -242,13 +242,12 @@ Teuchos::RCP<linalg::Matrix> assembleMatrix(const Assembler& A, const Assembler:
   return matrix;
 }
 
-Teuchos::RCP<linalg::MultiVector> assembleVector(
-    const Assembler& A, const Assembler::Impl& I,
-    const std::function<Eigen::VectorXd(ElementType, const ElementCoords&)>& kernel) {
+Teuchos::RCP<linalg::MultiVector> assembleVectorImpl(const Assembler& A, const Assembler::Impl& I,
+                                                     const Assembler::ElementVectorKernel& kernel) {
   auto vec = Teuchos::rcp(new FEVector(I.owned, I.importer, 1));
   vec->beginAssembly();
   forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf, auto&&) {
-    const Eigen::VectorXd fr = transformOf(0).transpose() * kernel(type, X);  // loads act on copy 0
+    const Eigen::VectorXd fr = transformOf(0).transpose() * kernel(I.elements[i], type, X);  // loads act on copy 0
     const auto& eq = I.equations[i];
     for (std::size_t r = 0; r < eq.size(); ++r) vec->sumIntoGlobalValue(eq[r], 0, fr(r));
   });
@@ -273,17 +272,19 @@ Teuchos::RCP<linalg::Matrix> Assembler::mass(const IsotropicElastic& material) c
   return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementMass(t, X, material.rho); });
 }
 
+Teuchos::RCP<linalg::MultiVector> Assembler::assembleVector(const ElementVectorKernel& kernel) const {
+  return assembleVectorImpl(*this, *impl_, kernel);
+}
+
 Teuchos::RCP<linalg::MultiVector> Assembler::centrifugalLoad(const IsotropicElastic& material, double omega,
                                                              const Axis& axis) const {
-  return assembleVector(*this, *impl_, [&](ElementType t, const ElementCoords& X) {
+  return assembleVector([&](mesh::Index, ElementType t, const ElementCoords& X) {
     return elementCentrifugalLoad(t, X, material.rho, omega, axis);
   });
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::bodyLoad(const Eigen::Vector3d& b) const {
-  return assembleVector(*this, *impl_, [&](ElementType t, const ElementCoords& X) {
-    return elementBodyLoad(t, X, b);
-  });
+  return assembleVector([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementBodyLoad(t, X, b); });
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::nodalLoad(const std::vector<mesh::Index>& nodes,

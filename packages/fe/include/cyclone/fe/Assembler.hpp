@@ -43,6 +43,10 @@ public:
   using ElementMatrixKernel = std::function<Eigen::MatrixXd(mesh::Index, ElementType, const ElementCoords&)>;
   Teuchos::RCP<linalg::Matrix> assemble(const ElementMatrixKernel& kernel) const;
 
+  /// Any element vector (3n, node-major) summed into a global vector through the copy-0 transform.
+  using ElementVectorKernel = std::function<Eigen::VectorXd(mesh::Index, ElementType, const ElementCoords&)>;
+  Teuchos::RCP<linalg::MultiVector> assembleVector(const ElementVectorKernel& kernel) const;
+
   Teuchos::RCP<linalg::Matrix> stiffness(const IsotropicElastic& material) const;
   Teuchos::RCP<linalg::Matrix> mass(const IsotropicElastic& material) const;
   /// Centrifugal body load at angular speed omega (rad/s) about the axis, undeformed geometry.
