@@ -81,6 +81,7 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
   int ok = 1;
   if (I.root) {
     I.cholmod.cholmod().supernodal = CHOLMOD_SUPERNODAL;
+    I.cholmod.cholmod().print = 0;  // failures are reported by SolverError, not on stderr
     I.cholmod.compute(S);
     ok = I.cholmod.info() == Eigen::Success;
     I.stats.nonzerosFactor = I.cholmod.cholmod().lnz;
