@@ -12,6 +12,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/LinearSolver.hpp"
+#include "cyclone/solvers/NewtonSolver.hpp"
 
 namespace cyclone::cyclic {
 
@@ -115,7 +116,7 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
     return fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
   });
   const double loadNorm = f1->getVector(0)->norm2();
-  auto residual = [&](const linalg::MultiVector& u, double lambda, linalg::MultiVector& R) {
+  auto residual = [&](const linalg::MultiVector& u, double lambda, linalg::MultiVector& R) -> void {
     const auto field = A.nodalField(u);
     auto fint = A.assembleVector([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
       return fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), false).internalForce;
@@ -123,10 +124,9 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
     K1->apply(u, R);                      // K1 u
     R.update(1.0, *f1, 1.0);              // f1 + K1 u
     R.update(1.0, *fint, -lambda);        // fint - lambda (f1 + K1 u)
-    return R.getVector(0)->norm2();
   };
 
-  linalg::MultiVector u(A.map(), 1), trial(A.map(), 1), R(A.map(), 1), du(A.map(), 1), probe(A.map(), 1);
+  linalg::MultiVector u(A.map(), 1), trial(A.map(), 1);
   Teuchos::RCP<linalg::Matrix> K0;
   double lambda = 0, step = std::min(1.0, opt.initialLoadStep);
   while (lambda < 1.0) {
@@ -144,39 +144,24 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
       trial.assign(u);
       trial.scale(target / lambda);
     }
-    bool converged = false;
-    int iterations = 0;
-    try {
-      double rnorm = residual(trial, target, R);
-      for (; iterations < opt.maxNewtonIterations; ++iterations) {
-        if (rnorm <= opt.tolerance * target * loadNorm) {
-          converged = true;
-          break;
-        }
-        const auto field = A.nodalField(trial);
-        auto J = A.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
-          Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), true).tangent;
-          Ke -= target * fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
-          return Ke;
-        });
-        solvers::DirectSolver solver(*J);
-        R.scale(-1.0);
-        solver.solve(R, du);
-        // Backtracking: halve the step until the residual decreases.
-        double alpha = 1.0, next = 0;
-        for (int halving = 0; halving < 8; ++halving, alpha *= 0.5) {
-          probe.assign(trial);
-          probe.update(alpha, du, 1.0);
-          next = residual(probe, target, R);
-          if (next < (1 - 1e-4 * alpha) * rnorm) break;
-        }
-        trial.assign(probe);
-        rnorm = next;
-        ++state.newtonIterations;
-      }
-    } catch (const SolverError&) {
-      converged = false;  // a singular tangent in the step: cut it like a non-converged step
-    }
+    // Newton through NOX on R(u) = f_int(u) - target (f1 + K1 u), Jacobian K_T(u) - target K1.
+    solvers::NewtonProblem problem;
+    problem.residual = [&](const linalg::MultiVector& x, linalg::MultiVector& Rx) { residual(x, target, Rx); };
+    problem.jacobian = [&](const linalg::MultiVector& x) {
+      const auto field = A.nodalField(x);
+      return A.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
+        Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), true).tangent;
+        Ke -= target * fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
+        return Ke;
+      });
+    };
+    solvers::NewtonOptions newton;
+    newton.absoluteTolerance = opt.tolerance * target * loadNorm;
+    newton.maxIterations = opt.maxNewtonIterations;
+    const auto report = solvers::solveNewton(problem, trial, newton);
+    const bool converged = report.converged;
+    const int iterations = report.iterations;
+    state.newtonIterations += iterations;
     if (converged) {
       u.assign(trial);
       lambda = target;
