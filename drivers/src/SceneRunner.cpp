@@ -14,6 +14,7 @@
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/post/CampbellDiagram.hpp"
+#include "cyclone/post/Mac.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
@@ -21,6 +22,7 @@
 #include "cyclone/mesh/MeshReader.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
+#include "cyclone/solvers/ModalSolver.hpp"
 
 namespace cyclone::scenes {
 
@@ -145,9 +147,15 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   problem.fixedNodeSets = fixedSets;
   problem.harmonics = m.getIntList("nodal_diameters", {});
   problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
-  problem.shift = m.getDouble("shift", 0.0);
+  // Without a shift the solver picks one (0 when K factors; below the first elastic
+  // eigenvalue when rigid-body modes exist).
+  problem.shift = m.has("shift") ? m.getDouble("shift", 0.0) : solvers::ModalOptions::automaticShift();
   const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
   const std::string prestress = m.getString("prestress", "linear");
+  const std::string macChoice = m.getString("mac", "none");
+  if (macChoice != "speeds" && macChoice != "none")
+    throw InputError(m.where("mac"), "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'");
+  const bool writeMac = macChoice == "speeds";
   if (prestress != "linear" && prestress != "nonlinear" && prestress != "none")
     throw InputError(m.where("prestress"), "unknown prestress '" + prestress + "' (use linear, nonlinear or none)");
   m.rejectUnknownKeys();
@@ -169,7 +177,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     if (eo < 1) throw InputError(dg.where("engine_orders"), "engine orders must be positive, got " + std::to_string(eo));
   dg.rejectUnknownKeys();
   if (fixedSets.empty())
-    log::warn("modal analysis without fixed node sets: rigid-body modes exist; give modal/shift < 0");
+    log::warn("modal analysis without fixed node sets: rigid-body modes are expected (zero frequencies)");
 
   const bool writer = comm->getRank() == 0;
   std::vector<cyclic::SpeedModes> results;
@@ -197,12 +205,39 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     std::ostringstream line;
     line << "modes at " << rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
          << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";
+    // Rigid-body modes: frequencies below 1e-4 of the highest one computed for their ND.
+    std::string rigid;
+    for (const auto& hm : sm.harmonics) {
+      int count = 0;
+      for (double f : hm.frequenciesHz) count += f < 1e-4 * hm.frequenciesHz.back();
+      if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.harmonic) + ": " +
+                          std::to_string(count);
+    }
+    if (!rigid.empty()) line << "; rigid-body modes " << rigid;
     summary.computed.push_back(line.str());
     results.push_back(std::move(sm));
   }
   const std::string csv = outDir + "/frequencies.csv";
   if (writer) cyclic::writeFrequenciesCsv(csv, results);
   summary.written.push_back(csv);
+
+  // MAC of each nodal diameter's families, lowest against highest speed: how much the
+  // prestress changed the mode shapes (diagonal near 1: same shapes, shifted frequencies).
+  if (writeMac && results.size() > 1) {
+    for (std::size_t h = 0; h < results.front().harmonics.size(); ++h) {
+      const auto& a = results.front().harmonics[h];
+      const auto mac = post::familyMac(a, results.back().harmonics[h]);
+      const std::string base = outDir + "/mac_nd" + std::to_string(a.harmonic);
+      if (writer) {
+        post::writeMacCsv(base + ".csv", mac);
+        post::writeMacSvg(base + ".svg", mac,
+                          "MAC ND " + std::to_string(a.harmonic) + ": " + rpmTag(results.front().rpm) + " (rows) vs " +
+                              rpmTag(results.back().rpm) + " (columns)");
+      }
+      summary.written.push_back(base + ".csv");
+      summary.written.push_back(base + ".svg");
+    }
+  }
 
   // Diagrams: SAFE at any speed set; Campbell and resonances need a speed range.
   const auto branches = post::trackFamilies(results);

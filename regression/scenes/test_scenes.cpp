@@ -175,3 +175,20 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   EXPECT_NE(msg.find("do not match"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frequencies.csv"));
 }
+
+TEST(Scenes, ModalWithoutConstraintsReportsRigidBodyModes) {
+  // A free sector: k = 0 keeps the rotation about the axis and the axial
+  // translation, k = 1 the in-plane translations and the two tilts (a pair each).
+  log::setQuiet(true);
+  const auto dir = freshDir("free");
+  const std::string yaml =
+      "cyclone:\n  analysis: modal\n  mesh:\n    shrouded_sector:\n      sectors: 12\n      mesh_size: 12.0\n"
+      "  cyclic:\n    configuration: fixed_shroud\n"
+      "  modal:\n    nodal_diameters: [0, 1, 2]\n    modes_per_nd: 3\n    prestress: none\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(yaml, "free.yaml", o, Tpetra::getDefaultComm());
+  std::string all;
+  for (const auto& line : summary.computed) all += line + "\n";
+  EXPECT_NE(all.find("rigid-body modes ND 0: 2, ND 1: 4"), std::string::npos) << all;
+}

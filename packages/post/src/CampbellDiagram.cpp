@@ -44,6 +44,14 @@ void writeAtomically(const std::string& path, Write&& write) {
 
 }  // namespace
 
+Eigen::MatrixXd familyMac(const cyclic::HarmonicModes& a, const cyclic::HarmonicModes& b) {
+  const int fa = int(a.frequenciesHz.size()) / a.copies, fb = int(b.frequenciesHz.size()) / b.copies;
+  Eigen::MatrixXd mac(fa, fb);
+  for (int i = 0; i < fa; ++i)
+    for (int j = 0; j < fb; ++j) mac(i, j) = subspaceMac(familyShapes(a, i), familyShapes(b, j));
+  return mac;
+}
+
 std::vector<Branch> trackFamilies(const std::vector<cyclic::SpeedModes>& speeds) {
   std::vector<Branch> branches;
   if (speeds.empty()) return branches;

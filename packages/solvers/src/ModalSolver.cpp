@@ -9,6 +9,9 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -52,8 +55,58 @@ private:
 
 }  // namespace
 
-ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& opt) {
+namespace {
+
+// K factors: no rigid-body modes, shift 0. Otherwise a rough pass with a small
+// negative shift (relative to the mean diagonal ratio) locates the first elastic
+// eigenvalue; the shift then goes to minus that, where K - sigma M is well conditioned.
+double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOptions opt, int& rigidModes) {
+  rigidModes = 0;
+  try {
+    DirectSolver probe(K);
+    return 0.0;
+  } catch (const SolverError&) {
+  }
+  linalg::Vector dk(K.getRowMap()), dm(M.getRowMap());
+  K.getLocalDiagCopy(dk);
+  M.getLocalDiagCopy(dm);
+  double ratio = 0, count = 0;
+  {
+    auto k = dk.getData(), m = dm.getData();
+    for (decltype(k.size()) i = 0; i < k.size(); ++i)
+      if (m[i] > 0) ratio += k[i] / m[i], count += 1;
+  }
+  double sums[2] = {ratio, count}, global[2];
+  Teuchos::reduceAll(*K.getRowMap()->getComm(), Teuchos::REDUCE_SUM, 2, sums, global);
+  const double mean = global[0] / std::max(1.0, global[1]);
+  opt.shift = -1e-6 * mean;
+  opt.tolerance = 1e-6;
+  opt.blockSize = std::max(opt.blockSize, 6);
+  opt.numModes = std::max(opt.numModes, 7);
+  const auto rough = solveModes(K, M, opt);
+  const double top = rough.eigenvalues.back();
+  double firstElastic = top;
+  for (double lam : rough.eigenvalues) {
+    if (lam > 1e-6 * top) {
+      firstElastic = lam;
+      break;
+    }
+    ++rigidModes;
+  }
+  return -firstElastic;
+}
+
+}  // namespace
+
+ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options) {
+  ModalOptions opt = options;
+  int rigidModes = 0;
+  if (std::isnan(opt.shift)) {
+    opt.shift = chooseShift(K, M, options, rigidModes);
+    if (rigidModes > 0) opt.blockSize = std::max(opt.blockSize, std::min(rigidModes, 6));
+  }
   ModalResult result;
+  result.shift = opt.shift;
   const long long n = K.getGlobalNumRows();
   if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
   if (opt.numModes >= n)

@@ -32,6 +32,10 @@ struct Resonance {
 std::vector<Resonance> findResonances(const std::vector<Branch>& branches, int sectors,
                                       const std::vector<int>& engineOrders);
 
+/// Family-subspace MAC between the modes of one nodal diameter at two speeds
+/// (rows: families at `a`, columns: families at `b`); a pair counts as one family.
+Eigen::MatrixXd familyMac(const cyclic::HarmonicModes& a, const cyclic::HarmonicModes& b);
+
 void writeCampbellCsv(const std::string& path, const std::vector<Branch>& branches);
 void writeResonancesCsv(const std::string& path, const std::vector<Resonance>& resonances);
 /// Frequency vs rpm, one line per branch (coloured by ND), dashed engine-order lines.

@@ -3,6 +3,7 @@
 // Anasazi's block Krylov-Schur on the shift-inverted operator (K - sigma M)^{-1} M
 // with the CHOLMOD factorization. Block size >= 2 so that double modes (cyclic
 // pairs, symmetric structures) are caught together.
+#include <limits>
 #include <vector>
 
 #include "cyclone/fe/LinearAlgebra.hpp"
@@ -15,7 +16,10 @@ struct ModalOptions {
   /// K - sigma M is positive definite. 0 suits constrained models. A free body
   /// needs a negative shift of the order of its first elastic eigenvalue: a tiny
   /// one leaves K - sigma M so ill-conditioned that elastic modes cannot converge.
+  /// automaticShift() (NaN): 0 if K factors, otherwise a rough first pass finds the
+  /// first elastic eigenvalue and the real pass shifts to minus that.
   double shift = 0.0;
+  static double automaticShift() { return std::numeric_limits<double>::quiet_NaN(); }
   int blockSize = 4;  ///< at least the largest multiplicity sought (6 for a free body)
   int numBlocks = 0;  ///< Krylov blocks; 0 picks enough for numModes
   double tolerance = 1e-10;
@@ -28,6 +32,7 @@ struct ModalResult {
   std::vector<double> residuals;     ///< ||K x - lambda M x|| / ((||K||_F + |lambda| ||M||_F) ||x||)
   Teuchos::RCP<linalg::MultiVector> modes;  ///< mass-normalised: x^T M x = 1
   int operatorApplies = 0;
+  double shift = 0;  ///< the shift used (chosen when automatic)
   double factorSeconds = 0, solveSeconds = 0;
 };
 
