@@ -97,3 +97,37 @@ TEST(LumpedChains, LaxaldeBlisk) {
   std::printf("\n");
   EXPECT_NEAR(hz(reducedEigenvalues(s, 0)(1)), 249.312, 0.0015);
 }
+
+// Seed chapter 6.5: 2 DOF per sector (disc md on kd, blade mb on kb, discs
+// coupled by kc). Per nodal diameter l the frequencies are the roots of
+//   mb md w^4 - [(kd + keq + kb) mb + kb md] w^2 + (kd + keq) kb = 0,  keq = 4 kc sin^2(l theta / 2),
+// and the two families veer where the disc-alone frequency crosses the blade's.
+TEST(LumpedChains, TwoDofPerSectorVeering) {
+  const int N = 12;
+  const double md = 1.0, mb = 0.2, kd = 1e3, kb = 800.0, kc = 2e3;
+  LumpedSector s{3, Eigen::MatrixXd::Zero(3, 3), Eigen::MatrixXd::Zero(3, 3), {}};
+  s.K(0, 0) += kd;
+  spring(s.K, 0, 1, kb);
+  spring(s.K, 0, 2, kc);  // node 2: the next sector's disc
+  s.M(0, 0) = md;
+  s.M(1, 1) = mb;
+  s.sector.sectors = N;
+  s.sector.left = {0};
+  s.sector.right = {2};
+  double smallestGap = 1e300;
+  int veeringAt = -1;
+  for (int l = 0; l <= N / 2; ++l) {
+    const double keq = 4 * kc * std::pow(std::sin(l * M_PI / N), 2);
+    const double a = mb * md, b = -((kd + keq + kb) * mb + kb * md), c = (kd + keq) * kb;
+    const double disc = std::sqrt(b * b - 4 * a * c);
+    const double low = (-b - disc) / (2 * a), high = (-b + disc) / (2 * a);
+    const auto w2 = reducedEigenvalues(s, l);
+    const int m = (l == 0 || 2 * l == N) ? 1 : 2;
+    ASSERT_EQ(w2.size(), 2 * m);
+    EXPECT_NEAR(w2(0) / low, 1.0, 1e-12) << "l " << l;
+    EXPECT_NEAR(w2(m) / high, 1.0, 1e-12) << "l " << l;
+    if (std::sqrt(high) - std::sqrt(low) < smallestGap) smallestGap = std::sqrt(high) - std::sqrt(low), veeringAt = l;
+  }
+  // The disc-alone frequency (kd + keq) / md crosses the blade's kb / mb = 4000 at l = 2.5.
+  EXPECT_TRUE(veeringAt == 2 || veeringAt == 3) << "closest approach at l = " << veeringAt;
+}
