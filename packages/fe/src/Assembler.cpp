@@ -302,8 +302,10 @@ Teuchos::RCP<linalg::MultiVector> Assembler::nodalLoad(const std::vector<mesh::I
 Teuchos::RCP<linalg::MultiVector> Assembler::rigidBodyModes() const {
   // Each unknown takes the rigid motion's value at its master DOF (exact for plain
   // constraints; for cyclic transforms a near null space good enough for MueLu).
-  auto modes = Teuchos::rcp(new linalg::MultiVector(impl_->owned, 6));
+  // Six columns per copy: the rigid motions of the real part, then of the imaginary part.
+  auto modes = Teuchos::rcp(new linalg::MultiVector(impl_->owned, 6 * transform_.copies()));
   const auto& master = transform_.masterDof();
+  const auto& copyOf = transform_.masterCopy();
   for (std::size_t i = 0; i < impl_->owned->getNodeNumElements(); ++i) {
     const GlobalIndex g = impl_->owned->getGlobalElement(i);
     if (master[g] < 0) continue;
@@ -313,7 +315,7 @@ Teuchos::RCP<linalg::MultiVector> Assembler::rigidBodyModes() const {
     // Columns: translations x, y, z; rotations about x, y, z (u = e_k cross x).
     const double values[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
                                  {0, -x[2], x[1]}, {x[2], 0, -x[0]}, {-x[1], x[0], 0}};
-    for (int k = 0; k < 6; ++k) modes->replaceLocalValue(i, k, values[k][d]);
+    for (int k = 0; k < 6; ++k) modes->replaceLocalValue(i, 6 * copyOf[g] + k, values[k][d]);
   }
   return modes;
 }

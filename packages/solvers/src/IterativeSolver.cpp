@@ -15,6 +15,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/solvers/LinearSolver.hpp"
+#include "MueLuPreconditioner.hpp"
 
 namespace cyclone::solvers {
 
@@ -45,6 +46,37 @@ Teuchos::RCP<linalg::MultiVector> viewOn(const linalg::MultiVector& v,
   return Teuchos::rcp(new linalg::MultiVector(v, map, 0));
 }
 
+// Smoothed aggregation for elasticity: Chebyshev smoothing, relaxation on the
+// coarse level (Debian's KLU2 is wrong on more than one rank).
+Teuchos::ParameterList smoothedAggregationParameters(int equationsPerNode) {
+  Teuchos::ParameterList mueluParams;
+  mueluParams.set("verbosity", "none");
+  mueluParams.set("multigrid algorithm", "sa");
+  mueluParams.set("smoother: type", "CHEBYSHEV");
+  mueluParams.sublist("smoother: params").set("chebyshev: degree", 2);
+  mueluParams.set("coarse: type", "RELAXATION");
+  mueluParams.sublist("coarse: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);
+  mueluParams.set("coarse: max size", 100);
+  mueluParams.set("number of equations", equationsPerNode);
+  return mueluParams;
+}
+
+}  // namespace
+
+Teuchos::RCP<Tpetra::Operator<>> makeMueLuPreconditioner(const linalg::Matrix& A,
+                                                          const Teuchos::RCP<const linalg::MultiVector>& nearNullSpace,
+                                                          int equationsPerNode) {
+  if (Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(A.getComm()).is_null())
+    throw SolverError("MueLu preconditioner: the matrix must live on an MPI communicator (MueLu 13.2 needs one)");
+  Teuchos::ParameterList params = smoothedAggregationParameters(nearNullSpace.is_null() ? 1 : equationsPerNode);
+  if (!nearNullSpace.is_null())
+    params.sublist("user data").set("Nullspace", Teuchos::rcp_const_cast<linalg::MultiVector>(nearNullSpace));
+  Teuchos::RCP<Tpetra::Operator<>> op = Teuchos::rcp_const_cast<linalg::Matrix>(Teuchos::rcpFromRef(A));
+  return MueLu::CreateTpetraPreconditioner(op, params);
+}
+
+namespace {
 }  // namespace
 
 LinearSolveReport solveIterative(const linalg::Matrix& K, const linalg::MultiVector& b, linalg::MultiVector& x,
@@ -53,17 +85,7 @@ LinearSolveReport solveIterative(const linalg::Matrix& K, const linalg::MultiVec
   using MV = linalg::MultiVector;
   LinearSolveReport report;
   Timer timer;
-  Teuchos::ParameterList mueluParams;
-  mueluParams.set("verbosity", "none");
-  mueluParams.set("multigrid algorithm", "sa");
-  mueluParams.set("smoother: type", "CHEBYSHEV");
-  mueluParams.sublist("smoother: params").set("chebyshev: degree", 2);
-  // Debian's KLU2 gives wrong answers on more than one rank: never use it on the coarse level.
-  mueluParams.set("coarse: type", "RELAXATION");
-  mueluParams.sublist("coarse: params").set("relaxation: type", "Symmetric Gauss-Seidel");
-  mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);
-  mueluParams.set("coarse: max size", 100);
-  mueluParams.set("number of equations", options.nearNullSpace.is_null() ? 1 : options.blockSize);
+  Teuchos::ParameterList mueluParams = smoothedAggregationParameters(options.nearNullSpace.is_null() ? 1 : options.blockSize);
   Teuchos::RCP<const linalg::Matrix> Kmpi = Teuchos::rcpFromRef(K);
   Teuchos::RCP<const MV> bmpi = Teuchos::rcpFromRef(b), nullSpace = options.nearNullSpace;
   Teuchos::RCP<MV> xmpi = Teuchos::rcpFromRef(x);

@@ -4,6 +4,7 @@
 
 #include <AnasaziBasicEigenproblem.hpp>
 #include <AnasaziBlockKrylovSchurSolMgr.hpp>
+#include <AnasaziLOBPCGSolMgr.hpp>
 #include <AnasaziTpetraAdapter.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -20,6 +21,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
+#include "MueLuPreconditioner.hpp"
 
 namespace cyclone::solvers {
 
@@ -98,6 +100,75 @@ double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOption
 
 }  // namespace
 
+// Mass-normalises the modes (Anasazi's are M-orthonormal; make it exact and
+// explicit), computes frequencies and normwise backward errors
+// ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||), meaningful for zero
+// (rigid-body) eigenvalues too.
+static void finishModes(const linalg::Matrix& K, const linalg::Matrix& M, const std::vector<double>& lambda,
+                 const std::vector<Teuchos::RCP<const linalg::Vector>>& vectors, ModalResult& result) {
+  const int nev = int(lambda.size());
+  result.modes = Teuchos::rcp(new MV(K.getRowMap(), nev));
+  MV Kx(K.getRowMap(), 1), Mx(K.getRowMap(), 1);
+  const double normK = K.getFrobeniusNorm(), normM = M.getFrobeniusNorm();
+  for (int i = 0; i < nev; ++i) {
+    auto dst = result.modes->getVectorNonConst(i);
+    dst->assign(*vectors[i]);
+    M.apply(*dst, Mx);
+    dst->scale(1.0 / std::sqrt(dst->dot(*Mx.getVector(0))));
+    K.apply(*dst, Kx);
+    M.apply(*dst, Mx);
+    Kx.update(-lambda[i], Mx, 1.0);
+    result.eigenvalues.push_back(lambda[i]);
+    result.frequenciesHz.push_back(std::sqrt(std::max(lambda[i], 0.0)) / (2 * M_PI));
+    result.residuals.push_back(Kx.getVector(0)->norm2() / ((normK + std::abs(lambda[i]) * normM) * dst->norm2()));
+  }
+}
+
+static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& opt) {
+  ModalResult result;
+  Timer timer;
+  auto prec = makeMueLuPreconditioner(K, opt.nearNullSpace, opt.equationsPerNode);
+  result.factorSeconds = timer.seconds();  // the preconditioner set-up stands in for the factorization
+  timer.restart();
+  const int nev = opt.numModes;
+  const int bs = std::max(opt.blockSize, nev + 2);  // one block holding all wanted modes and a margin
+  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
+  X0->randomize();
+  auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(
+      Teuchos::rcpFromRef<const OP>(K), Teuchos::rcpFromRef<const OP>(M), X0));
+  problem->setHermitian(true);
+  problem->setNEV(nev);
+  problem->setPrec(prec);
+  if (!problem->setProblem()) throw SolverError("Anasazi rejected the LOBPCG set-up");
+  Teuchos::ParameterList pl;
+  pl.set("Which", "SM");
+  pl.set("Block Size", bs);
+  pl.set("Maximum Iterations", 2000);
+  pl.set("Convergence Tolerance", std::max(opt.tolerance, 1e-10));
+  pl.set("Use Locking", true);
+  pl.set("Full Ortho", true);
+  pl.set("Verbosity", int(Anasazi::Errors));
+  Anasazi::LOBPCGSolMgr<double, MV, OP> manager(problem, pl);
+  const auto status = manager.solve();
+  const auto& sol = problem->getSolution();
+  if (status != Anasazi::Converged || sol.numVecs < nev)
+    throw SolverError("LOBPCG: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
+                      " modes converged in 2000 iterations");
+  std::vector<int> order(sol.numVecs);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return sol.Evals[a].realpart < sol.Evals[b].realpart; });
+  std::vector<double> lambda;
+  std::vector<Teuchos::RCP<const linalg::Vector>> vectors;
+  for (int i = 0; i < nev; ++i) {
+    lambda.push_back(sol.Evals[order[i]].realpart);
+    vectors.push_back(sol.Evecs->getVector(order[i]));
+  }
+  finishModes(K, M, lambda, vectors, result);
+  result.operatorApplies = manager.getNumIters();
+  result.solveSeconds = timer.seconds();
+  return result;
+}
+
 ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options) {
   ModalOptions opt = options;
   int rigidModes = 0;
@@ -107,6 +178,7 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
   }
   ModalResult result;
   result.shift = opt.shift;
+  if (opt.method == EigenMethod::Lobpcg) return solveModesLobpcg(K, M, opt);
   const long long n = K.getGlobalNumRows();
   if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
   if (opt.numModes >= n)
@@ -161,28 +233,13 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda[a] < lambda[b]; });
 
-  result.modes = Teuchos::rcp(new MV(K.getRowMap(), nev));
-  MV Kx(K.getRowMap(), 1), Mx(K.getRowMap(), 1);
-  const double normK = K.getFrobeniusNorm(), normM = M.getFrobeniusNorm();
+  std::vector<double> sorted;
+  std::vector<Teuchos::RCP<const linalg::Vector>> vectors;
   for (int i = 0; i < nev; ++i) {
-    const int j = sol.index[order[i]];  // Hermitian problem: index is 0 for every real vector
-    (void)j;
-    auto src = sol.Evecs->getVector(order[i]);
-    auto dst = result.modes->getVectorNonConst(i);
-    dst->assign(*src);
-    // Mass normalisation (Anasazi returns M-orthonormal vectors; make it exact and explicit).
-    M.apply(*dst, Mx);
-    const double xMx = dst->dot(*Mx.getVector(0));
-    dst->scale(1.0 / std::sqrt(xMx));
-    const double lam = lambda[order[i]];
-    K.apply(*dst, Kx);
-    M.apply(*dst, Mx);
-    Kx.update(-lam, Mx, 1.0);
-    result.eigenvalues.push_back(lam);
-    result.frequenciesHz.push_back(std::sqrt(std::max(lam, 0.0)) / (2 * M_PI));
-    // Normwise backward error: meaningful for zero (rigid-body) eigenvalues too.
-    result.residuals.push_back(Kx.getVector(0)->norm2() / ((normK + std::abs(lam) * normM) * dst->norm2()));
+    sorted.push_back(lambda[order[i]]);
+    vectors.push_back(sol.Evecs->getVector(order[i]));
   }
+  finishModes(K, M, sorted, vectors, result);
   for (int i = 0; i < nev; ++i)
     if (!(result.residuals[i] < 1e-6))
       throw SolverError("eigen-solution: mode " + std::to_string(i + 1) + " has relative residual " +

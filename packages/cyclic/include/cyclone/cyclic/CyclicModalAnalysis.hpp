@@ -11,6 +11,7 @@
 #include "cyclone/cyclic/Prestress.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
+#include "cyclone/solvers/ModalSolver.hpp"
 
 namespace cyclone::cyclic {
 

@@ -59,7 +59,8 @@ public:
                                               const Eigen::Vector3d& forcePerNode) const;
 
   /// The 6 rigid-body motions (3 translations, 3 rotations about the origin) on the free
-  /// DOFs: MueLu's near null space for elasticity, and a check for free-body models.
+  /// DOFs, per copy (6 x copies columns): MueLu's near null space for elasticity, and a
+  /// check for free-body models.
   Teuchos::RCP<linalg::MultiVector> rigidBodyModes() const;
 
   /// Full nodal field (numNodes x 3, zeros on constrained components) of column `column`

@@ -46,6 +46,11 @@ public:
   /// A physical DOF that carries each unknown with coefficient 1 (its "master"),
   /// as node*3 + component for copy `masterCopy(eq)`; -1 if none.
   const std::vector<long long>& masterDof() const { return master_; }
+  /// The copy of each unknown's master DOF (0 or 1).
+  const std::vector<int>& masterCopy() const { return masterCopy_; }
+  /// True when every node has 0 or 3 unknowns per copy, numbered consecutively
+  /// (3 x copies per node): what MueLu's block aggregation needs.
+  bool blockedByNode() const { return blocked_; }
 
 private:
   std::size_t slot(Index node, int component, int copy) const {
@@ -58,6 +63,8 @@ private:
   std::vector<std::size_t> offsets_;
   std::vector<Term> terms_;
   std::vector<long long> master_;
+  std::vector<int> masterCopy_;
+  bool blocked_ = false;
 };
 
 }  // namespace cyclone::fe

@@ -10,7 +10,15 @@
 
 namespace cyclone::solvers {
 
+/// Shift-invert block Krylov-Schur (factorization, the default) or LOBPCG with a
+/// MueLu preconditioner (no factorization: for meshes too big to factor).
+enum class EigenMethod { ShiftInvert, Lobpcg };
+
 struct ModalOptions {
+  EigenMethod method = EigenMethod::ShiftInvert;
+  /// LOBPCG: near null space for the MueLu preconditioner (Assembler::rigidBodyModes).
+  Teuchos::RCP<const linalg::MultiVector> nearNullSpace;
+  int equationsPerNode = 3;  ///< LOBPCG: MueLu's block size (1 when unknowns are not 3 per node)
   int numModes = 10;
   /// Shift sigma in (rad/s)^2; must lie below the lowest eigenvalue so that
   /// K - sigma M is positive definite. 0 suits constrained models. A free body
