@@ -1,0 +1,46 @@
+#pragma once
+// Pseudo-arclength continuation of a dense nonlinear system F(x; p) = 0 in one
+// parameter p, through turning points, with LOCA (LOCA::LAPACK: the harmonic
+// balance systems of reduced models are dense and small). Newton by NOX inside
+// each step; the step size adapts and is cut when Newton fails or the residual
+// throws; the branch up to a failure is kept.
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cyclone::continuation {
+
+struct ContinuationProblem {
+  int size = 0;
+  /// F(x; p). Throwing counts as a failed evaluation (the step is cut).
+  std::function<void(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F)> residual;
+  /// dF/dx(x; p), size x size.
+  std::function<void(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J)> jacobian;
+};
+
+struct ContinuationOptions {
+  double from = 0, to = 1;          ///< parameter range (either direction)
+  double initialStep = 0.01;        ///< arclength units (scaled with the solution)
+  double minStep = 1e-6, maxStep = 0.05;
+  int maxSteps = 5000;
+  double tolerance = 1e-10;         ///< Newton: ||F||_2
+  int maxNewtonIterations = 15;
+};
+
+struct BranchPoint {
+  double parameter;
+  Eigen::VectorXd x;
+};
+
+struct Branch {
+  std::vector<BranchPoint> points;
+  bool finished = false;  ///< reached the end of the range
+  std::string stopReason;
+  int failedSteps = 0;
+};
+
+/// Traces from x0 (a solution, or a good guess, at p = options.from).
+Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& x0, const ContinuationOptions& options);
+
+}  // namespace cyclone::continuation

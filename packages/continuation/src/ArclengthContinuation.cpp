@@ -1,0 +1,110 @@
+// LOCA::LAPACK glue: the only translation unit with LOCA headers.
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+
+#include <LOCA.H>
+#include <LOCA_LAPACK.H>
+
+#include <cmath>
+
+namespace cyclone::continuation {
+
+namespace {
+
+class Interface : public LOCA::LAPACK::Interface {
+public:
+  Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch)
+      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch) {
+    for (int i = 0; i < x0.size(); ++i) guess_(i) = x0(i);
+  }
+  const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
+  bool computeF(NOX::LAPACK::Vector& f, const NOX::LAPACK::Vector& x) override {
+    try {
+      Eigen::VectorXd F(problem_.size);
+      problem_.residual(toEigen(x), p_, F);
+      if (!F.allFinite()) return false;
+      for (int i = 0; i < problem_.size; ++i) f(i) = F(i);
+      return true;
+    } catch (...) {
+      return false;  // a failed evaluation: LOCA cuts the step
+    }
+  }
+  bool computeJacobian(NOX::LAPACK::Matrix<double>& J, const NOX::LAPACK::Vector& x) override {
+    try {
+      Eigen::MatrixXd Je(problem_.size, problem_.size);
+      problem_.jacobian(toEigen(x), p_, Je);
+      if (!Je.allFinite()) return false;
+      for (int i = 0; i < problem_.size; ++i)
+        for (int j = 0; j < problem_.size; ++j) J(i, j) = Je(i, j);
+      return true;
+    } catch (...) {
+      return false;
+    }
+  }
+  void setParams(const LOCA::ParameterVector& p) override { p_ = p.getValue("p"); }
+  void printSolution(const NOX::LAPACK::Vector& x, const double conParam) override {
+    branch_.points.push_back({conParam, toEigen(x)});
+  }
+
+private:
+  Eigen::VectorXd toEigen(const NOX::LAPACK::Vector& x) const {
+    Eigen::VectorXd v(problem_.size);
+    for (int i = 0; i < problem_.size; ++i) v(i) = x(i);
+    return v;
+  }
+  const ContinuationProblem& problem_;
+  NOX::LAPACK::Vector guess_;
+  double p_;
+  Branch& branch_;
+};
+
+}  // namespace
+
+Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& x0, const ContinuationOptions& o) {
+  Branch branch;
+  auto params = Teuchos::rcp(new Teuchos::ParameterList);
+  auto& stepper = params->sublist("LOCA").sublist("Stepper");
+  stepper.set("Continuation Method", "Arc Length");
+  stepper.set("Continuation Parameter", "p");
+  stepper.set("Initial Value", o.from);
+  stepper.set("Max Value", std::max(o.from, o.to));
+  stepper.set("Min Value", std::min(o.from, o.to));
+  stepper.set("Max Steps", o.maxSteps);
+  stepper.set("Max Nonlinear Iterations", o.maxNewtonIterations);
+  stepper.set("Compute Eigenvalues", false);
+  params->sublist("LOCA").sublist("Predictor").set("Method", "Tangent");
+  auto& step = params->sublist("LOCA").sublist("Step Size");
+  step.set("Method", "Adaptive");
+  step.set("Initial Step Size", o.to >= o.from ? o.initialStep : -o.initialStep);
+  step.set("Min Step Size", o.minStep);
+  step.set("Max Step Size", o.maxStep);
+  params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  auto globalData = LOCA::createGlobalData(params);
+  {
+    LOCA::ParameterVector p;
+    p.addParameter("p", o.from);
+    Interface iface(problem, x0, o.from, branch);
+    auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
+    group->setParams(p);
+    auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::NormF(o.tolerance)));
+    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(o.maxNewtonIterations)));
+    LOCA::Stepper stepperObject(globalData, group, tests, params);
+    LOCA::Abstract::Iterator::IteratorStatus status = LOCA::Abstract::Iterator::Failed;
+    try {
+      status = stepperObject.run();
+    } catch (const std::exception& e) {
+      branch.stopReason = std::string("continuation stopped by an exception: ") + e.what();
+    } catch (...) {
+      branch.stopReason = "continuation stopped: Newton could not start (no converged initial point)";
+    }
+    branch.finished = status == LOCA::Abstract::Iterator::Finished;
+    branch.failedSteps = stepperObject.getNumFailedSteps();
+    if (branch.stopReason.empty())
+      branch.stopReason = branch.finished ? "end of the parameter range reached"
+                                          : "step size fell below the minimum or too many steps (the branch so far is kept)";
+  }
+  LOCA::destroyGlobalData(globalData);
+  return branch;
+}
+
+}  // namespace cyclone::continuation
