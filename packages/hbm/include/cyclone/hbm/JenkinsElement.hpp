@@ -1,0 +1,28 @@
+#pragma once
+// Jenkins element: a spring kt in series with a Coulomb slider of slip force
+// mu N. The standard macroslip model of a friction contact in the tangential
+// direction; it has memory (hysteresis), so the force at a sample depends on
+// the whole history, and the Jacobian df[n]/dw[m] is full.
+#include "cyclone/hbm/ScalarElement.hpp"
+
+namespace cyclone::hbm {
+
+class JenkinsElement : public ScalarElement {
+public:
+  /// kt > 0, slipForce > 0; InputError otherwise.
+  JenkinsElement(double kt, double slipForce);
+  double tangentialStiffness() const { return kt_; }
+  double slipForce() const { return slipForce_; }
+
+  /// Marches the slider from z = 0 over two periods of the samples (the first
+  /// one settles the hysteresis loop) and returns the second. The Jacobian
+  /// differentiates that marching exactly, so it matches finite differences
+  /// away from samples that sit exactly on a stick/slip transition.
+  void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
+                Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
+
+private:
+  double kt_, slipForce_;
+};
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,27 @@
+#pragma once
+// A nonlinear element between two scalar coordinates (e.g. a contact point's
+// relative displacement), evaluated in the time domain over one period. The
+// AFT scheme only needs forces and their sensitivities at the samples, so
+// every element, with or without memory, fits this one interface.
+#include <Eigen/Dense>
+
+namespace cyclone::hbm {
+
+class ScalarElement {
+public:
+  virtual ~ScalarElement() = default;
+
+  /// Whether the force depends on the velocity (callers may then skip
+  /// computing velocity samples: wdot is passed empty).
+  virtual bool usesVelocity() const { return false; }
+
+  /// Force samples f[n] over one period from relative displacement samples
+  /// w[n] and velocity samples wdot[n] = dw/dt (= omega dw/dtau), n = 0..N-1,
+  /// the samples being a periodic steady state. If given, dfdw and dfdwdot
+  /// are resized to N x N with entries df[n]/dw[m], df[n]/dwdot[m] (diagonal
+  /// for memoryless elements, full for hysteretic ones).
+  virtual void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
+                        Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const = 0;
+};
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,52 @@
+#include "cyclone/hbm/JenkinsElement.hpp"
+
+#include "cyclone/core/Error.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace cyclone::hbm {
+
+JenkinsElement::JenkinsElement(double kt, double slipForce) : kt_(kt), slipForce_(slipForce) {
+  if (!(std::isfinite(kt) && kt > 0))
+    throw InputError("JenkinsElement", "tangential stiffness must be positive, got " + std::to_string(kt));
+  if (!(std::isfinite(slipForce) && slipForce > 0))
+    throw InputError("JenkinsElement", "slip force must be positive, got " + std::to_string(slipForce));
+}
+
+void JenkinsElement::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& f,
+                              Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const {
+  const Eigen::Index n = w.size();
+  f.resize(n);
+  // z: slider position; dz[m] = dz/dw[m], carried along the march.
+  double z = 0.0;
+  Eigen::VectorXd dz;
+  if (dfdw) {
+    dz.setZero(n);
+    dfdw->setZero(n, n);
+  }
+  for (int loop = 0; loop < 2; ++loop) {
+    const bool record = loop == 1;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double trial = kt_ * (w[i] - z);
+      if (std::abs(trial) <= slipForce_) {  // stick: the slider stays, the spring takes the motion
+        if (record) f[i] = trial;
+        if (dfdw && record) {
+          dfdw->row(i) = -kt_ * dz.transpose();
+          (*dfdw)(i, i) += kt_;
+        }
+      } else {  // slip: force saturates, the slider follows w at a fixed spring stretch
+        const double s = trial > 0 ? 1.0 : -1.0;
+        if (record) f[i] = s * slipForce_;  // Jacobian row stays 0
+        z = w[i] - s * slipForce_ / kt_;
+        if (dfdw) {
+          dz.setZero();
+          dz[i] = 1.0;
+        }
+      }
+    }
+  }
+  if (dfdwdot) dfdwdot->setZero(n, n);
+}
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,112 @@
+// Aft against direct evaluation of the Fourier sum x0 + sum (c cos + s sin).
+#include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/Aft.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using cyclone::InputError;
+using cyclone::hbm::Aft;
+using cyclone::hbm::HarmonicSet;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::VectorXd randomCoefficients(int nc, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd x(nc);
+  for (int i = 0; i < nc; ++i) x[i] = u(rng);
+  return x;
+}
+
+// The Fourier sum written out term by term, independent of FFTW and of Aft.
+double fourierSum(const HarmonicSet& set, const Eigen::VectorXd& x, double tau) {
+  double sum = 0;
+  for (int h : set.harmonics()) {
+    if (h == 0)
+      sum += x[set.cosIndex(0)];
+    else
+      sum += x[set.cosIndex(h)] * std::cos(h * tau) + x[set.sinIndex(h)] * std::sin(h * tau);
+  }
+  return sum;
+}
+
+double fourierDerivative(const HarmonicSet& set, const Eigen::VectorXd& x, double tau) {
+  double sum = 0;
+  for (int h : set.harmonics())
+    if (h > 0) sum += -h * x[set.cosIndex(h)] * std::sin(h * tau) + h * x[set.sinIndex(h)] * std::cos(h * tau);
+  return sum;
+}
+
+struct Case {
+  HarmonicSet set;
+  int samples;
+};
+
+std::vector<Case> cases() {
+  return {{HarmonicSet::upTo(5), 11}, {HarmonicSet::upTo(5), 16}, {HarmonicSet::odd(7), 32},
+          {HarmonicSet({3, 0, 1}), 7}, {HarmonicSet({2, 7}), 64}, {HarmonicSet::upTo(20), 41}};
+}
+
+}  // namespace
+
+TEST(Aft, RoundTripOfBandLimitedCoefficients) {
+  unsigned seed = 1;
+  for (const Case& c : cases()) {
+    const Aft aft(c.set, c.samples);
+    const Eigen::VectorXd x = randomCoefficients(aft.numCoefficients(), seed++);
+    Eigen::VectorXd samples(c.samples), back(aft.numCoefficients());
+    aft.toTime(x.data(), samples.data());
+    aft.toFrequency(samples.data(), back.data());
+    EXPECT_LT((back - x).cwiseAbs().maxCoeff(), 1e-13) << "N = " << c.samples;
+    // And again: the plans are reused, and c2r must not have eaten our input.
+    EXPECT_LT((aft.toFrequency(aft.toTime(x)) - x).cwiseAbs().maxCoeff(), 1e-13);
+  }
+}
+
+TEST(Aft, ToTimeMatchesDirectFourierSum) {
+  unsigned seed = 10;
+  for (const Case& c : cases()) {
+    const Aft aft(c.set, c.samples);
+    const Eigen::VectorXd x = randomCoefficients(aft.numCoefficients(), seed++);
+    const Eigen::VectorXd samples = aft.toTime(x);
+    for (int n = 0; n < c.samples; ++n)
+      EXPECT_NEAR(samples[n], fourierSum(c.set, x, 2 * kPi * n / c.samples), 1e-13);
+    // The dense matrix is the same map.
+    EXPECT_LT((aft.timeFromCoefficients() * x - samples).cwiseAbs().maxCoeff(), 1e-13);
+  }
+}
+
+TEST(Aft, CoefficientsFromTimeIsTheProjection) {
+  unsigned seed = 20;
+  for (const Case& c : cases()) {
+    const Aft aft(c.set, c.samples);
+    const int nc = aft.numCoefficients();
+    const Eigen::MatrixXd pe = aft.coefficientsFromTime() * aft.timeFromCoefficients();
+    EXPECT_LT((pe - Eigen::MatrixXd::Identity(nc, nc)).cwiseAbs().maxCoeff(), 1e-13);
+    // Any samples (not band-limited): the FFT path and the dense matrix agree.
+    const Eigen::VectorXd samples = randomCoefficients(c.samples, seed++);
+    EXPECT_LT((aft.toFrequency(samples) - aft.coefficientsFromTime() * samples).cwiseAbs().maxCoeff(), 1e-13);
+  }
+}
+
+TEST(Aft, DerivativeMatrixMatchesAnalyticDerivative) {
+  unsigned seed = 30;
+  for (const Case& c : cases()) {
+    const Aft aft(c.set, c.samples);
+    const Eigen::VectorXd x = randomCoefficients(aft.numCoefficients(), seed++);
+    const Eigen::VectorXd samples = aft.toTime(Eigen::VectorXd(aft.derivativeMatrix() * x));
+    for (int n = 0; n < c.samples; ++n)
+      EXPECT_NEAR(samples[n], fourierDerivative(c.set, x, 2 * kPi * n / c.samples), 1e-12);
+  }
+}
+
+TEST(Aft, RejectsTooFewSamples) {
+  EXPECT_THROW(Aft(HarmonicSet::upTo(3), 6), InputError);
+  EXPECT_NO_THROW(Aft(HarmonicSet::upTo(3), 7));
+}
