@@ -13,7 +13,16 @@
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/CubicSpring.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/JenkinsElement.hpp"
+#include "cyclone/hbm/QuadraticDamper.hpp"
+#include "cyclone/hbm/UnilateralSpring.hpp"
 #include "cyclone/post/CampbellDiagram.hpp"
+#include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/post/Mac.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -265,6 +274,163 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   }
 }
 
+Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, bool required) {
+  if (!s.has(key)) {
+    if (required) throw InputError(s.where(key), "is required (" + std::to_string(n * n) + " numbers, row by row)");
+    return Eigen::MatrixXd::Zero(n, n);
+  }
+  const auto v = s.getDoubleList(key, {});
+  if (int(v.size()) != n * n)
+    throw InputError(s.where(key), "needs " + std::to_string(n * n) + " numbers (row by row for " +
+                                       std::to_string(n) + " DOFs), got " + std::to_string(v.size()));
+  Eigen::MatrixXd A(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) A(i, j) = v[i * n + j];
+  return A;
+}
+
+// Forced response of a matrix-defined system with nonlinear elements: harmonic
+// balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
+void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
+                         SceneSummary& summary) {
+  auto sys = scene.section("system");
+  const int n = sys.getInt("dofs", 0);
+  if (n < 1) throw InputError(sys.where("dofs"), "is required: the number of DOFs (>= 1)");
+  const Eigen::MatrixXd M = squareMatrix(sys, "M", n, true), K = squareMatrix(sys, "K", n, true);
+  Eigen::MatrixXd C = squareMatrix(sys, "C", n, false);
+  sys.rejectUnknownKeys();
+  if ((M - M.transpose()).norm() > 1e-12 * M.norm() || (K - K.transpose()).norm() > 1e-12 * K.norm())
+    throw InputError(sys.location(), "M and K must be symmetric");
+
+  std::vector<int> harmonicList;
+  if (scene.has("harmonics")) {
+    harmonicList = scene.getIntList("harmonics", {});
+    if (harmonicList.size() == 1) {  // a single number H means 0..H
+      const int H = harmonicList[0];
+      harmonicList.clear();
+      for (int h = 0; h <= H; ++h) harmonicList.push_back(h);
+    }
+  } else {
+    harmonicList = {0, 1, 2, 3, 4, 5, 6, 7};
+  }
+  const hbm::HarmonicSet harmonics(harmonicList);
+  const int samples = scene.getInt("samples", std::max(64, 4 * harmonics.maxHarmonic() + 1));
+  hbm::HarmonicBalanceSystem hb(M, C, K, harmonics, samples);
+
+  auto direction = [&](SceneSection& e) {
+    const auto v = e.getDoubleList("direction", {});
+    if (int(v.size()) != n)
+      throw InputError(e.where("direction"), "needs " + std::to_string(n) + " numbers (w = direction . x)");
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), n).eval();
+  };
+  auto elements = scene.section("nonlinear_elements");
+  for (const auto& name : elements.sectionNames()) {
+    auto e = elements.section(name);
+    const std::string type = e.getString("type", "");
+    const Eigen::VectorXd d = direction(e);
+    std::shared_ptr<const hbm::ScalarElement> element;
+    if (type == "cubic") element = std::make_shared<hbm::CubicSpring>(e.requireDouble("k3"));
+    else if (type == "unilateral") element = std::make_shared<hbm::UnilateralSpring>(e.requireDouble("k"), e.getDouble("gap", 0.0));
+    else if (type == "quadratic_damper") element = std::make_shared<hbm::QuadraticDamper>(e.requireDouble("c2"));
+    else if (type == "jenkins") element = std::make_shared<hbm::JenkinsElement>(e.requireDouble("kt"), e.requireDouble("slip_force"));
+    else throw InputError(e.where("type"), "unknown element type '" + type + "' (cubic, unilateral, quadratic_damper, jenkins)");
+    e.rejectUnknownKeys();
+    hb.addElement(element, d);
+  }
+  elements.rejectUnknownKeys();
+  auto ex = scene.section("excitation");
+  const auto excitations = ex.sectionNames();
+  if (excitations.empty()) throw InputError(ex.location(), "needs at least one named force, e.g. f: {dof: 0, cos: 1.0}");
+  for (const auto& name : excitations) {
+    auto f = ex.section(name);
+    hb.addExcitation(f.getInt("dof", 0), f.getInt("harmonic", 1), f.getDouble("cos", 0.0), f.getDouble("sin", 0.0));
+    f.rejectUnknownKeys();
+  }
+  ex.rejectUnknownKeys();
+
+  auto cs = scene.section("continuation");
+  continuation::ContinuationOptions opt;
+  const std::string parameter = cs.getString("parameter", "omega");
+  if (parameter != "omega")
+    throw InputError(cs.where("parameter"), "only 'omega' (the excitation frequency, rad/s) is supported so far");
+  opt.from = cs.requireDouble("from");
+  opt.to = cs.requireDouble("to");
+  opt.initialStep = cs.getDouble("initial_step", 0.01);
+  opt.minStep = cs.getDouble("min_step", 1e-6);
+  opt.maxStep = cs.getDouble("max_step", 0.05);
+  opt.maxSteps = cs.getInt("max_points", 5000);
+  cs.rejectUnknownKeys();
+  if (!(opt.from > 0) || !(opt.to > 0)) throw InputError(cs.location(), "the frequency range must be positive");
+  auto out = scene.section("output");
+  std::vector<int> dofs = out.getIntList("dofs", {0});
+  out.rejectUnknownKeys();
+  for (int d : dofs)
+    if (d < 0 || d >= n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");
+
+  Timer timer;
+  continuation::ContinuationProblem problem;
+  problem.size = hb.numUnknowns();
+  problem.residual = [&](const Eigen::VectorXd& X, double w, Eigen::VectorXd& R) { hb.residual(X, w, R, nullptr); };
+  problem.jacobian = [&](const Eigen::VectorXd& X, double w, Eigen::MatrixXd& J) {
+    Eigen::VectorXd R;
+    hb.residual(X, w, R, &J);
+  };
+  {
+    std::ostringstream msg;
+    msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
+        << " samples, omega " << opt.from << " -> " << opt.to;
+    log::info(msg.str());
+  }
+  const auto branch = continuation::traceBranch(problem, hb.linearSolution(opt.from), opt);
+
+  // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
+  const std::string csvPath = outDir + "/frc.csv";
+  std::vector<double> plotW, plotMax;
+  if (comm->getRank() == 0) {
+    AtomicFile file(csvPath);
+    std::ofstream csv(file.tempPath());
+    csv.precision(12);
+    csv << "point,omega_rad_s,freq_hz";
+    for (int d : dofs) {
+      csv << ",dof" << d << "_h0";
+      for (int h : harmonics.harmonics())
+        if (h > 0) csv << ",dof" << d << "_amp_h" << h;
+      csv << ",dof" << d << "_max";
+    }
+    csv << "\n";
+    const int nc = hb.numCoefficients();
+    for (std::size_t i = 0; i < branch.points.size(); ++i) {
+      const auto& pt = branch.points[i];
+      csv << i << "," << pt.parameter << "," << pt.parameter / (2 * M_PI);
+      for (int d : dofs) {
+        csv << "," << (harmonics.contains(0) ? pt.x(d * nc + harmonics.cosIndex(0)) : 0.0);
+        for (int h : harmonics.harmonics())
+          if (h > 0) csv << "," << hb.amplitude(pt.x, d, h);
+        const Eigen::VectorXd t = hb.aft().toTime(Eigen::VectorXd(pt.x.segment(d * nc, nc)));
+        const double peak = t.cwiseAbs().maxCoeff();
+        csv << "," << peak;
+        if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);
+      }
+      csv << "\n";
+    }
+    csv.close();
+    if (!csv) throw Error("cannot write " + csvPath);
+    file.commit();
+    post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)", "omega (rad/s)",
+                       "max |x(t)| of DOF " + std::to_string(dofs.front()));
+    plot.addLine(plotW, plotMax, post::SvgPlot::palette(0), "H = " + std::to_string(harmonics.maxHarmonic()));
+    plot.write(outDir + "/frc.svg");
+  }
+  summary.written.push_back(csvPath);
+  summary.written.push_back(outDir + "/frc.svg");
+  std::ostringstream line;
+  line << "forced response: " << branch.points.size() << " points in " << timer.seconds() << " s, "
+       << branch.stopReason;
+  summary.computed.push_back(line.str());
+  if (!branch.finished)
+    log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");
+}
+
 void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
                  SceneSummary& summary) {
   analysis::StaticProblem problem;
@@ -348,18 +514,25 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   SceneSummary summary;
   const auto analyses = scene.getStringList("analysis", {"static"});
   for (const auto& a : analyses)
-    if (a != "static" && a != "mesh" && a != "modal")
-      throw InputError(scene.where("analysis"), "unknown analysis '" + a + "' (use static, modal or mesh, or a list)");
+    if (a != "static" && a != "mesh" && a != "modal" && a != "forced_response")
+      throw InputError(scene.where("analysis"),
+                       "unknown analysis '" + a + "' (use static, modal, mesh or forced_response, or a list)");
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   // Top-level keys are checked before anything runs, so a typo costs no computation.
   scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
-                             "cyclic", "modal", "diagrams"});
+                             "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
+                             "samples", "continuation", "output"});
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");
   if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
   comm->barrier();
 
+  if (wants("forced_response")) {
+    // Matrix-defined systems need no mesh.
+    forcedResponseStage(scene, outDir, comm, summary);
+    return summary;
+  }
   int builtInSectors = 0;
   auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
   if (wants("static")) staticStage(scene, mesh, outDir, comm, summary);

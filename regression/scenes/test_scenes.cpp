@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <sstream>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -191,4 +192,47 @@ TEST(Scenes, ModalWithoutConstraintsReportsRigidBodyModes) {
   std::string all;
   for (const auto& line : summary.computed) all += line + "\n";
   EXPECT_NE(all.find("rigid-body modes ND 0: 2, ND 1: 4"), std::string::npos) << all;
+}
+
+TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
+  log::setQuiet(true);
+  const auto dir = freshDir("duffing");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  scenes::runSceneFile(CYCLONE_SCENE_DIR "/duffing.yaml", o, Tpetra::getDefaultComm());
+  std::ifstream csv(dir / "frc.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("point,omega_rad_s,freq_hz,dof0_h0,dof0_amp_h1,", 0), 0u) << line;
+  double best = 0, bestW = 0;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 12u);
+    if (v[4] > best) best = v[4], bestW = v[1];
+    ++rows;
+  }
+  EXPECT_GT(rows, 100);
+  EXPECT_NEAR(best, 2.8302, 2e-4);  // reference H = 7 peak (the sampled branch)
+  EXPECT_NEAR(bestW, 1.2688, 2e-3);
+  EXPECT_TRUE(fs::exists(dir / "frc.svg"));
+}
+
+TEST(Scenes, ForcedResponseBadInputIsNamed) {
+  const auto dir = freshDir("frcbad");
+  const std::string base = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 2\n";
+  auto msg = failure(base + "    M: [1.0, 0.0, 0.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n", dir);
+  EXPECT_NE(msg.find("cyclone/system/M"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("needs 4 numbers"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
+                       "  nonlinear_elements:\n    e:\n      type: magic\n      direction: [1.0, 0.0]\n",
+                dir);
+  EXPECT_NE(msg.find("unknown element type 'magic'"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
+                       "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n  continuation:\n    from: 0.5\n",
+                dir);
+  EXPECT_NE(msg.find("continuation/to"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "frc.csv"));
 }
