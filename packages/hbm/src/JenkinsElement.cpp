@@ -50,3 +50,21 @@ void JenkinsElement::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, 
 }
 
 }  // namespace cyclone::hbm
+
+namespace cyclone::hbm {
+
+double JenkinsElement::incremental(double w, double, double& z, double& dfdw, double& dfdwdot) const {
+  // The same return mapping as the periodic marching: stick keeps z, slip drags it.
+  dfdwdot = 0;
+  const double trial = kt_ * (w - z);
+  if (std::abs(trial) <= slipForce_) {
+    dfdw = kt_;
+    return trial;
+  }
+  const double sign = trial > 0 ? 1.0 : -1.0;
+  z = w - sign * slipForce_ / kt_;
+  dfdw = 0;
+  return sign * slipForce_;
+}
+
+}  // namespace cyclone::hbm

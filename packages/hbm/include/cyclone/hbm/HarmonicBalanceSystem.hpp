@@ -31,6 +31,17 @@ public:
   void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian) const;
   /// The solution without the nonlinear elements: a start for continuation.
   Eigen::VectorXd linearSolution(double omega) const;
+  const Eigen::MatrixXd& M() const { return M_; }
+  const Eigen::MatrixXd& C() const { return C_; }
+  const Eigen::MatrixXd& K() const { return K_; }
+  struct Connection {
+    std::shared_ptr<const ScalarElement> element;
+    Eigen::VectorXd direction;
+  };
+  const std::vector<Connection>& elements() const { return elements_; }
+  /// The excitation in coefficient form (same layout as X).
+  const Eigen::VectorXd& excitation() const { return excitation_; }
+
   /// Amplitude sqrt(c_h^2 + s_h^2) of harmonic h >= 1 of a DOF.
   double amplitude(const Eigen::VectorXd& X, int dof, int harmonic) const;
 
@@ -38,10 +49,6 @@ private:
   Eigen::MatrixXd linearOperator(double omega) const;
   Eigen::MatrixXd M_, C_, K_;
   std::unique_ptr<Aft> aft_;
-  struct Connection {
-    std::shared_ptr<const ScalarElement> element;
-    Eigen::VectorXd direction;
-  };
   std::vector<Connection> elements_;
   Eigen::VectorXd excitation_;
 };

@@ -20,6 +20,8 @@ public:
   /// away from samples that sit exactly on a stick/slip transition.
   void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
+  /// One time step of the same law: state = slider position z (0 initially).
+  double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const override;
 
 private:
   double kt_, slipForce_;

@@ -22,6 +22,12 @@ public:
   /// for memoryless elements, full for hysteretic ones).
   virtual void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                         Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const = 0;
+
+  /// The same law, one time step at a time (for the time-integration check):
+  /// force at (w, wdot) given the element's internal state from the last
+  /// converged step; `state` is updated in place for the trial (the caller keeps
+  /// the committed copy). Memoryless elements use evaluate() on one sample.
+  virtual double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const;
 };
 
 }  // namespace cyclone::hbm
