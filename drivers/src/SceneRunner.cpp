@@ -18,6 +18,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
@@ -386,6 +387,11 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";
   std::vector<double> plotW, plotMax;
+  std::vector<int> plotStable;
+  bool hill = true;
+  for (const auto& c : hb.elements()) hill = hill && !c.element->usesVelocity();
+  if (!hill) log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
+  int unstablePoints = 0;
   if (comm->getRank() == 0) {
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
@@ -397,7 +403,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         if (h > 0) csv << ",dof" << d << "_amp_h" << h;
       csv << ",dof" << d << "_max";
     }
-    csv << "\n";
+    csv << ",stable,max_floquet_real\n";
     const int nc = hb.numCoefficients();
     for (std::size_t i = 0; i < branch.points.size(); ++i) {
       const auto& pt = branch.points[i];
@@ -411,6 +417,15 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         csv << "," << peak;
         if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);
       }
+      if (hill) {
+        const auto fl = hbm::hillStability(hb, pt.x, pt.parameter);
+        csv << "," << (fl.stable ? 1 : 0) << "," << fl.maxRealPart;
+        plotStable.push_back(fl.stable ? 1 : 0);
+        unstablePoints += fl.stable ? 0 : 1;
+      } else {
+        csv << ",,";
+        plotStable.push_back(1);
+      }
       csv << "\n";
     }
     csv.close();
@@ -418,14 +433,29 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     file.commit();
     post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)", "omega (rad/s)",
                        "max |x(t)| of DOF " + std::to_string(dofs.front()));
-    plot.addLine(plotW, plotMax, post::SvgPlot::palette(0), "H = " + std::to_string(harmonics.maxHarmonic()));
+    // Stable stretches solid, unstable ones dashed (each stretch shares its end points).
+    bool labelled[2] = {false, false};
+    for (std::size_t i = 0; i + 1 < plotW.size();) {
+      std::size_t j = i + 1;
+      while (j + 1 < plotW.size() && plotStable[j] == plotStable[i]) ++j;
+      const bool stablePart = plotStable[i] == 1;
+      std::string label;
+      if (!labelled[stablePart]) {
+        label = std::string(stablePart ? "stable" : "unstable") + ", H = " + std::to_string(harmonics.maxHarmonic());
+        labelled[stablePart] = true;
+      }
+      plot.addLine(std::vector<double>(plotW.begin() + i, plotW.begin() + j + 1),
+                   std::vector<double>(plotMax.begin() + i, plotMax.begin() + j + 1), post::SvgPlot::palette(0), label,
+                   !stablePart);
+      i = j;
+    }
     plot.write(outDir + "/frc.svg");
   }
   summary.written.push_back(csvPath);
   summary.written.push_back(outDir + "/frc.svg");
   std::ostringstream line;
-  line << "forced response: " << branch.points.size() << " points in " << timer.seconds() << " s, "
-       << branch.stopReason;
+  line << "forced response: " << branch.points.size() << " points (" << unstablePoints
+       << " unstable by Hill's method) in " << timer.seconds() << " s, " << branch.stopReason;
   summary.computed.push_back(line.str());
   if (!branch.finished)
     log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");

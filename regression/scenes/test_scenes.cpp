@@ -206,14 +206,23 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   EXPECT_EQ(line.rfind("point,omega_rad_s,freq_hz,dof0_h0,dof0_amp_h1,", 0), 0u) << line;
   double best = 0, bestW = 0;
   int rows = 0;
+  std::vector<int> stability;
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 12u);
+    ASSERT_EQ(v.size(), 14u);
     if (v[4] > best) best = v[4], bestW = v[1];
+    stability.push_back(int(v[12]));
     ++rows;
   }
+  // Hill's method: stable, then one unstable stretch (the middle branch between the
+  // two folds), then stable again.
+  int changes = 0;
+  for (std::size_t i = 1; i < stability.size(); ++i) changes += stability[i] != stability[i - 1];
+  EXPECT_EQ(changes, 2);
+  EXPECT_EQ(stability.front(), 1);
+  EXPECT_EQ(stability.back(), 1);
   EXPECT_GT(rows, 100);
   EXPECT_NEAR(best, 2.8302, 2e-4);  // reference H = 7 peak (the sampled branch)
   EXPECT_NEAR(bestW, 1.2688, 2e-3);

@@ -1,0 +1,49 @@
+#include "cyclone/hbm/HillStability.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <numeric>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::hbm {
+
+FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+  for (const auto& c : sys.elements())
+    if (c.element->usesVelocity())
+      throw InputError("stability", "Hill's method with velocity-dependent elements is not supported yet");
+  const int n = sys.numDofs(), nc = sys.numCoefficients(), m = n * nc;
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  sys.residual(X, omega, R, &J);
+  const Eigen::MatrixXd wD = omega * sys.aft().derivativeMatrix();
+  Eigen::MatrixXd D2 = Eigen::MatrixXd::Zero(m, m), D1 = Eigen::MatrixXd::Zero(m, m);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      D2.block(a * nc, b * nc, nc, nc) = sys.M()(a, b) * Eigen::MatrixXd::Identity(nc, nc);
+      D1.block(a * nc, b * nc, nc, nc) = 2 * sys.M()(a, b) * wD + sys.C()(a, b) * Eigen::MatrixXd::Identity(nc, nc);
+    }
+  // Companion form: [0 I; -D2^-1 J, -D2^-1 D1].
+  const auto lu = D2.partialPivLu();
+  if (std::abs(lu.determinant()) == 0) throw InputError("stability", "Hill's method needs an invertible mass matrix");
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * m, 2 * m);
+  A.block(0, m, m, m).setIdentity();
+  A.block(m, 0, m, m) = -lu.solve(J);
+  A.block(m, m, m, m) = -lu.solve(D1);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+  const Eigen::VectorXcd all = es.eigenvalues();
+  std::vector<int> order(all.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(all(i).imag()) < std::abs(all(j).imag()); });
+  FloquetExponents out;
+  out.exponents.resize(2 * n);
+  for (int i = 0; i < 2 * n; ++i) out.exponents(i) = all(order[i]);
+  std::sort(out.exponents.data(), out.exponents.data() + 2 * n,
+            [](const std::complex<double>& a, const std::complex<double>& b) { return a.real() > b.real(); });
+  out.maxRealPart = out.exponents(0).real();
+  // Neutral directions (e.g. a phase shift of an autonomous part) sit at Re = 0 to round-off.
+  out.stable = out.maxRealPart < 1e-8 * std::max(1.0, omega);
+  return out;
+}
+
+}  // namespace cyclone::hbm

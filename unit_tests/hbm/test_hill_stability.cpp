@@ -1,0 +1,89 @@
+// Hill's method: exact Floquet exponents of a linear system, and the Duffing
+// curve's unstable middle branch between its two folds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "cyclone/hbm/CubicSpring.hpp"
+#include "cyclone/hbm/HillStability.hpp"
+
+using namespace cyclone;
+
+TEST(HillStability, LinearOscillatorHasItsDampedEigenvaluesAsExponents) {
+  // m x'' + c x' + k x = f: exponents -c/2m +- i sqrt(k/m - (c/2m)^2), whatever the forcing.
+  Eigen::MatrixXd M(1, 1), C(1, 1), K(1, 1);
+  M << 2.0;
+  C << 0.3;
+  K << 5.0;
+  hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(5), 32);
+  sys.addExcitation(0, 1, 1.0);
+  const double omega = 1.3;
+  const auto fl = hbm::hillStability(sys, sys.linearSolution(omega), omega);
+  ASSERT_EQ(fl.exponents.size(), 2);
+  const double sigma = -0.3 / 4.0, wd = std::sqrt(5.0 / 2.0 - sigma * sigma);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(fl.exponents(i).real(), sigma, 1e-10);
+    // Defined modulo i omega: the imaginary part is wd shifted into (-omega/2, omega/2].
+    const double shifted = std::remainder(std::abs(fl.exponents(i).imag()) - wd, omega);
+    EXPECT_NEAR(shifted, 0.0, 1e-10);
+  }
+  EXPECT_TRUE(fl.stable);
+}
+
+TEST(HillStability, DuffingMiddleBranchIsUnstable) {
+  // At W = 1.2 the Duffing curve (m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18) has three
+  // solutions; the middle one (between the folds) is unstable, the outer two stable.
+  Eigen::MatrixXd M(1, 1), C(1, 1), K(1, 1);
+  M << 1.0;
+  C << 0.05;
+  K << 1.0;
+  hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(7), 64);
+  sys.addElement(std::make_shared<hbm::CubicSpring>(0.1), Eigen::VectorXd::Ones(1));
+  sys.addExcitation(0, 1, 0.18);
+  const double W = 1.2;
+  // Starts: the three single-term solutions, roots of [(s)^2 + (cW)^2] A^2 = P^2 with
+  // s = k - m W^2 + 3/4 g A^2 (bisection in brackets found by sign changes), each with
+  // its phase a = P s / (s^2 + c^2 W^2), b = P c W / (s^2 + c^2 W^2).
+  auto f = [&](double A) {
+    const double s = 1 - W * W + 0.075 * A * A;
+    return (s * s + 0.0025 * W * W) * A * A - 0.18 * 0.18;
+  };
+  std::vector<double> roots;
+  for (double A = 0.01; A < 4.0; A += 0.01)
+    if ((f(A) > 0) != (f(A + 0.01) > 0)) {
+      double lo = A, hi = A + 0.01;
+      for (int i = 0; i < 60; ++i) ((f(lo) > 0) == (f(0.5 * (lo + hi)) > 0) ? lo : hi) = 0.5 * (lo + hi);
+      roots.push_back(0.5 * (lo + hi));
+    }
+  ASSERT_EQ(roots.size(), 3u);
+  int stable = 0, unstable = 0;
+  std::vector<double> amplitudes;
+  for (double A0 : roots) {
+    const double s = 1 - W * W + 0.075 * A0 * A0, den = s * s + 0.0025 * W * W;
+    Eigen::VectorXd X = Eigen::VectorXd::Zero(sys.numUnknowns()), R;
+    X(sys.aft().harmonics().cosIndex(1)) = 0.18 * s / den;
+    X(sys.aft().harmonics().sinIndex(1)) = 0.18 * 0.05 * W / den;
+    Eigen::MatrixXd J;
+    for (int it = 0; it < 50; ++it) {
+      sys.residual(X, W, R, &J);
+      if (R.norm() < 1e-12) break;
+      X -= J.partialPivLu().solve(R);
+    }
+    ASSERT_LT(R.norm(), 1e-10);
+    amplitudes.push_back(sys.amplitude(X, 0, 1));
+    const auto fl = hbm::hillStability(sys, X, W);
+    std::printf("W = %.1f, |x1| = %.5f: exponents %+.4e%+.4ei, %+.4e%+.4ei -> %s\n", W, amplitudes.back(),
+                fl.exponents(0).real(), fl.exponents(0).imag(), fl.exponents(1).real(), fl.exponents(1).imag(),
+                fl.stable ? "stable" : "unstable");
+    (fl.stable ? stable : unstable)++;
+    if (A0 == roots[1]) {
+      EXPECT_FALSE(fl.stable) << "middle branch, |x1| " << amplitudes.back();
+    }
+  }
+  EXPECT_LT(amplitudes[0], amplitudes[1]);
+  EXPECT_LT(amplitudes[1], amplitudes[2]);
+  EXPECT_EQ(stable, 2);
+  EXPECT_EQ(unstable, 1);
+}
