@@ -31,6 +31,7 @@
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/mesh/MeshReader.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
@@ -292,8 +293,9 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 
 // Forced response of a matrix-defined system with nonlinear elements: harmonic
 // balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
-void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
-                         SceneSummary& summary) {
+}  // namespace
+
+ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   auto sys = scene.section("system");
   const int n = sys.getInt("dofs", 0);
   if (n < 1) throw InputError(sys.where("dofs"), "is required: the number of DOFs (>= 1)");
@@ -316,7 +318,9 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   }
   const hbm::HarmonicSet harmonics(harmonicList);
   const int samples = scene.getInt("samples", std::max(64, 4 * harmonics.maxHarmonic() + 1));
-  hbm::HarmonicBalanceSystem hb(M, C, K, harmonics, samples);
+  ForcedResponseSetup setup;
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
+  auto& hb = *setup.system;
 
   auto direction = [&](SceneSection& e) {
     const auto v = e.getDoubleList("direction", {});
@@ -350,7 +354,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   ex.rejectUnknownKeys();
 
   auto cs = scene.section("continuation");
-  continuation::ContinuationOptions opt;
+  auto& opt = setup.continuation;
   const std::string parameter = cs.getString("parameter", "omega");
   if (parameter != "omega")
     throw InputError(cs.where("parameter"), "only 'omega' (the excitation frequency, rad/s) is supported so far");
@@ -363,11 +367,42 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   cs.rejectUnknownKeys();
   if (!(opt.from > 0) || !(opt.to > 0)) throw InputError(cs.location(), "the frequency range must be positive");
   auto out = scene.section("output");
-  std::vector<int> dofs = out.getIntList("dofs", {0});
+  setup.outputDofs = out.getIntList("dofs", {0});
+  const auto& dofs = setup.outputDofs;
   out.rejectUnknownKeys();
   for (int d : dofs)
     if (d < 0 || d >= n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");
 
+  return setup;
+}
+
+ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "cannot open the scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  Teuchos::RCP<Teuchos::ParameterList> root;
+  try {
+    root = Teuchos::getParametersFromYamlString(text.str());
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("not a valid YAML scene: ") + e.what());
+  }
+  const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
+  SceneSection scene(top, path, "cyclone");
+  return readForcedResponseSetup(scene);
+}
+
+namespace {
+
+void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
+                         SceneSummary& summary) {
+  auto setup = readForcedResponseSetup(scene);
+  auto& hb = *setup.system;
+  const auto& opt = setup.continuation;
+  const auto& dofs = setup.outputDofs;
+  const auto& harmonics = hb.aft().harmonics();
+  const int samples = hb.aft().numSamples();
+  const int n = hb.numDofs();
   Timer timer;
   continuation::ContinuationProblem problem;
   problem.size = hb.numUnknowns();

@@ -1,0 +1,27 @@
+#pragma once
+// The forced-response part of a scene (system, nonlinear elements, excitation,
+// harmonics, samples, continuation, output) read into the objects that trace
+// it, so tests and codes can rebuild exactly the system a scene describes.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+
+namespace cyclone::scenes {
+
+class SceneSection;
+
+struct ForcedResponseSetup {
+  std::unique_ptr<hbm::HarmonicBalanceSystem> system;
+  continuation::ContinuationOptions continuation;
+  std::vector<int> outputDofs;
+};
+
+/// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
+ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
+/// The same from a scene file.
+ForcedResponseSetup loadForcedResponseScene(const std::string& path);
+
+}  // namespace cyclone::scenes
