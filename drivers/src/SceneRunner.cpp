@@ -23,6 +23,7 @@
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
 #include "cyclone/post/CampbellDiagram.hpp"
+#include "cyclone/post/ResponseCurveFile.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/post/Mac.hpp"
 #include "cyclone/core/Error.hpp"
@@ -485,7 +486,20 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
       i = j;
     }
     plot.write(outDir + "/frc.svg");
+    // The full coefficient vectors, for post-processing and restarts.
+    post::ResponseCurve curve;
+    curve.numDofs = n;
+    curve.numCoefficients = hb.numCoefficients();
+    curve.samples = samples;
+    curve.harmonics = harmonics.harmonics();
+    for (std::size_t i = 0; i < branch.points.size(); ++i) {
+      curve.omega.push_back(branch.points[i].parameter);
+      curve.coefficients.push_back(branch.points[i].x);
+      curve.stable.push_back(hill ? plotStable[i] : -1);
+    }
+    post::writeResponseCurveHdf5(outDir + "/frc.h5", curve);
   }
+  summary.written.push_back(outDir + "/frc.h5");
   summary.written.push_back(csvPath);
   summary.written.push_back(outDir + "/frc.svg");
   std::ostringstream line;

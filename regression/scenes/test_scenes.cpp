@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -14,6 +16,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
+#include "cyclone/post/ResponseCurveFile.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
 using namespace cyclone;
@@ -227,6 +230,21 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   EXPECT_NEAR(best, 2.8302, 2e-4);  // reference H = 7 peak (the sampled branch)
   EXPECT_NEAR(bestW, 1.2688, 2e-3);
   EXPECT_TRUE(fs::exists(dir / "frc.svg"));
+  // The HDF5 curve: read back, the same points and coefficients as the CSV's amplitudes;
+  // and a real HDF5 client (h5dump) reads it.
+  const auto curve = post::readResponseCurveHdf5((dir / "frc.h5").string());
+  ASSERT_EQ(int(curve.omega.size()), rows);
+  EXPECT_EQ(curve.numDofs, 1);
+  EXPECT_EQ(curve.harmonics, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+  double h5best = 0;
+  for (const auto& X : curve.coefficients) h5best = std::max(h5best, std::hypot(X(1), X(2)));
+  EXPECT_NEAR(h5best, best, 1e-9 * best);
+  const std::string dump = "h5dump -H '" + (dir / "frc.h5").string() + "' > '" + (dir / "h5dump.txt").string() + "' 2>&1";
+  ASSERT_EQ(std::system(dump.c_str()), 0) << "h5dump could not read frc.h5";
+  std::ifstream header(dir / "h5dump.txt");
+  const std::string text((std::istreambuf_iterator<char>(header)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("DATASET \"coefficients\""), std::string::npos) << text;
+  EXPECT_NE(text.find("DATASET \"omega\""), std::string::npos) << text;
 }
 
 TEST(Scenes, ForcedResponseBadInputIsNamed) {

@@ -1,0 +1,91 @@
+#include "cyclone/post/ResponseCurveFile.hpp"
+
+#include <H5Cpp.h>
+
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::post {
+
+namespace {
+
+template <class T>
+void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, const H5::PredType& type) {
+  const hsize_t dims[1] = {v.size()};
+  H5::DataSpace space(1, dims);
+  file.createDataSet(name, type, space).write(v.data(), type);
+}
+
+template <class T>
+std::vector<T> readVector(H5::H5File& file, const char* name, const H5::PredType& type) {
+  auto set = file.openDataSet(name);
+  hsize_t dims[1];
+  set.getSpace().getSimpleExtentDims(dims);
+  std::vector<T> v(dims[0]);
+  if (!v.empty()) set.read(v.data(), type);
+  return v;
+}
+
+void writeIntAttribute(H5::H5File& file, const char* name, int value) {
+  file.createAttribute(name, H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
+      .write(H5::PredType::NATIVE_INT, &value);
+}
+
+int readIntAttribute(H5::H5File& file, const char* name) {
+  int value = 0;
+  file.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
+  return value;
+}
+
+}  // namespace
+
+void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
+  const std::size_t P = c.omega.size(), m = std::size_t(c.numDofs) * c.numCoefficients;
+  if (c.coefficients.size() != P || c.stable.size() != P) throw Error("response curve: inconsistent point counts");
+  AtomicFile file(path);
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    writeVector(h5, "omega", c.omega, H5::PredType::NATIVE_DOUBLE);
+    writeVector(h5, "harmonics", c.harmonics, H5::PredType::NATIVE_INT);
+    writeVector(h5, "stable", c.stable, H5::PredType::NATIVE_INT);
+    std::vector<double> flat(P * m);
+    for (std::size_t p = 0; p < P; ++p) {
+      if (std::size_t(c.coefficients[p].size()) != m) throw Error("response curve: coefficient vector of the wrong size");
+      for (std::size_t j = 0; j < m; ++j) flat[p * m + j] = c.coefficients[p](j);
+    }
+    const hsize_t dims[2] = {P, m};
+    H5::DataSpace space(2, dims);
+    h5.createDataSet("coefficients", H5::PredType::NATIVE_DOUBLE, space).write(flat.data(), H5::PredType::NATIVE_DOUBLE);
+    writeIntAttribute(h5, "num_dofs", c.numDofs);
+    writeIntAttribute(h5, "num_coefficients", c.numCoefficients);
+    writeIntAttribute(h5, "samples", c.samples);
+  } catch (const H5::Exception& e) {
+    throw Error("cannot write " + path + ": " + e.getDetailMsg());
+  }
+  file.commit();
+}
+
+ResponseCurve readResponseCurveHdf5(const std::string& path) {
+  ResponseCurve c;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File h5(path, H5F_ACC_RDONLY);
+    c.omega = readVector<double>(h5, "omega", H5::PredType::NATIVE_DOUBLE);
+    c.harmonics = readVector<int>(h5, "harmonics", H5::PredType::NATIVE_INT);
+    c.stable = readVector<int>(h5, "stable", H5::PredType::NATIVE_INT);
+    c.numDofs = readIntAttribute(h5, "num_dofs");
+    c.numCoefficients = readIntAttribute(h5, "num_coefficients");
+    c.samples = readIntAttribute(h5, "samples");
+    const std::size_t m = std::size_t(c.numDofs) * c.numCoefficients;
+    std::vector<double> flat(c.omega.size() * m);
+    if (!flat.empty()) h5.openDataSet("coefficients").read(flat.data(), H5::PredType::NATIVE_DOUBLE);
+    for (std::size_t p = 0; p < c.omega.size(); ++p)
+      c.coefficients.push_back(Eigen::Map<const Eigen::VectorXd>(flat.data() + p * m, Eigen::Index(m)));
+  } catch (const H5::Exception& e) {
+    throw InputError(path, "not a Cyclone response-curve HDF5 file: " + e.getDetailMsg());
+  }
+  return c;
+}
+
+}  // namespace cyclone::post
