@@ -357,8 +357,16 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   auto cs = scene.section("continuation");
   auto& opt = setup.continuation;
   const std::string parameter = cs.getString("parameter", "omega");
-  if (parameter != "omega")
-    throw InputError(cs.where("parameter"), "only 'omega' (the excitation frequency, rad/s) is supported so far");
+  if (parameter == "omega") {
+    setup.parameter = ForcedResponseSetup::Parameter::Omega;
+  } else if (parameter == "force_scale") {
+    setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
+    setup.omega = cs.requireDouble("omega");
+    if (!(setup.omega > 0)) throw InputError(cs.where("omega"), "must be positive (rad/s)");
+  } else {
+    throw InputError(cs.where("parameter"),
+                     "unknown parameter '" + parameter + "' (omega: excitation frequency; force_scale: f = s f_ex)");
+  }
   opt.from = cs.requireDouble("from");
   opt.to = cs.requireDouble("to");
   opt.initialStep = cs.getDouble("initial_step", 0.01);
@@ -366,7 +374,8 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   opt.maxStep = cs.getDouble("max_step", 0.05);
   opt.maxSteps = cs.getInt("max_points", 5000);
   cs.rejectUnknownKeys();
-  if (!(opt.from > 0) || !(opt.to > 0)) throw InputError(cs.location(), "the frequency range must be positive");
+  if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
+    throw InputError(cs.location(), "the frequency range must be positive");
   auto out = scene.section("output");
   setup.outputDofs = out.getIntList("dofs", {0});
   const auto& dofs = setup.outputDofs;
@@ -407,10 +416,16 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   Timer timer;
   continuation::ContinuationProblem problem;
   problem.size = hb.numUnknowns();
-  problem.residual = [&](const Eigen::VectorXd& X, double w, Eigen::VectorXd& R) { hb.residual(X, w, R, nullptr); };
-  problem.jacobian = [&](const Eigen::VectorXd& X, double w, Eigen::MatrixXd& J) {
+  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
+  // (omega, scale) at parameter value p.
+  auto frequency = [&](double p) { return byForce ? setup.omega : p; };
+  auto scale = [&](double p) { return byForce ? p : 1.0; };
+  problem.residual = [&](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
+    hb.residual(X, frequency(p), R, nullptr, scale(p));
+  };
+  problem.jacobian = [&](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
     Eigen::VectorXd R;
-    hb.residual(X, w, R, &J);
+    hb.residual(X, frequency(p), R, &J, scale(p));
   };
   {
     std::ostringstream msg;
@@ -418,7 +433,8 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         << " samples, omega " << opt.from << " -> " << opt.to;
     log::info(msg.str());
   }
-  const auto branch = continuation::traceBranch(problem, hb.linearSolution(opt.from), opt);
+  const auto branch = continuation::traceBranch(
+      problem, scale(opt.from) * hb.linearSolution(frequency(opt.from)), opt);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";
@@ -432,7 +448,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
     csv.precision(12);
-    csv << "point,omega_rad_s,freq_hz";
+    csv << "point,omega_rad_s,freq_hz" << (byForce ? ",force_scale" : "");
     for (int d : dofs) {
       csv << ",dof" << d << "_h0";
       for (int h : harmonics.harmonics())
@@ -443,7 +459,9 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     const int nc = hb.numCoefficients();
     for (std::size_t i = 0; i < branch.points.size(); ++i) {
       const auto& pt = branch.points[i];
-      csv << i << "," << pt.parameter << "," << pt.parameter / (2 * M_PI);
+      const double w = frequency(pt.parameter);
+      csv << i << "," << w << "," << w / (2 * M_PI);
+      if (byForce) csv << "," << pt.parameter;
       for (int d : dofs) {
         csv << "," << (harmonics.contains(0) ? pt.x(d * nc + harmonics.cosIndex(0)) : 0.0);
         for (int h : harmonics.harmonics())
@@ -451,10 +469,10 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         const Eigen::VectorXd t = hb.aft().toTime(Eigen::VectorXd(pt.x.segment(d * nc, nc)));
         const double peak = t.cwiseAbs().maxCoeff();
         csv << "," << peak;
-        if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);
+        if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);  // x: the parameter
       }
       if (hill) {
-        const auto fl = hbm::hillStability(hb, pt.x, pt.parameter);
+        const auto fl = hbm::hillStability(hb, pt.x, w);
         csv << "," << (fl.stable ? 1 : 0) << "," << fl.maxRealPart;
         plotStable.push_back(fl.stable ? 1 : 0);
         unstablePoints += fl.stable ? 0 : 1;
@@ -467,7 +485,8 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     csv.close();
     if (!csv) throw Error("cannot write " + csvPath);
     file.commit();
-    post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)", "omega (rad/s)",
+    post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)",
+                       byForce ? "excitation scale" : "omega (rad/s)",
                        "max |x(t)| of DOF " + std::to_string(dofs.front()));
     // Stable stretches solid, unstable ones dashed (each stretch shares its end points).
     bool labelled[2] = {false, false};
@@ -493,7 +512,8 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     curve.samples = samples;
     curve.harmonics = harmonics.harmonics();
     for (std::size_t i = 0; i < branch.points.size(); ++i) {
-      curve.omega.push_back(branch.points[i].parameter);
+      curve.omega.push_back(frequency(branch.points[i].parameter));
+      curve.parameter.push_back(branch.points[i].parameter);
       curve.coefficients.push_back(branch.points[i].x);
       curve.stable.push_back(hill ? plotStable[i] : -1);
     }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <algorithm>
 #include <regex>
 #include <sstream>
 
@@ -262,4 +263,64 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                 dir);
   EXPECT_NE(msg.find("continuation/to"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+}
+
+namespace {
+// Columns of a frc.csv as numbers (header skipped).
+std::vector<std::vector<double>> readCsv(const fs::path& path) {
+  std::ifstream csv(path);
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(cell.empty() ? NAN : std::stod(cell));
+    rows.push_back(v);
+  }
+  return rows;
+}
+// Values of column `value` where column `parameter` crosses `at` (linear interpolation).
+std::vector<double> crossings(const std::vector<std::vector<double>>& rows, int parameter, int value, double at) {
+  std::vector<double> out;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double a = rows[i - 1][parameter] - at, b = rows[i][parameter] - at;
+    if ((a < 0) != (b < 0)) out.push_back(rows[i - 1][value] + a / (a - b) * (rows[i][value] - rows[i - 1][value]));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+}  // namespace
+
+TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {
+  log::setQuiet(true);
+  const auto dirF = freshDir("dforce"), dirW = freshDir("dfreq");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dirF.string();
+  scenes::runSceneFile(CYCLONE_SCENE_DIR "/duffing_force.yaml", o, Tpetra::getDefaultComm());
+  o.outputDirectory = dirW.string();
+  scenes::runSceneFile(CYCLONE_SCENE_DIR "/duffing.yaml", o, Tpetra::getDefaultComm());
+  const auto force = readCsv(dirF / "frc.csv"), freq = readCsv(dirW / "frc.csv");
+  // Columns: force scan  point, omega, freq, scale, h0, amp_h1..h7, max, stable, max_re
+  //          frequency   point, omega, freq,        h0, amp_h1..h7, max, stable, max_re
+  std::vector<double> folds;
+  int stabilityChanges = 0;
+  for (std::size_t i = 2; i < force.size(); ++i) {
+    const double d1 = force[i - 1][3] - force[i - 2][3], d2 = force[i][3] - force[i - 1][3];
+    if (i + 1 < force.size() && (d1 > 0) != (d2 > 0)) folds.push_back(force[i - 1][3]);
+    stabilityChanges += force[i][13] != force[i - 1][13];
+  }
+  ASSERT_EQ(folds.size(), 2u);
+  EXPECT_EQ(stabilityChanges, 2);
+  // Single-term closed form of the folds: s = 2.33 and 0.805 (H = 7 moves them by < 2%).
+  EXPECT_NEAR(folds[0] / 2.33, 1.0, 0.02);
+  EXPECT_NEAR(folds[1] / 0.805, 1.0, 0.02);
+  // At s = 1 the force scan passes the frequency sweep's three solutions at W = 1.2.
+  const auto a = crossings(force, 3, 5, 1.0), b = crossings(freq, 1, 4, 1.2);
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i] / b[i], 1.0, 2e-3) << "solution " << i;
+  const auto curve = post::readResponseCurveHdf5((dirF / "frc.h5").string());
+  ASSERT_EQ(curve.parameter.size(), force.size());
+  EXPECT_DOUBLE_EQ(curve.parameter.back(), force.back()[3]);
 }

@@ -63,11 +63,11 @@ Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
 }
 
 void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
-                                     Eigen::MatrixXd* jacobian) const {
+                                     Eigen::MatrixXd* jacobian, double excitationScale) const {
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
   const Eigen::MatrixXd Z = linearOperator(omega);
-  R = Z * X - excitation_;
+  R = Z * X - excitationScale * excitation_;
   if (jacobian) *jacobian = Z;
   Eigen::MatrixXd Jw;
   for (const auto& c : elements_) {

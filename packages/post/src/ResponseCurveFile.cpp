@@ -49,6 +49,7 @@ void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
     writeVector(h5, "omega", c.omega, H5::PredType::NATIVE_DOUBLE);
     writeVector(h5, "harmonics", c.harmonics, H5::PredType::NATIVE_INT);
     writeVector(h5, "stable", c.stable, H5::PredType::NATIVE_INT);
+    writeVector(h5, "parameter", c.parameter.empty() ? c.omega : c.parameter, H5::PredType::NATIVE_DOUBLE);
     std::vector<double> flat(P * m);
     for (std::size_t p = 0; p < P; ++p) {
       if (std::size_t(c.coefficients[p].size()) != m) throw Error("response curve: coefficient vector of the wrong size");
@@ -74,6 +75,7 @@ ResponseCurve readResponseCurveHdf5(const std::string& path) {
     c.omega = readVector<double>(h5, "omega", H5::PredType::NATIVE_DOUBLE);
     c.harmonics = readVector<int>(h5, "harmonics", H5::PredType::NATIVE_INT);
     c.stable = readVector<int>(h5, "stable", H5::PredType::NATIVE_INT);
+    c.parameter = readVector<double>(h5, "parameter", H5::PredType::NATIVE_DOUBLE);
     c.numDofs = readIntAttribute(h5, "num_dofs");
     c.numCoefficients = readIntAttribute(h5, "num_coefficients");
     c.samples = readIntAttribute(h5, "samples");

@@ -15,6 +15,10 @@ class SceneSection;
 
 struct ForcedResponseSetup {
   std::unique_ptr<hbm::HarmonicBalanceSystem> system;
+  /// The continuation parameter: the excitation frequency (rad/s), or the excitation
+  /// scale s (f = s f_ex) at the fixed frequency `omega`.
+  enum class Parameter { Omega, ForceScale } parameter = Parameter::Omega;
+  double omega = 0;  ///< ForceScale: the fixed excitation frequency
   continuation::ContinuationOptions continuation;
   std::vector<int> outputDofs;
 };

@@ -27,8 +27,10 @@ public:
   int numUnknowns() const { return numDofs() * numCoefficients(); }
   const Aft& aft() const { return *aft_; }
 
-  /// R(X; omega) = Z(omega) X + F_nl(X) - F_ex, and optionally dR/dX.
-  void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian) const;
+  /// R(X; omega) = Z(omega) X + F_nl(X) - s F_ex (s: excitation scale, a continuation
+  /// parameter for force-level studies), and optionally dR/dX.
+  void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian,
+                double excitationScale = 1.0) const;
   /// The solution without the nonlinear elements: a start for continuation.
   Eigen::VectorXd linearSolution(double omega) const;
   const Eigen::MatrixXd& M() const { return M_; }

@@ -6,6 +6,7 @@
 //   /coefficients     [P x n*nc]     X[dof * nc + c], coefficient order of /harmonics
 //   /harmonics        [H]            the harmonic numbers ([x0] then [cos, sin] per h > 0)
 //   /stable           [P]            1 stable, 0 unstable, -1 not computed
+//   /parameter        [P]            the continuation parameter (= /omega, or the force scale)
 //   attributes on /: num_dofs, num_coefficients, samples
 #include <Eigen/Dense>
 #include <string>
@@ -17,6 +18,7 @@ struct ResponseCurve {
   int numDofs = 0, numCoefficients = 0, samples = 0;
   std::vector<int> harmonics;
   std::vector<double> omega;
+  std::vector<double> parameter;  ///< empty: the same as omega
   std::vector<Eigen::VectorXd> coefficients;
   std::vector<int> stable;
 };
