@@ -386,6 +386,21 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   return setup;
 }
 
+continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& hb,
+                                                      ForcedResponseSetup::Parameter parameter, double omega) {
+  const bool byForce = parameter == ForcedResponseSetup::Parameter::ForceScale;
+  continuation::ContinuationProblem problem;
+  problem.size = hb.numUnknowns();
+  problem.residual = [&hb, byForce, omega](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
+    hb.residual(X, byForce ? omega : p, R, nullptr, byForce ? p : 1.0);
+  };
+  problem.jacobian = [&hb, byForce, omega](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
+    Eigen::VectorXd R;
+    hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : 1.0);
+  };
+  return problem;
+}
+
 ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "cannot open the scene file");
@@ -414,19 +429,10 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   const int samples = hb.aft().numSamples();
   const int n = hb.numDofs();
   Timer timer;
-  continuation::ContinuationProblem problem;
-  problem.size = hb.numUnknowns();
   const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
-  // (omega, scale) at parameter value p.
   auto frequency = [&](double p) { return byForce ? setup.omega : p; };
   auto scale = [&](double p) { return byForce ? p : 1.0; };
-  problem.residual = [&](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
-    hb.residual(X, frequency(p), R, nullptr, scale(p));
-  };
-  problem.jacobian = [&](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
-    Eigen::VectorXd R;
-    hb.residual(X, frequency(p), R, &J, scale(p));
-  };
+  const auto problem = continuationProblem(hb, setup.parameter, setup.omega);
   {
     std::ostringstream msg;
     msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples

@@ -14,6 +14,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
 
@@ -35,13 +36,7 @@ CurveFeatures traceDuffing(int H, int samples) {
   hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(H), samples);
   sys.addElement(std::make_shared<hbm::CubicSpring>(0.1), Eigen::VectorXd::Ones(1));
   sys.addExcitation(0, 1, 0.18);
-  continuation::ContinuationProblem problem;
-  problem.size = sys.numUnknowns();
-  problem.residual = [&](const Eigen::VectorXd& X, double w, Eigen::VectorXd& R) { sys.residual(X, w, R, nullptr); };
-  problem.jacobian = [&](const Eigen::VectorXd& X, double w, Eigen::MatrixXd& J) {
-    Eigen::VectorXd R;
-    sys.residual(X, w, R, &J);
-  };
+  const auto problem = scenes::continuationProblem(sys, scenes::ForcedResponseSetup::Parameter::Omega);
   continuation::ContinuationOptions o;
   o.from = 0.5;
   o.to = 2.0;

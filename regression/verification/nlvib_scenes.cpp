@@ -20,13 +20,7 @@ TEST(NlvibScenes, Example02PeakConfirmedByTimeIntegration) {
   Timer timer;
   auto setup = scenes::loadForcedResponseScene(CYCLONE_SCENE_DIR "/nlvib_02.yaml");
   auto& sys = *setup.system;
-  continuation::ContinuationProblem problem;
-  problem.size = sys.numUnknowns();
-  problem.residual = [&](const Eigen::VectorXd& X, double w, Eigen::VectorXd& R) { sys.residual(X, w, R, nullptr); };
-  problem.jacobian = [&](const Eigen::VectorXd& X, double w, Eigen::MatrixXd& J) {
-    Eigen::VectorXd R;
-    sys.residual(X, w, R, &J);
-  };
+  const auto problem = scenes::continuationProblem(sys, scenes::ForcedResponseSetup::Parameter::Omega);
   const auto branch = continuation::traceBranch(problem, sys.linearSolution(setup.continuation.from), setup.continuation);
   ASSERT_TRUE(branch.finished) << branch.stopReason;
   std::size_t peak = 0;

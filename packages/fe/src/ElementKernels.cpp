@@ -61,6 +61,16 @@ int checkedNodeCount(ElementType type, const ElementCoords& X) {
   return n;
 }
 
+// A node-by-node scalar matrix s (n x n) as the element matrix s (x) I_3 on
+// node-major DOFs: the same coupling in every direction (mass, geometric stiffness).
+Eigen::MatrixXd perDirection(const Eigen::MatrixXd& s) {
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * s.rows(), 3 * s.cols());
+  for (Eigen::Index a = 0; a < s.rows(); ++a)
+    for (Eigen::Index b = 0; b < s.cols(); ++b)
+      for (int d = 0; d < 3; ++d) K(3 * a + d, 3 * b + d) = s(a, b);
+  return K;
+}
+
 // det J below this fraction of (bounding-box diagonal)^3 is round-off of a flat element:
 // treated as degenerate like det J <= 0, since its stiffness would be meaningless.
 constexpr double kDegenerateRelativeDetJ = 1e-14;
@@ -144,11 +154,7 @@ Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho
     m.selfadjointView<Eigen::Lower>().rankUpdate(t.N[q], rho * t.weights[q] * detJ);
   }
   m = m.selfadjointView<Eigen::Lower>();  // exactly symmetric
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b)
-      for (int d = 0; d < 3; ++d) M(3 * a + d, 3 * b + d) = m(a, b);
-  return M;
+  return perDirection(m);
 }
 
 Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
@@ -237,11 +243,7 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
     g.noalias() += (t.weights[q] * detJ) * (G * S * G.transpose());
   }
   g = 0.5 * (g + g.transpose()).eval();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b)
-      for (int d = 0; d < 3; ++d) K(3 * a + d, 3 * b + d) = g(a, b);
-  return K;
+  return perDirection(g);
 }
 
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
@@ -300,10 +302,7 @@ TotalLagrangianElement elementTotalLagrangian(ElementType type, const ElementCoo
     out.internalForce.noalias() += w * (B.transpose() * S);
     if (wantTangent) {
       out.tangent.noalias() += w * (B.transpose() * D * B);
-      const Eigen::MatrixXd g = w * (G * St * G.transpose());
-      for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b)
-          for (int d = 0; d < 3; ++d) out.tangent(3 * a + d, 3 * b + d) += g(a, b);
+      out.tangent += perDirection(w * (G * St * G.transpose()));
     }
   }
   if (wantTangent) out.tangent = 0.5 * (out.tangent + out.tangent.transpose()).eval();

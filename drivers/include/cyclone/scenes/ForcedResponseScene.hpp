@@ -23,6 +23,11 @@ struct ForcedResponseSetup {
   std::vector<int> outputDofs;
 };
 
+/// The continuation problem of a harmonic balance system in the chosen parameter:
+/// the frequency, or the excitation scale at the fixed frequency `omega`.
+continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& system,
+                                                      ForcedResponseSetup::Parameter parameter, double omega = 0);
+
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
 /// The same from a scene file.
