@@ -3,6 +3,8 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,8 +19,11 @@
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/HillStability.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
@@ -302,9 +307,36 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   if (n < 1) throw InputError(sys.where("dofs"), "is required: the number of DOFs (>= 1)");
   const Eigen::MatrixXd M = squareMatrix(sys, "M", n, true), K = squareMatrix(sys, "K", n, true);
   Eigen::MatrixXd C = squareMatrix(sys, "C", n, false);
-  sys.rejectUnknownKeys();
   if ((M - M.transpose()).norm() > 1e-12 * M.norm() || (K - K.transpose()).norm() > 1e-12 * K.norm())
     throw InputError(sys.location(), "M and K must be symmetric");
+  // Damping on top of C: Rayleigh a M + b K, or a modal damping ratio for every
+  // mode of (K, M) (C = M Phi diag(2 zeta w_j) Phi^T M with M-normalised Phi).
+  if (sys.has("rayleigh")) {
+    const auto ab = sys.getDoubleList("rayleigh", {});
+    if (ab.size() != 2) throw InputError(sys.where("rayleigh"), "needs two numbers [a, b]: C += a M + b K");
+    C += ab[0] * M + ab[1] * K;
+  }
+  if (sys.has("modal_damping_ratio")) {
+    const double zeta = sys.getDouble("modal_damping_ratio", 0.0);
+    if (!(zeta >= 0)) throw InputError(sys.where("modal_damping_ratio"), "must be >= 0");
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(K, M);
+    if (modes.info() != Eigen::Success || modes.eigenvalues().minCoeff() < 0)
+      throw InputError(sys.where("modal_damping_ratio"), "needs K positive semi-definite and M positive definite");
+    const Eigen::MatrixXd MPhi = M * modes.eigenvectors();
+    const Eigen::VectorXd c = 2 * zeta * modes.eigenvalues().cwiseMax(0).cwiseSqrt();
+    C += MPhi * c.asDiagonal() * MPhi.transpose();
+  }
+  hbm::CyclicCoupling coupling;
+  coupling.sectors = sys.getInt("sectors", 1);
+  if (coupling.sectors < 1) throw InputError(sys.where("sectors"), "must be >= 1 (1: not cyclic)");
+  const bool cyclic = coupling.sectors > 1;
+  for (const char* key : {"K_next", "C_next", "M_next"})
+    if (sys.has(key) && !cyclic)
+      throw InputError(sys.where(key), "couples a sector to the next one: set sectors >= 2 for a cyclic system");
+  coupling.Knext = squareMatrix(sys, "K_next", n, false);
+  coupling.Cnext = squareMatrix(sys, "C_next", n, false);
+  coupling.Mnext = squareMatrix(sys, "M_next", n, false);
+  sys.rejectUnknownKeys();
 
   std::vector<int> harmonicList;
   if (scene.has("harmonics")) {
@@ -318,41 +350,120 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     harmonicList = {0, 1, 2, 3, 4, 5, 6, 7};
   }
   const hbm::HarmonicSet harmonics(harmonicList);
-  const int samples = scene.getInt("samples", std::max(64, 4 * harmonics.maxHarmonic() + 1));
-  ForcedResponseSetup setup;
-  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
-  auto& hb = *setup.system;
 
-  auto direction = [&](SceneSection& e) {
-    const auto v = e.getDoubleList("direction", {});
-    if (int(v.size()) != n)
-      throw InputError(e.where("direction"), "needs " + std::to_string(n) + " numbers (w = direction . x)");
-    return Eigen::Map<const Eigen::VectorXd>(v.data(), n).eval();
+  // Elements first: the default sample count depends on them (friction and
+  // gaps need many samples per period to place their events).
+  auto matrixOf = [&](SceneSection& e, const std::string& key, int d) {
+    const auto v = e.getDoubleList(key, {});
+    if (int(v.size()) != n * d)
+      throw InputError(e.where(key), "needs " + std::to_string(n * d) + " numbers: " + std::to_string(d) +
+                                         " direction vector(s) of " + std::to_string(n) +
+                                         " DOFs one after another (element coordinates in order)");
+    return Eigen::Map<const Eigen::MatrixXd>(v.data(), n, d).eval();
   };
+  struct Placed {
+    std::shared_ptr<const hbm::NonlinearElement> element;
+    Eigen::MatrixXd W, Wnext;
+  };
+  std::vector<Placed> placed;
   auto elements = scene.section("nonlinear_elements");
   for (const auto& name : elements.sectionNames()) {
     auto e = elements.section(name);
     const std::string type = e.getString("type", "");
-    const Eigen::VectorXd d = direction(e);
-    std::shared_ptr<const hbm::ScalarElement> element;
-    if (type == "cubic") element = std::make_shared<hbm::CubicSpring>(e.requireDouble("k3"));
-    else if (type == "unilateral") element = std::make_shared<hbm::UnilateralSpring>(e.requireDouble("k"), e.getDouble("gap", 0.0));
-    else if (type == "quadratic_damper") element = std::make_shared<hbm::QuadraticDamper>(e.requireDouble("c2"));
-    else if (type == "jenkins") element = std::make_shared<hbm::JenkinsElement>(e.requireDouble("kt"), e.requireDouble("slip_force"));
-    else throw InputError(e.where("type"), "unknown element type '" + type + "' (cubic, unilateral, quadratic_damper, jenkins)");
+    std::shared_ptr<const hbm::NonlinearElement> element;
+    auto scalar = [](std::shared_ptr<const hbm::ScalarElement> s) {
+      return std::make_shared<hbm::ScalarElementAdapter>(std::move(s));
+    };
+    if (type == "cubic") element = scalar(std::make_shared<hbm::CubicSpring>(e.requireDouble("k3")));
+    else if (type == "unilateral")
+      element = scalar(std::make_shared<hbm::UnilateralSpring>(e.requireDouble("k"), e.getDouble("gap", 0.0)));
+    else if (type == "quadratic_damper") element = scalar(std::make_shared<hbm::QuadraticDamper>(e.requireDouble("c2")));
+    else if (type == "jenkins")
+      element = scalar(std::make_shared<hbm::JenkinsElement>(e.requireDouble("kt"), e.requireDouble("slip_force")));
+    else if (type == "friction2d" || type == "friction3d") {
+      hbm::FrictionContactParameters p;
+      p.tangentialDirections = type == "friction2d" ? 1 : 2;
+      p.kt = e.requireDouble("kt");
+      p.kn = e.getDouble("kn", 0.0);
+      p.mu = e.requireDouble("mu");
+      p.preload = e.getDouble("preload", 0.0);
+      try {
+        element = std::make_shared<hbm::FrictionContact>(p);
+      } catch (const InputError& err) {
+        throw InputError(e.location(), err.what());
+      }
+    } else
+      throw InputError(e.where("type"), "unknown element type '" + type +
+                                            "' (cubic, unilateral, quadratic_damper, jenkins, friction2d, friction3d)");
+    const int d = element->dimension();
+    Placed pl{element, {}, {}};
+    if (e.has("direction") && e.has("W"))
+      throw InputError(e.location(), "give either direction (one coordinate) or W, not both");
+    if (e.has("direction")) {
+      if (d != 1) throw InputError(e.where("direction"), "is for one-coordinate elements; use W for " + type);
+      pl.W = matrixOf(e, "direction", 1);
+    } else if (e.has("W")) {
+      pl.W = matrixOf(e, "W", d);
+    } else {
+      throw InputError(e.location(), "needs direction (n numbers) or W (" + std::to_string(d) + " x " +
+                                         std::to_string(n) + " numbers): w = W^T x");
+    }
+    if (e.has("W_next")) {
+      if (!cyclic) throw InputError(e.where("W_next"), "joins a sector to the next one: the system must be cyclic");
+      pl.Wnext = matrixOf(e, "W_next", d);
+    }
     e.rejectUnknownKeys();
-    hb.addElement(element, d);
+    placed.push_back(std::move(pl));
   }
   elements.rejectUnknownKeys();
+  int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
+  for (const auto& p : placed) recommended = std::max(recommended, p.element->recommendedSamples());
+  const int samples = scene.getInt("samples", recommended);
+
+  ForcedResponseSetup setup;
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
+  auto& hb = *setup.system;
+
   auto ex = scene.section("excitation");
   const auto excitations = ex.sectionNames();
   if (excitations.empty()) throw InputError(ex.location(), "needs at least one named force, e.g. f: {dof: 0, cos: 1.0}");
+  bool haveOrder = false;
   for (const auto& name : excitations) {
     auto f = ex.section(name);
+    if (f.has("engine_order")) {
+      if (!cyclic) throw InputError(f.where("engine_order"), "is for cyclic systems (system: sectors >= 2)");
+      const int eo = f.getInt("engine_order", 0);
+      if (haveOrder && eo != coupling.engineOrder)
+        throw InputError(f.where("engine_order"),
+                         "differs from another force's (" + std::to_string(coupling.engineOrder) +
+                             "): the cyclic reduction needs one travelling wave");
+      coupling.engineOrder = eo, haveOrder = true;
+    }
+  }
+  if (cyclic && !haveOrder)
+    throw InputError(ex.location(), "a cyclic system needs the travelling wave's engine_order on its forces");
+  if (cyclic) hb.setCyclic(coupling);
+  for (auto& p : placed) hb.addElement(p.element, p.W, p.Wnext);
+  for (const auto& name : excitations) {
+    auto f = ex.section(name);
+    if (f.has("engine_order")) f.getInt("engine_order", 0);  // read above
     hb.addExcitation(f.getInt("dof", 0), f.getInt("harmonic", 1), f.getDouble("cos", 0.0), f.getDouble("sin", 0.0));
     f.rejectUnknownKeys();
   }
+  setup.excitationScale = ex.getDouble("scale", 1.0);
+  if (!std::isfinite(setup.excitationScale)) throw InputError(ex.where("scale"), "must be a finite number");
   ex.rejectUnknownKeys();
+  auto statics = scene.section("static_loads");
+  for (const auto& name : statics.sectionNames()) {
+    auto l = statics.section(name);
+    try {
+      hb.addStaticLoad(l.getInt("dof", 0), l.requireDouble("value"));
+    } catch (const InputError& err) {
+      throw InputError(l.location(), err.what());
+    }
+    l.rejectUnknownKeys();
+  }
+  statics.rejectUnknownKeys();
 
   auto cs = scene.section("continuation");
   auto& opt = setup.continuation;
@@ -387,16 +498,18 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
 }
 
 continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& hb,
-                                                      ForcedResponseSetup::Parameter parameter, double omega) {
+                                                      ForcedResponseSetup::Parameter parameter, double omega,
+                                                      double excitationScale) {
   const bool byForce = parameter == ForcedResponseSetup::Parameter::ForceScale;
   continuation::ContinuationProblem problem;
   problem.size = hb.numUnknowns();
-  problem.residual = [&hb, byForce, omega](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
-    hb.residual(X, byForce ? omega : p, R, nullptr, byForce ? p : 1.0);
+  const double s = excitationScale;
+  problem.residual = [&hb, byForce, omega, s](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
+    hb.residual(X, byForce ? omega : p, R, nullptr, byForce ? p : s);
   };
-  problem.jacobian = [&hb, byForce, omega](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
+  problem.jacobian = [&hb, byForce, omega, s](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
     Eigen::VectorXd R;
-    hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : 1.0);
+    hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : s);
   };
   return problem;
 }
@@ -431,16 +544,21 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   Timer timer;
   const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
   auto frequency = [&](double p) { return byForce ? setup.omega : p; };
-  auto scale = [&](double p) { return byForce ? p : 1.0; };
-  const auto problem = continuationProblem(hb, setup.parameter, setup.omega);
+  auto scale = [&](double p) { return byForce ? p : setup.excitationScale; };
+  const auto problem = continuationProblem(hb, setup.parameter, setup.omega, setup.excitationScale);
   {
     std::ostringstream msg;
     msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
         << " samples, omega " << opt.from << " -> " << opt.to;
+    if (hb.isCyclic()) {
+      msg << "; cyclic: " << hb.cyclic().sectors << " sectors, engine order " << hb.cyclic().engineOrder
+          << ", harmonic -> nodal diameter:";
+      for (int h : harmonics.harmonics()) msg << " " << h << "->" << hb.nodalDiameter(h);
+    }
     log::info(msg.str());
   }
   const auto branch = continuation::traceBranch(
-      problem, scale(opt.from) * hb.linearSolution(frequency(opt.from)), opt);
+      problem, hb.linearizedSolution(frequency(opt.from), scale(opt.from)), opt);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";
@@ -472,8 +590,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         csv << "," << (harmonics.contains(0) ? pt.x(d * nc + harmonics.cosIndex(0)) : 0.0);
         for (int h : harmonics.harmonics())
           if (h > 0) csv << "," << hb.amplitude(pt.x, d, h);
-        const Eigen::VectorXd t = hb.aft().toTime(Eigen::VectorXd(pt.x.segment(d * nc, nc)));
-        const double peak = t.cwiseAbs().maxCoeff();
+        const double peak = hbm::peakMagnitude(harmonics, Eigen::VectorXd(pt.x.segment(d * nc, nc)));
         csv << "," << peak;
         if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);  // x: the parameter
       }
@@ -626,7 +743,7 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   // Top-level keys are checked before anything runs, so a typo costs no computation.
   scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
                              "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
-                             "samples", "continuation", "output"});
+                             "samples", "continuation", "output", "static_loads"});
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");

@@ -262,6 +262,30 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                        "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n  continuation:\n    from: 0.5\n",
                 dir);
   EXPECT_NE(msg.find("continuation/to"), std::string::npos) << msg;
+  // Friction and cyclic keys: the element's parameter, W_next without a ring,
+  // a cyclic system without (or with two different) engine orders.
+  const std::string mk = "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n";
+  const std::string force = "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n";
+  msg = failure(base + mk + "  nonlinear_elements:\n    c:\n      type: friction2d\n      W: [1.0, 0.0, 0.0, 1.0]\n"
+                       "      kt: -5.0\n      mu: 0.3\n      kn: 1.0\n" + force,
+                dir);
+  EXPECT_NE(msg.find("nonlinear_elements/c"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("kt must be positive"), std::string::npos) << msg;
+  msg = failure(base + mk + "  nonlinear_elements:\n    c:\n      type: friction2d\n      W: [1.0, 0.0]\n"
+                       "      kt: 5.0\n      mu: 0.3\n      kn: 1.0\n" + force,
+                dir);
+  EXPECT_NE(msg.find("needs 4 numbers"), std::string::npos) << msg;
+  msg = failure(base + mk + "  nonlinear_elements:\n    c:\n      type: cubic\n      direction: [1.0, 0.0]\n"
+                       "      W_next: [-1.0, 0.0]\n      k3: 1.0\n" + force,
+                dir);
+  EXPECT_NE(msg.find("W_next"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be cyclic"), std::string::npos) << msg;
+  msg = failure(base + "    sectors: 6\n" + mk + force, dir);
+  EXPECT_NE(msg.find("engine_order"), std::string::npos) << msg;
+  msg = failure(base + "    sectors: 6\n" + mk + force + "      engine_order: 2\n    g:\n      dof: 1\n"
+                       "      cos: 1.0\n      engine_order: 3\n",
+                dir);
+  EXPECT_NE(msg.find("one travelling wave"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frc.csv"));
 }
 

@@ -1,6 +1,7 @@
 // Aft against direct evaluation of the Fourier sum x0 + sum (c cos + s sin).
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/Aft.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 using cyclone::InputError;
 using cyclone::hbm::Aft;
 using cyclone::hbm::HarmonicSet;
+using cyclone::hbm::peakMagnitude;
 
 namespace {
 
@@ -109,4 +111,19 @@ TEST(Aft, DerivativeMatrixMatchesAnalyticDerivative) {
 TEST(Aft, RejectsTooFewSamples) {
   EXPECT_THROW(Aft(HarmonicSet::upTo(3), 6), InputError);
   EXPECT_NO_THROW(Aft(HarmonicSet::upTo(3), 7));
+}
+
+// The peak of |x(t)| from coefficients: closed forms, where the AFT samples
+// alone would fall short by up to 1 - cos(pi h / N).
+TEST(PeakMagnitude, ClosedForms) {
+  const HarmonicSet H = HarmonicSet::upTo(3);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(H.numCoefficients());
+  x(H.cosIndex(1)) = 0.3, x(H.sinIndex(1)) = -0.4;  // amplitude 0.5 at a phase off every grid point
+  EXPECT_NEAR(peakMagnitude(H, x), 0.5, 1e-14);
+  x(H.cosIndex(0)) = -0.25;  // the mean shifts the peak of |x| to the negative lobe
+  EXPECT_NEAR(peakMagnitude(H, x), 0.75, 1e-14);
+  // x = cos t + cos 3t / 9 peaks at t = 0 (x' = -sin t - sin 3t / 3 = 0), value 10/9.
+  x.setZero();
+  x(H.cosIndex(1)) = 1.0, x(H.cosIndex(3)) = 1.0 / 9;
+  EXPECT_NEAR(peakMagnitude(H, x), 10.0 / 9, 1e-14);
 }

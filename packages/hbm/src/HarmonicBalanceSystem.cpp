@@ -1,9 +1,10 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "cyclone/core/Error.hpp"
-#include "cyclone/hbm/HarmonicForce.hpp"
+#include "cyclone/hbm/ScalarElementAdapter.hpp"
 
 namespace cyclone::hbm {
 
@@ -15,13 +16,67 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(Eigen::MatrixXd M, Eigen::MatrixXd 
     throw InputError("system", "M, C and K must be square and of the same size");
   aft_ = std::make_unique<Aft>(std::move(harmonics), samples);
   excitation_ = Eigen::VectorXd::Zero(numUnknowns());
+  static_ = Eigen::VectorXd::Zero(numUnknowns());
+  next_ = Eigen::MatrixXd::Identity(numCoefficients(), numCoefficients());
+}
+
+void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
+  const int n = numDofs();
+  if (coupling.sectors < 2)
+    throw InputError("system", "a cyclic system needs at least 2 sectors, got " + std::to_string(coupling.sectors));
+  for (auto* A : {&coupling.Mnext, &coupling.Cnext, &coupling.Knext}) {
+    if (A->size() == 0) *A = Eigen::MatrixXd::Zero(n, n);
+    if (A->rows() != n || A->cols() != n)
+      throw InputError("system", "the coupling matrices to the next sector must be " + std::to_string(n) + " x " +
+                                     std::to_string(n));
+  }
+  cyclic_ = std::move(coupling);
+  // Sector j+1 is sector j delayed by phi = 2 pi EO / N: harmonic h rotates by h phi.
+  const auto& H = aft_->harmonics();
+  next_.setIdentity(numCoefficients(), numCoefficients());
+  const long N = cyclic_.sectors;
+  for (int h : H.harmonics()) {
+    if (h == 0) continue;
+    const long k = ((long(h) * cyclic_.engineOrder) % N + N) % N;  // exact phase index before the trig
+    const double a = 2 * M_PI * double(k) / double(N), c = std::cos(a), s = std::sin(a);
+    const int i = H.cosIndex(h);
+    next_(i, i) = c, next_(i, i + 1) = -s;
+    next_(i + 1, i) = s, next_(i + 1, i + 1) = c;
+  }
+}
+
+int HarmonicBalanceSystem::nodalDiameter(int harmonic) const {
+  if (!isCyclic()) return 0;
+  const long N = cyclic_.sectors;
+  const long k = ((long(harmonic) * cyclic_.engineOrder) % N + N) % N;
+  return int(k > N / 2 ? N - k : k);
+}
+
+void HarmonicBalanceSystem::addElement(std::shared_ptr<const NonlinearElement> element, Eigen::MatrixXd W,
+                                       Eigen::MatrixXd Wnext) {
+  if (!element) throw InputError("nonlinear element", "no element given");
+  const int d = element->dimension();
+  auto check = [&](const Eigen::MatrixXd& A, const char* name) {
+    if (A.rows() != numDofs() || A.cols() != d)
+      throw InputError("nonlinear element", std::string(name) + " must be " + std::to_string(numDofs()) + " x " +
+                                                std::to_string(d) + " (DOFs x element coordinates), got " +
+                                                std::to_string(A.rows()) + " x " + std::to_string(A.cols()));
+    if (!A.allFinite()) throw InputError("nonlinear element", std::string(name) + " has entries that are not finite");
+  };
+  check(W, "W");
+  if (Wnext.size() != 0) {
+    check(Wnext, "W_next");
+    if (!isCyclic())
+      throw InputError("nonlinear element", "W_next joins a sector to the next one: the system must be cyclic");
+  }
+  elements_.push_back({std::move(element), std::move(W), std::move(Wnext)});
 }
 
 void HarmonicBalanceSystem::addElement(std::shared_ptr<const ScalarElement> element, Eigen::VectorXd direction) {
   if (direction.size() != numDofs())
     throw InputError("nonlinear element", "direction has " + std::to_string(direction.size()) + " entries for " +
                                               std::to_string(numDofs()) + " DOFs");
-  elements_.push_back({std::move(element), std::move(direction)});
+  addElement(std::make_shared<ScalarElementAdapter>(std::move(element)), Eigen::MatrixXd(direction));
 }
 
 void HarmonicBalanceSystem::addExcitation(int dof, int harmonic, double cosAmplitude, double sinAmplitude) {
@@ -38,27 +93,73 @@ void HarmonicBalanceSystem::addExcitation(int dof, int harmonic, double cosAmpli
   excitation_(dof * nc + H.sinIndex(harmonic)) += sinAmplitude;
 }
 
-Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
-  // Per harmonic h on (cos, sin): [K - (h w)^2 M,  h w C; -h w C,  K - (h w)^2 M].
+void HarmonicBalanceSystem::addStaticLoad(int dof, double value) {
+  if (dof < 0 || dof >= numDofs()) throw InputError("static load", "DOF " + std::to_string(dof) + " out of range");
+  if (!aft_->harmonics().contains(0))
+    throw InputError("static load", "needs harmonic 0 in the harmonic set (the mean of the response)");
+  static_(dof * numCoefficients() + aft_->harmonics().cosIndex(0)) += value;
+}
+
+void HarmonicBalanceSystem::addExcitationCoefficients(const Eigen::VectorXd& F) {
+  if (F.size() != numUnknowns()) throw InputError("excitation", "coefficient vector of the wrong size");
+  excitation_ += F;
+}
+
+void HarmonicBalanceSystem::addStaticLoadCoefficients(const Eigen::VectorXd& L) {
+  if (L.size() != numUnknowns()) throw InputError("static load", "coefficient vector of the wrong size");
+  for (int a = 0; a < numDofs(); ++a)
+    for (int k = 0; k < numCoefficients(); ++k) {
+      const double v = L(a * numCoefficients() + k);
+      if (v == 0) continue;
+      if (!aft_->harmonics().contains(0) || k != aft_->harmonics().cosIndex(0))
+        throw InputError("static load", "a static load has only a harmonic-0 part");
+      static_(a * numCoefficients() + k) += v;
+    }
+}
+
+Eigen::MatrixXd HarmonicBalanceSystem::coefficientOperator(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext) const {
   const int n = numDofs(), nc = numCoefficients();
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(nc, nc);
+  const bool coupled = isCyclic() && Anext.size() != 0;
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n * nc, n * nc);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      auto block = L.block(a * nc, b * nc, nc, nc);
+      if (A(a, b) != 0) block += A(a, b) * I;
+      if (coupled && Anext(a, b) != 0) block += Anext(a, b) * next_;
+      if (coupled && Anext(b, a) != 0) block += Anext(b, a) * next_.transpose();
+    }
+  return L;
+}
+
+Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
+  // Z = L(K) + omega L(C) D + omega^2 L(M) D^2, D the per-DOF derivative in
+  // coefficient space (it commutes with the next-sector rotation). Per harmonic
+  // h on (cos, sin): [K - (h w)^2 M,  h w C; -h w C,  K - (h w)^2 M] for a lone sector.
+  const int n = numDofs(), nc = numCoefficients();
+  const Eigen::MatrixXd D = omega * aft_->derivativeMatrix(), D2 = D * D;
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(nc, nc);
+  const Eigen::MatrixXd S = next_, ST = next_.transpose();
+  const Eigen::MatrixXd SD = S * D, STD = ST * D, SD2 = S * D2, STD2 = ST * D2;
   Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n * nc, n * nc);
-  for (int h : aft_->harmonics().harmonics()) {
-    const double hw = h * omega;
-    const Eigen::MatrixXd D = K_ - hw * hw * M_;
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b) {
-        if (h == 0) {
-          const int i = aft_->harmonics().cosIndex(0);
-          Z(a * nc + i, b * nc + i) = K_(a, b);
-          continue;
-        }
-        const int ic = aft_->harmonics().cosIndex(h), is = aft_->harmonics().sinIndex(h);
-        Z(a * nc + ic, b * nc + ic) = D(a, b);
-        Z(a * nc + is, b * nc + is) = D(a, b);
-        Z(a * nc + ic, b * nc + is) = hw * C_(a, b);
-        Z(a * nc + is, b * nc + ic) = -hw * C_(a, b);
-      }
-  }
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, n);
+  const auto& Kn = isCyclic() ? cyclic_.Knext : zero;
+  const auto& Cn = isCyclic() ? cyclic_.Cnext : zero;
+  const auto& Mn = isCyclic() ? cyclic_.Mnext : zero;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      auto block = Z.block(a * nc, b * nc, nc, nc);
+      if (K_(a, b) != 0) block += K_(a, b) * I;
+      if (C_(a, b) != 0) block += C_(a, b) * D;
+      if (M_(a, b) != 0) block += M_(a, b) * D2;
+      if (!isCyclic()) continue;
+      if (Kn(a, b) != 0) block += Kn(a, b) * S;
+      if (Kn(b, a) != 0) block += Kn(b, a) * ST;
+      if (Cn(a, b) != 0) block += Cn(a, b) * SD;
+      if (Cn(b, a) != 0) block += Cn(b, a) * STD;
+      if (Mn(a, b) != 0) block += Mn(a, b) * SD2;
+      if (Mn(b, a) != 0) block += Mn(b, a) * STD2;
+    }
   return Z;
 }
 
@@ -67,26 +168,55 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
   const Eigen::MatrixXd Z = linearOperator(omega);
-  R = Z * X - excitationScale * excitation_;
+  R = Z * X - excitationScale * excitation_ - static_;
   if (jacobian) *jacobian = Z;
-  Eigen::MatrixXd Jw;
+  const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, n);  // column a: coefficients of DOF a
+  Eigen::Map<Eigen::MatrixXd> Rm(R.data(), nc, n);
+  const Eigen::MatrixXd& S = next_;
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(nc, nc);
+  Eigen::MatrixXd F, Jf;
   for (const auto& c : elements_) {
-    Eigen::VectorXd w = Eigen::VectorXd::Zero(nc);
+    const int d = c.element->dimension();
+    const bool across = c.Wnext.size() != 0;
+    Eigen::MatrixXd Wc = Xm * c.W;
+    if (across) Wc.noalias() += S * (Xm * c.Wnext);
+    c.element->harmonicForce(*aft_, Wc, omega, F, jacobian ? &Jf : nullptr);
+    Rm.noalias() += F * c.W.transpose();
+    if (across) Rm.noalias() += S.transpose() * (F * c.Wnext.transpose());
+    if (!jacobian) continue;
+    // dR_a/dX_b = B_a Jf A_b with A_b = [W(b,c) I + Wnext(b,c) S]_c stacked and
+    // B_a = [W(a,c) I + Wnext(a,c) S^T]_c side by side.
+    std::vector<int> support;
     for (int a = 0; a < n; ++a)
-      if (c.direction(a) != 0) w += c.direction(a) * X.segment(a * nc, nc);
-    const Eigen::VectorXd F = harmonicForce(*c.element, *aft_, w, jacobian ? &Jw : nullptr, omega);
-    for (int a = 0; a < n; ++a) {
-      if (c.direction(a) == 0) continue;
-      R.segment(a * nc, nc) += c.direction(a) * F;
-      if (jacobian)
-        for (int b = 0; b < n; ++b)
-          if (c.direction(b) != 0) jacobian->block(a * nc, b * nc, nc, nc) += c.direction(a) * c.direction(b) * Jw;
+      if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) support.push_back(a);
+    Eigen::MatrixXd A(nc * d, nc), JA, B(nc, nc * d);
+    for (int b : support) {
+      for (int k = 0; k < d; ++k) {
+        A.middleRows(k * nc, nc) = c.W(b, k) * I;
+        if (across) A.middleRows(k * nc, nc) += c.Wnext(b, k) * S;
+      }
+      JA.noalias() = Jf * A;
+      for (int a : support) {
+        for (int k = 0; k < d; ++k) {
+          B.middleCols(k * nc, nc) = c.W(a, k) * I;
+          if (across) B.middleCols(k * nc, nc) += c.Wnext(a, k) * S.transpose();
+        }
+        jacobian->block(a * nc, b * nc, nc, nc).noalias() += B * JA;
+      }
     }
   }
 }
 
-Eigen::VectorXd HarmonicBalanceSystem::linearSolution(double omega) const {
-  return linearOperator(omega).partialPivLu().solve(excitation_);
+Eigen::VectorXd HarmonicBalanceSystem::linearSolution(double omega, double excitationScale) const {
+  return linearOperator(omega).partialPivLu().solve(Eigen::VectorXd(excitationScale * excitation_ + static_));
+}
+
+Eigen::VectorXd HarmonicBalanceSystem::linearizedSolution(double omega, double excitationScale) const {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(numUnknowns());
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  residual(zero, omega, R, &J, excitationScale);
+  return J.partialPivLu().solve(Eigen::VectorXd(-R));
 }
 
 double HarmonicBalanceSystem::amplitude(const Eigen::VectorXd& X, int dof, int harmonic) const {

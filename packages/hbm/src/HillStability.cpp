@@ -16,16 +16,17 @@ FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::Ve
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   sys.residual(X, omega, R, &J);
-  const Eigen::MatrixXd wD = omega * sys.aft().derivativeMatrix();
-  Eigen::MatrixXd D2 = Eigen::MatrixXd::Zero(m, m), D1 = Eigen::MatrixXd::Zero(m, m);
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      D2.block(a * nc, b * nc, nc, nc) = sys.M()(a, b) * Eigen::MatrixXd::Identity(nc, nc);
-      D1.block(a * nc, b * nc, nc, nc) = 2 * sys.M()(a, b) * wD + sys.C()(a, b) * Eigen::MatrixXd::Identity(nc, nc);
-    }
+  // Per-DOF blocks of the time derivative; for a cyclic system the sector
+  // matrices act through the next-sector coupling (perturbations of the same
+  // travelling-wave form as the solution).
+  Eigen::MatrixXd wD = Eigen::MatrixXd::Zero(m, m);
+  for (int a = 0; a < n; ++a) wD.block(a * nc, a * nc, nc, nc) = omega * sys.aft().derivativeMatrix();
+  const auto& cyc = sys.cyclic();
+  const Eigen::MatrixXd D2 = sys.coefficientOperator(sys.M(), cyc.Mnext);
+  const Eigen::MatrixXd D1 = 2 * D2 * wD + sys.coefficientOperator(sys.C(), cyc.Cnext);
   // Companion form: [0 I; -D2^-1 J, -D2^-1 D1].
   const auto lu = D2.partialPivLu();
-  if (std::abs(lu.determinant()) == 0) throw InputError("stability", "Hill's method needs an invertible mass matrix");
+  if (!(lu.rcond() > 1e-14)) throw InputError("stability", "Hill's method needs an invertible mass matrix");
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * m, 2 * m);
   A.block(0, m, m, m).setIdentity();
   A.block(m, 0, m, m) = -lu.solve(J);

@@ -8,6 +8,8 @@ namespace cyclone::hbm {
 
 SteadyState integrateToSteadyState(const HarmonicBalanceSystem& sys, double omega, const Eigen::VectorXd& X0,
                                    const TimeIntegrationOptions& o) {
+  if (sys.isCyclic())
+    throw InputError("time integration", "integrates a lone system; expand a cyclic sector to its full ring first");
   const int n = sys.numDofs(), nc = sys.numCoefficients();
   const auto& H = sys.aft().harmonics();
   const int N = o.stepsPerPeriod;
@@ -28,28 +30,32 @@ SteadyState integrateToSteadyState(const HarmonicBalanceSystem& sys, double omeg
       }
     return v;
   };
+  const Eigen::VectorXd load = o.excitationScale * sys.excitation() + sys.staticLoad();
   const auto& elements = sys.elements();
-  std::vector<double> state(elements.size(), 0.0), trialState(elements.size(), 0.0);
+  std::vector<Eigen::VectorXd> state, trialState;
+  for (const auto& c : elements) state.push_back(c.element->initialState());
+  trialState = state;
   Eigen::VectorXd x = evaluate(X0, 0, false), v = evaluate(X0, 0, true);
 
   // Consistent initial acceleration and the internal force with tangents.
-  auto internal = [&](const Eigen::VectorXd& xx, const Eigen::VectorXd& vv, std::vector<double>& st,
+  auto internal = [&](const Eigen::VectorXd& xx, const Eigen::VectorXd& vv, std::vector<Eigen::VectorXd>& st,
                       Eigen::MatrixXd* Kt, Eigen::MatrixXd* Ct) {
     Eigen::VectorXd f = sys.K() * xx + sys.C() * vv;
     if (Kt) *Kt = sys.K(), *Ct = sys.C();
+    Eigen::MatrixXd dfdw, dfdv;
     for (std::size_t e = 0; e < elements.size(); ++e) {
-      const auto& d = elements[e].direction;
-      double dfdw, dfdv;
-      const double fe = elements[e].element->incremental(d.dot(xx), d.dot(vv), st[e], dfdw, dfdv);
-      f += fe * d;
-      if (Kt) *Kt += dfdw * d * d.transpose(), *Ct += dfdv * d * d.transpose();
+      const auto& W = elements[e].W;
+      const Eigen::VectorXd fe =
+          elements[e].element->incremental(W.transpose() * xx, W.transpose() * vv, st[e], dfdw, dfdv);
+      f += W * fe;
+      if (Kt) *Kt += W * dfdw * W.transpose(), *Ct += W * dfdv * W.transpose();
     }
     return f;
   };
   const auto Mlu = sys.M().partialPivLu();
   {
     auto s0 = state;
-    Eigen::VectorXd a0 = Mlu.solve(evaluate(sys.excitation(), 0, false) - internal(x, v, s0, nullptr, nullptr));
+    Eigen::VectorXd a0 = Mlu.solve(evaluate(load, 0, false) - internal(x, v, s0, nullptr, nullptr));
     x = x;  // (state from X0; the elements start relaxed)
     SteadyState out;
     Eigen::VectorXd a = a0;
@@ -58,7 +64,7 @@ SteadyState integrateToSteadyState(const HarmonicBalanceSystem& sys, double omeg
     for (int period = 0; period < o.maxPeriods; ++period) {
       for (int k = 0; k < N; ++k) {
         const double tn = t + dt;
-        const Eigen::VectorXd fext = evaluate(sys.excitation(), tn, false);
+        const Eigen::VectorXd fext = evaluate(load, tn, false);
         Eigen::VectorXd an = a;  // Newton on the new acceleration
         for (int it = 0;; ++it) {
           const Eigen::VectorXd xn = x + dt * v + dt * dt * ((0.5 - beta) * a + beta * an);

@@ -51,10 +51,17 @@ SparseMatrix lowerTriangleOnRoot(const linalg::Matrix& A, const Teuchos::RCP<con
 
 }  // namespace
 
+// CHOLMOD's own estimate (min/max diagonal of L, squared): a singular matrix
+// can factor "successfully" with round-off pivots (e.g. a free body whose
+// rigid-body pivots come out 1e-16 positive), which the estimate exposes.
+struct CholmodWithConditionEstimate : Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+  double rcond() { return m_cholmodFactor ? cholmod_rcond(m_cholmodFactor, &cholmod()) : 0.0; }
+};
+
 struct DirectSolver::Impl {
   Teuchos::RCP<const linalg::Map> rowMap, rootMap;
   Teuchos::RCP<const Tpetra::Export<>> exporter;  // null on one rank
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  CholmodWithConditionEstimate cholmod;
   Statistics stats;
   bool root = true;
 };
@@ -83,7 +90,7 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
     I.cholmod.cholmod().supernodal = CHOLMOD_SUPERNODAL;
     I.cholmod.cholmod().print = 0;  // failures are reported by SolverError, not on stderr
     I.cholmod.compute(S);
-    ok = I.cholmod.info() == Eigen::Success;
+    ok = I.cholmod.info() == Eigen::Success && I.cholmod.rcond() > 1e-24;
     I.stats.nonzerosFactor = I.cholmod.cholmod().lnz;
     I.stats.flops = I.cholmod.cholmod().fl;
   }

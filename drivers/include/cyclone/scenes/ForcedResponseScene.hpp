@@ -19,6 +19,7 @@ struct ForcedResponseSetup {
   /// scale s (f = s f_ex) at the fixed frequency `omega`.
   enum class Parameter { Omega, ForceScale } parameter = Parameter::Omega;
   double omega = 0;  ///< ForceScale: the fixed excitation frequency
+  double excitationScale = 1;  ///< Omega: the scale s of f = s f_ex (excitation: scale); static loads stay
   continuation::ContinuationOptions continuation;
   std::vector<int> outputDofs;
 };
@@ -26,7 +27,8 @@ struct ForcedResponseSetup {
 /// The continuation problem of a harmonic balance system in the chosen parameter:
 /// the frequency, or the excitation scale at the fixed frequency `omega`.
 continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& system,
-                                                      ForcedResponseSetup::Parameter parameter, double omega = 0);
+                                                      ForcedResponseSetup::Parameter parameter, double omega = 0,
+                                                      double excitationScale = 1.0);
 
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);

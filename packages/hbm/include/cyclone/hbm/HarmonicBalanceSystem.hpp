@@ -1,58 +1,113 @@
 #pragma once
-// The harmonic balance equations of a linear system with scalar nonlinear
-// elements: M x'' + C x' + K x + sum_e d_e f_e(d_e^T x, d_e^T x') = f_ex(t),
+// The harmonic balance equations of a linear system with nonlinear elements:
+//   M x'' + C x' + K x + sum_e [W_e f_e(w_e) + ...] = f_ex(t),  w_e = W_e^T x (+ W_next,e^T x_next),
 // x periodic, unknowns the real Fourier coefficients of every DOF
 // (X[dof * nc + coefficient], coefficient order of the HarmonicSet). The linear
 // part is block diagonal per harmonic; the elements go through the AFT.
+//
+// Cyclic systems: one sector of a ring of N identical sectors, coupled to its
+// neighbours by M_next, C_next, K_next (sector j's equation holds
+// A x_j + A_next x_{j+1} + A_next^T x_{j-1}), under a travelling-wave
+// excitation of engine order EO: sector j+1 moves like sector j delayed by
+// 2 pi EO / N, so harmonic h of every sector is harmonic h of sector 0 rotated
+// by h 2 pi EO / N (it lives on nodal diameter h EO mod N; Petrov 2004, seed
+// eqs. 7.9-7.15). Only sector 0 is solved; an element joining sector j to
+// j+1 (W_next) is evaluated exactly, and its reaction on sector j+1 comes back
+// to sector 0 from the element joining sector N-1 to 0.
 #include <memory>
 #include <vector>
 
 #include "cyclone/hbm/Aft.hpp"
+#include "cyclone/hbm/NonlinearElement.hpp"
 #include "cyclone/hbm/ScalarElement.hpp"
 
 namespace cyclone::hbm {
+
+/// Coupling of a sector to its neighbours in a ring of identical sectors.
+struct CyclicCoupling {
+  int sectors = 1;      ///< N >= 2 for a cyclic system
+  int engineOrder = 0;  ///< EO of the travelling-wave excitation (any integer; folded mod N)
+  Eigen::MatrixXd Mnext, Cnext, Knext;  ///< coupling to sector j+1 (empty = zero)
+};
 
 class HarmonicBalanceSystem {
 public:
   HarmonicBalanceSystem(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, HarmonicSet harmonics, int samples);
 
-  /// An element acting on w = direction^T x (e.g. a unit vector for DOF-to-ground,
-  /// e_i - e_j between two DOFs); its force goes back through the direction.
+  /// Makes the system one sector of a ring (see the file comment). Call before
+  /// adding elements that use W_next.
+  void setCyclic(CyclicCoupling coupling);
+  bool isCyclic() const { return cyclic_.sectors > 1; }
+  const CyclicCoupling& cyclic() const { return cyclic_; }
+  /// Nodal diameter of harmonic h: h EO mod N folded to 0..N/2 (0 when not cyclic).
+  int nodalDiameter(int harmonic) const;
+  /// Coefficients of sector j+1 from those of sector j, per DOF (nc x nc):
+  /// the rotation of each harmonic h by -h 2 pi EO / N (identity when not cyclic).
+  const Eigen::MatrixXd& nextSectorMap() const { return next_; }
+
+  /// An element acting on w = W^T x (+ Wnext^T x_next): W (and Wnext) are
+  /// numDofs x element.dimension(); Wnext is for elements joining this sector
+  /// to the next one of a cyclic system. Forces go back through the transposes.
+  void addElement(std::shared_ptr<const NonlinearElement> element, Eigen::MatrixXd W,
+                  Eigen::MatrixXd Wnext = Eigen::MatrixXd());
+  /// A scalar element on w = direction^T x (e.g. a unit vector for DOF-to-ground,
+  /// e_i - e_j between two DOFs).
   void addElement(std::shared_ptr<const ScalarElement> element, Eigen::VectorXd direction);
-  /// Harmonic excitation on one DOF: f = cosAmplitude cos(h w t) + sinAmplitude sin(h w t).
+  /// Harmonic excitation on one DOF: f = cosAmplitude cos(h w t) + sinAmplitude sin(h w t)
+  /// (on sector 0 of a cyclic system; sector j gets it delayed by j 2 pi EO / N).
   void addExcitation(int dof, int harmonic, double cosAmplitude, double sinAmplitude = 0);
+  /// A constant force on one DOF that the excitation scale does not multiply (a
+  /// static preload pressing a contact shut); needs harmonic 0 in the set.
+  void addStaticLoad(int dof, double value);
+  /// The same in coefficient form (layout of X): added to excitation() and staticLoad().
+  void addExcitationCoefficients(const Eigen::VectorXd& F);
+  void addStaticLoadCoefficients(const Eigen::VectorXd& L);
 
   int numDofs() const { return int(K_.rows()); }
   int numCoefficients() const { return aft_->numCoefficients(); }
   int numUnknowns() const { return numDofs() * numCoefficients(); }
   const Aft& aft() const { return *aft_; }
 
-  /// R(X; omega) = Z(omega) X + F_nl(X) - s F_ex (s: excitation scale, a continuation
+  /// R(X; omega) = Z(omega) X + F_nl(X) - s F_ex - F_static (s: excitation scale, a continuation
   /// parameter for force-level studies), and optionally dR/dX.
   void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian,
                 double excitationScale = 1.0) const;
-  /// The solution without the nonlinear elements: a start for continuation.
-  Eigen::VectorXd linearSolution(double omega) const;
+  /// The solution without the nonlinear elements.
+  Eigen::VectorXd linearSolution(double omega, double excitationScale = 1.0) const;
+  /// The response of the system linearised about rest (X = 0), i.e. one Newton
+  /// step from zero: stuck friction contacts and closed preloaded gaps keep their
+  /// stiffness. The start for continuation (the linear solution without the
+  /// elements can be far from a stuck contact's response).
+  Eigen::VectorXd linearizedSolution(double omega, double excitationScale = 1.0) const;
+  /// The dynamic stiffness Z(omega) of the linear part (numUnknowns square).
+  Eigen::MatrixXd linearOperator(double omega) const;
+  /// A (x) I + A_next (x) S + A_next^T (x) S^T in coefficient space, S the next-sector
+  /// map: how a sector matrix acts on the coefficients of a cyclic solution.
+  Eigen::MatrixXd coefficientOperator(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext) const;
+
   const Eigen::MatrixXd& M() const { return M_; }
   const Eigen::MatrixXd& C() const { return C_; }
   const Eigen::MatrixXd& K() const { return K_; }
   struct Connection {
-    std::shared_ptr<const ScalarElement> element;
-    Eigen::VectorXd direction;
+    std::shared_ptr<const NonlinearElement> element;
+    Eigen::MatrixXd W, Wnext;  ///< Wnext empty unless the element joins to the next sector
   };
   const std::vector<Connection>& elements() const { return elements_; }
-  /// The excitation in coefficient form (same layout as X).
+  /// The (scaled) excitation in coefficient form (same layout as X).
   const Eigen::VectorXd& excitation() const { return excitation_; }
+  /// The static loads in coefficient form (same layout as X).
+  const Eigen::VectorXd& staticLoad() const { return static_; }
 
   /// Amplitude sqrt(c_h^2 + s_h^2) of harmonic h >= 1 of a DOF.
   double amplitude(const Eigen::VectorXd& X, int dof, int harmonic) const;
 
 private:
-  Eigen::MatrixXd linearOperator(double omega) const;
   Eigen::MatrixXd M_, C_, K_;
   std::unique_ptr<Aft> aft_;
+  CyclicCoupling cyclic_;
+  Eigen::MatrixXd next_;
   std::vector<Connection> elements_;
-  Eigen::VectorXd excitation_;
+  Eigen::VectorXd excitation_, static_;
 };
 
 }  // namespace cyclone::hbm

@@ -13,6 +13,7 @@ struct TimeIntegrationOptions {
   double periodTolerance = 1e-9;  ///< max |x(t) - x(t - T)| / max |x| over a period
   double newtonTolerance = 1e-12;
   int maxNewtonIterations = 30;
+  double excitationScale = 1.0;  ///< multiplies the excitation (not the static loads), as in residual()
 };
 
 struct SteadyState {

@@ -1,0 +1,19 @@
+#pragma once
+// Newton's method with backtracking on ||F|| for F(x; p) = 0 at a fixed
+// parameter: the start of a continuation, a solution at one frequency, or a
+// solution carried to a refined harmonic set.
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+
+namespace cyclone::continuation {
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;
+  double residualNorm = 0;
+};
+
+/// Updates x in place. Throwing residuals count as failure (converged = false).
+NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance = 1e-10,
+                         int maxIterations = 200);
+
+}  // namespace cyclone::continuation

@@ -1,0 +1,35 @@
+#include "cyclone/continuation/NewtonSolve.hpp"
+
+#include <Eigen/LU>
+
+namespace cyclone::continuation {
+
+NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance,
+                         int maxIterations) {
+  NewtonResult r;
+  Eigen::VectorXd F, Ft;
+  Eigen::MatrixXd J;
+  try {
+    problem.residual(x, p, F);
+    for (; r.iterations < maxIterations; ++r.iterations) {
+      if (F.norm() <= tolerance) break;
+      problem.jacobian(x, p, J);
+      const Eigen::VectorXd dx = J.fullPivLu().solve(-F);
+      double step = 1.0;
+      for (int k = 0; k < 40; ++k, step *= 0.5) {  // backtracking: accept the first decrease
+        problem.residual(x + step * dx, p, Ft);
+        if (Ft.allFinite() && Ft.norm() < (1 - 1e-4 * step) * F.norm()) break;
+      }
+      x += step * dx;
+      problem.residual(x, p, F);
+    }
+  } catch (...) {
+    r.residualNorm = F.size() ? F.norm() : 0.0;
+    return r;
+  }
+  r.residualNorm = F.norm();
+  r.converged = r.residualNorm <= tolerance;
+  return r;
+}
+
+}  // namespace cyclone::continuation

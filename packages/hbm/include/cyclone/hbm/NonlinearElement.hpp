@@ -1,0 +1,47 @@
+#pragma once
+// A nonlinear element acting on d relative coordinates w (d = 1 for springs and
+// 1D friction, 2 for friction with normal load variation, 3 for friction with
+// two tangential directions). The harmonic balance needs only its AFT map
+// W -> F between coefficient matrices and the exact Jacobian; the time
+// integrator needs the same law one step at a time. Elements with memory
+// (friction) compute the Jacobian by carrying the state's sensitivity to the
+// coefficients along the time march, which is far cheaper than forming the
+// (N d) x (N d) time-domain Jacobian.
+#include <Eigen/Dense>
+
+#include "cyclone/hbm/Aft.hpp"
+
+namespace cyclone::hbm {
+
+class NonlinearElement {
+public:
+  virtual ~NonlinearElement() = default;
+
+  /// Number of relative coordinates d the element acts on.
+  virtual int dimension() const = 0;
+  /// Whether the force depends on the relative velocity.
+  virtual bool usesVelocity() const { return false; }
+  /// Time samples per period this element needs to resolve its nonsmooth
+  /// events (stick/slip, lift-off); 0 if any AFT size will do.
+  virtual int recommendedSamples() const { return 0; }
+
+  /// Force coefficients F (nc x d) from relative displacement coefficients
+  /// W (nc x d), column c = coordinate c in the Aft's HarmonicSet layout. If
+  /// jacobian is given it is set to dvec(F)/dvec(W) ((nc d) x (nc d), index
+  /// c * nc + k). omega is the fundamental angular frequency (d/dt = omega d/dtau).
+  virtual void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
+                             Eigen::MatrixXd* jacobian) const = 0;
+
+  /// Size of the internal state carried from step to step by `incremental`.
+  virtual int stateSize() const { return 0; }
+  /// The state the element starts from (the relaxed element): zeros by default.
+  virtual Eigen::VectorXd initialState() const { return Eigen::VectorXd::Zero(stateSize()); }
+  /// The same law one time step at a time (for the time-integration check):
+  /// force (d) at (w, wdot) given the state of the last converged step;
+  /// `state` is updated in place for this trial (the caller keeps the committed
+  /// copy). dfdw and dfdwdot are set to d x d.
+  virtual Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
+                                      Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const = 0;
+};
+
+}  // namespace cyclone::hbm

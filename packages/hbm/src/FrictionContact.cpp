@@ -1,0 +1,139 @@
+#include "cyclone/hbm/FrictionContact.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::hbm {
+
+FrictionContact::FrictionContact(const FrictionContactParameters& p) : p_(p) {
+  auto bad = [](const std::string& what) { throw InputError("friction contact", what); };
+  if (p.tangentialDirections != 1 && p.tangentialDirections != 2)
+    bad("tangential directions must be 1 (2D contact) or 2 (3D contact), got " + std::to_string(p.tangentialDirections));
+  if (!(std::isfinite(p.kt) && p.kt > 0)) bad("kt must be positive, got " + std::to_string(p.kt));
+  if (!(std::isfinite(p.kn) && p.kn >= 0)) bad("kn must be >= 0, got " + std::to_string(p.kn));
+  if (!(std::isfinite(p.mu) && p.mu >= 0)) bad("mu must be >= 0, got " + std::to_string(p.mu));
+  if (!std::isfinite(p.preload)) bad("preload must be finite");
+  if (p.kn == 0 && !(p.preload > 0))
+    bad("with kn = 0 the normal load is the constant preload, which must then be positive (got " +
+        std::to_string(p.preload) + ")");
+}
+
+namespace {
+
+// One step of the contact law (return mapping). Inputs: tangential w_t, normal
+// approach n, slider z (updated). Outputs the force [f_t, f_n] and, if asked,
+// its sensitivities: with dwt (dt x m), dn (1 x m) and dz (dt x m) the
+// sensitivities of the inputs to m parameters, df (d x m) and the updated dz.
+struct StepSensitivity {
+  const Eigen::MatrixXd* dwt;
+  const Eigen::RowVectorXd* dn;
+  Eigen::MatrixXd* dz;
+  Eigen::MatrixXd* df;
+};
+
+void contactStep(const FrictionContactParameters& p, const Eigen::VectorXd& wt, double n, Eigen::VectorXd& z,
+                 Eigen::VectorXd& f, StepSensitivity* s) {
+  const int dt = p.tangentialDirections;
+  const double normal = p.preload + p.kn * n;
+  f.setZero(dt + 1);
+  if (s) s->df->setZero();
+  if (normal <= 0) {  // open: no force, the slider follows the surface
+    z = wt;
+    if (s) *s->dz = *s->dwt;
+    return;
+  }
+  f(dt) = normal;
+  if (s) s->df->row(dt) = p.kn * *s->dn;
+  if (p.mu == 0) {  // frictionless: the tangential spring never holds
+    z = wt;
+    if (s) *s->dz = *s->dwt;
+    return;
+  }
+  const Eigen::VectorXd trial = p.kt * (wt - z);
+  const double t = trial.norm(), limit = p.mu * normal;
+  if (t <= limit) {  // stick
+    f.head(dt) = trial;
+    if (s) s->df->topRows(dt) = p.kt * (*s->dwt - *s->dz);
+    return;
+  }
+  const Eigen::VectorXd u = trial / t;  // slip along the trial force (circular limit)
+  f.head(dt) = limit * u;
+  if (s) {
+    const Eigen::MatrixXd dTrial = p.kt * (*s->dwt - *s->dz);
+    const Eigen::MatrixXd proj = Eigen::MatrixXd::Identity(dt, dt) - u * u.transpose();
+    s->df->topRows(dt) = (p.mu * u) * (p.kn * *s->dn) + (limit / t) * (proj * dTrial);
+  }
+  z = wt - f.head(dt) / p.kt;
+  if (s) *s->dz = *s->dwt - s->df->topRows(dt) / p.kt;
+}
+
+}  // namespace
+
+void FrictionContact::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double, Eigen::MatrixXd& F,
+                                    Eigen::MatrixXd* jacobian) const {
+  const int N = aft.numSamples(), nc = aft.numCoefficients(), d = dimension(), dt = p_.tangentialDirections;
+  if (W.rows() != nc || W.cols() != d)
+    throw InputError("friction contact", "expected " + std::to_string(nc) + " x " + std::to_string(d) +
+                                             " coefficients, got " + std::to_string(W.rows()) + " x " +
+                                             std::to_string(W.cols()));
+  Eigen::MatrixXd w(N, d), f(N, d);
+  for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
+  const Eigen::MatrixXd& E = aft.timeFromCoefficients();
+  const Eigen::MatrixXd& P = aft.coefficientsFromTime();
+  const int m = nc * d;  // sensitivities with respect to vec(W)
+  Eigen::MatrixXd dwt, dz, df;
+  Eigen::RowVectorXd dn;
+  StepSensitivity sens{&dwt, &dn, &dz, &df};
+  if (jacobian) {
+    dwt.setZero(dt, m), dz.setZero(dt, m), df.setZero(d, m), dn.setZero(m);
+    jacobian->setZero(m, m);
+  }
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(dt), fi(d), wt(dt);
+  double scale = p_.mu * std::abs(p_.preload) / p_.kt;
+  for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
+  auto march = [&](bool record) {
+    for (int i = 0; i < N; ++i) {
+      wt = w.row(i).head(dt).transpose();
+      if (jacobian) {
+        for (int c = 0; c < dt; ++c) dwt.block(c, c * nc, 1, nc) = E.row(i);
+        dn.segment(dt * nc, nc) = E.row(i);
+      }
+      contactStep(p_, wt, w(i, dt), z, fi, jacobian ? &sens : nullptr);
+      if (!record) continue;
+      f.row(i) = fi.transpose();
+      if (jacobian)
+        for (int c = 0; c < d; ++c) jacobian->middleRows(c * nc, nc).noalias() += P.col(i) * df.row(c);
+    }
+  };
+  // Settle the hysteresis loop: repeat periods until the slider's state at the
+  // period's end repeats (one or two suffice for 1D slip; circular slip in 3D
+  // converges geometrically), then record one period.
+  const int maxPeriods = 200;
+  for (int period = 0; period < maxPeriods; ++period) {
+    const Eigen::VectorXd start = z;
+    march(false);
+    if ((z - start).norm() <= 1e-14 * std::max(scale, 1e-300)) break;
+  }
+  march(true);
+  F.resize(nc, d);
+  for (int c = 0; c < d; ++c) aft.toFrequency(f.col(c).data(), F.col(c).data());
+}
+
+Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,
+                                             Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const {
+  const int d = dimension(), dt = p_.tangentialDirections;
+  Eigen::MatrixXd dwt = Eigen::MatrixXd::Zero(dt, d), dz = Eigen::MatrixXd::Zero(dt, d), df(d, d);
+  dwt.leftCols(dt).setIdentity();
+  Eigen::RowVectorXd dn = Eigen::RowVectorXd::Zero(d);
+  dn(dt) = 1;
+  StepSensitivity sens{&dwt, &dn, &dz, &df};  // dz = 0: the committed state is fixed within the step
+  Eigen::VectorXd f;
+  contactStep(p_, w.head(dt), w(dt), state, f, &sens);
+  dfdw = df;
+  dfdwdot = Eigen::MatrixXd::Zero(d, d);
+  return f;
+}
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,28 @@
+#include "cyclone/hbm/ScalarElementAdapter.hpp"
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/HarmonicForce.hpp"
+
+namespace cyclone::hbm {
+
+ScalarElementAdapter::ScalarElementAdapter(std::shared_ptr<const ScalarElement> element) : element_(std::move(element)) {
+  if (!element_) throw InputError("nonlinear element", "no element given");
+}
+
+void ScalarElementAdapter::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
+                                         Eigen::MatrixXd* jacobian) const {
+  F = hbm::harmonicForce(*element_, aft, Eigen::VectorXd(W.col(0)), jacobian, omega);
+}
+
+Eigen::VectorXd ScalarElementAdapter::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot,
+                                                  Eigen::VectorXd& state, Eigen::MatrixXd& dfdw,
+                                                  Eigen::MatrixXd& dfdwdot) const {
+  double dw = 0, dv = 0;
+  Eigen::VectorXd f(1);
+  f(0) = element_->incremental(w(0), wdot.size() ? wdot(0) : 0.0, state(0), dw, dv);
+  dfdw = Eigen::MatrixXd::Constant(1, 1, dw);
+  dfdwdot = Eigen::MatrixXd::Constant(1, 1, dv);
+  return f;
+}
+
+}  // namespace cyclone::hbm

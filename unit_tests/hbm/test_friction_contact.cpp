@@ -1,0 +1,208 @@
+// Friction contact with normal load variation (2D) and a circular friction
+// limit (3D): its describing functions against closed forms and against the
+// 1D elements it must reduce to, its coefficient Jacobian against finite
+// differences, and its one-step law against its periodic march.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/HarmonicForce.hpp"
+#include "cyclone/hbm/JenkinsElement.hpp"
+#include "cyclone/hbm/UnilateralSpring.hpp"
+
+using namespace cyclone;
+using namespace cyclone::hbm;
+
+namespace {
+
+FrictionContactParameters params(int dirs, double kt, double kn, double mu, double n0) {
+  FrictionContactParameters p;
+  p.tangentialDirections = dirs, p.kt = kt, p.kn = kn, p.mu = mu, p.preload = n0;
+  return p;
+}
+
+Eigen::MatrixXd force(const NonlinearElement& e, const Aft& aft, const Eigen::MatrixXd& W,
+                      Eigen::MatrixXd* J = nullptr) {
+  Eigen::MatrixXd F;
+  e.harmonicForce(aft, W, 1.0, F, J);
+  return F;
+}
+
+}  // namespace
+
+// Constant normal load (kn = 0): the tangential part is the Jenkins element;
+// its describing function under u = U cos t (k = 2, slip force 3, U = 5) is
+// known in closed form: 2.523158 cos, -2.673803 sin.
+TEST(FrictionContact, ConstantNormalLoadIsJenkins) {
+  const FrictionContact contact(params(1, 2.0, 0.0, 0.5, 6.0));
+  const JenkinsElement jenkins(2.0, 3.0);
+  for (int samples : {256, 4096}) {
+    const Aft aft(HarmonicSet::upTo(5), samples);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 2);
+    W(aft.harmonics().cosIndex(1), 0) = 5.0;
+    W(aft.harmonics().cosIndex(3), 0) = 0.7;  // a multi-harmonic motion for the cross-check
+    W(aft.harmonics().cosIndex(0), 1) = 0.3;  // normal motion does nothing when kn = 0
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    const Eigen::VectorXd Fj = harmonicForce(jenkins, aft, Eigen::VectorXd(W.col(0)));
+    EXPECT_LT((F.col(0) - Fj).norm(), 1e-12 * Fj.norm()) << samples;
+    EXPECT_NEAR(F(aft.harmonics().cosIndex(0), 1), 6.0, 1e-12);
+  }
+  const Aft aft(HarmonicSet::upTo(1), 1 << 16);
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 2);
+  W(1, 0) = 5.0;
+  const Eigen::MatrixXd F = force(contact, aft, W);
+  EXPECT_NEAR(F(1, 0), 2.523158, 2e-5);
+  EXPECT_NEAR(F(2, 0), -2.673803, 2e-5);
+}
+
+// The normal force is the unilateral spring max(N0 + kn n, 0) = kn max(n + N0/kn, 0):
+// the same describing function as UnilateralSpring(kn, gap = -N0/kn), whose
+// closed forms are tested elsewhere, also with separation.
+TEST(FrictionContact, NormalForceIsTheUnilateralSpring) {
+  const Aft aft(HarmonicSet::upTo(7), 512);
+  for (double n0 : {5.0, -2.0}) {  // preload, then a clearance of 2/kn
+    const FrictionContact contact(params(2, 3.0, 4.0, 0.3, n0));
+    const UnilateralSpring spring(4.0, -n0 / 4.0);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 3);
+    W(aft.harmonics().cosIndex(1), 2) = 3.0;  // opens and closes every period
+    W(aft.harmonics().sinIndex(2), 2) = 0.4;
+    W(aft.harmonics().cosIndex(1), 0) = 1.0;
+    W(aft.harmonics().sinIndex(1), 1) = 0.5;
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    const Eigen::VectorXd Fs = harmonicForce(spring, aft, Eigen::VectorXd(W.col(2)));
+    EXPECT_LT((F.col(2) - Fs).norm(), 1e-12 * Fs.norm()) << n0;
+  }
+}
+
+// Circular relative motion w_t = U (cos t, sin t) under constant N: after the
+// first slip the slider lags on a circle and the friction force has constant
+// magnitude mu N, leading the motion by beta with cos(beta) = (mu N / kt) / U.
+// Its first harmonic is mu N [cos(t + beta), sin(t + beta)]. Two independent 1D
+// sliders (a square friction limit) give a different, wrong force. The
+// discrete march converges to the closed form at first order in 1/N.
+TEST(FrictionContact, CircularSlipMatchesClosedForm) {
+  const double kt = 10.0, mu = 0.4, N0 = 5.0, U = 0.5;
+  const FrictionContact contact(params(2, kt, 0.0, mu, N0));
+  const double beta = std::acos(mu * N0 / kt / U);
+  const Eigen::Vector4d exact(mu * N0 * std::cos(beta), -mu * N0 * std::sin(beta), mu * N0 * std::sin(beta),
+                              mu * N0 * std::cos(beta));
+  double previous = 0;
+  std::printf("circular slip: N, relative error of the first harmonic, time\n");
+  for (int samples : {256, 1024, 4096, 16384}) {
+    Timer t;
+    const Aft aft(HarmonicSet::upTo(3), samples);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 3);
+    W(aft.harmonics().cosIndex(1), 0) = U;
+    W(aft.harmonics().sinIndex(1), 1) = U;
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    const int c = aft.harmonics().cosIndex(1);
+    const Eigen::Vector4d got(F(c, 0), F(c + 1, 0), F(c, 1), F(c + 1, 1));
+    const double err = (got - exact).norm() / exact.norm();
+    std::printf("  %6d  %.3e  %.4f s", samples, err, t.seconds());
+    if (previous > 0) std::printf("  order %.2f", std::log2(previous / err) / 2);
+    std::printf("\n");
+    if (previous > 0) {
+      EXPECT_GT(std::log2(previous / err) / 2, 0.9);  // first order in 1/N
+    }
+    previous = err;
+    if (samples == 16384) {
+      EXPECT_LT(err, 1e-3);
+    }
+    // Higher harmonics vanish for steady circular slip.
+    EXPECT_LT(std::hypot(F(aft.harmonics().cosIndex(3), 0), F(aft.harmonics().sinIndex(3), 0)), 1e-2 * mu * N0);
+  }
+  // Two 1D sliders in x and y under the same motion dissipate differently.
+  const Aft aft(HarmonicSet::upTo(3), 4096);
+  const JenkinsElement slider(kt, mu * N0);
+  Eigen::VectorXd wx = Eigen::VectorXd::Zero(aft.numCoefficients());
+  wx(aft.harmonics().cosIndex(1)) = U;
+  const Eigen::VectorXd fx = harmonicForce(slider, aft, wx);
+  const double dissipatedCircle = M_PI * U * mu * N0 * std::sin(beta) * 2;  // per period
+  const double dissipatedSquare = 2 * M_PI * U * std::abs(fx(aft.harmonics().sinIndex(1)));  // x and y
+  std::printf("energy per period: circular limit %.4f, two 1D sliders %.4f\n", dissipatedCircle, dissipatedSquare);
+  EXPECT_GT(std::abs(dissipatedSquare / dissipatedCircle - 1), 0.05);
+}
+
+TEST(FrictionContact, JacobianMatchesFiniteDifferences) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int dirs : {1, 2})
+    for (double n0 : {2.0, 0.0, -0.5}) {
+      const FrictionContact contact(params(dirs, 3.0, 5.0, 0.6, n0));
+      const Aft aft(HarmonicSet::upTo(4), 128);
+      const int nc = aft.numCoefficients(), d = dirs + 1;
+      Eigen::MatrixXd W(nc, d);
+      for (int i = 0; i < W.size(); ++i) W.data()[i] = 0.4 * u(rng);
+      for (int c = 0; c < d; ++c) W(aft.harmonics().cosIndex(1), c) += 1.0;  // slip, separation and stick
+      W(aft.harmonics().cosIndex(0), d - 1) = 0.2;
+      Eigen::MatrixXd J;
+      force(contact, aft, W, &J);
+      Eigen::MatrixXd fd(nc * d, nc * d);
+      const double h = 1e-7;
+      for (int j = 0; j < nc * d; ++j) {
+        Eigen::MatrixXd Wp = W, Wm = W;
+        Wp.data()[j] += h, Wm.data()[j] -= h;
+        const Eigen::MatrixXd Fp = force(contact, aft, Wp), Fm = force(contact, aft, Wm);
+        fd.col(j) = Eigen::Map<const Eigen::VectorXd>(Eigen::MatrixXd((Fp - Fm) / (2 * h)).data(), nc * d);
+      }
+      const double err = (J - fd).cwiseAbs().maxCoeff() / J.cwiseAbs().maxCoeff();
+      std::printf("friction %dD, N0 = %4.1f: Jacobian vs finite differences %.2e\n", dirs + 1, n0, err);
+      EXPECT_LT(err, 1e-6);
+    }
+}
+
+// The time integrator's one-step law, marched over the samples of a periodic
+// motion from the relaxed state, settles on the harmonic balance's force samples.
+TEST(FrictionContact, IncrementalLawMatchesThePeriodicMarch) {
+  const FrictionContact contact(params(2, 3.0, 5.0, 0.6, 1.0));
+  const Aft aft(HarmonicSet::upTo(3), 256);
+  const int nc = aft.numCoefficients();
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+  W(aft.harmonics().cosIndex(1), 0) = 1.0;
+  W(aft.harmonics().sinIndex(1), 1) = 0.6;
+  W(aft.harmonics().cosIndex(2), 2) = 0.3;
+  const Eigen::MatrixXd F = force(contact, aft, W);
+  Eigen::MatrixXd w(aft.numSamples(), 3), f(aft.numSamples(), 3);
+  for (int c = 0; c < 3; ++c) w.col(c) = aft.toTime(Eigen::VectorXd(W.col(c)));
+  Eigen::VectorXd state = contact.initialState(), none;
+  Eigen::MatrixXd dfdw, dfdv;
+  for (int period = 0; period < 10; ++period)
+    for (int i = 0; i < aft.numSamples(); ++i)
+      f.row(i) = contact.incremental(w.row(i).transpose(), none, state, dfdw, dfdv).transpose();
+  for (int c = 0; c < 3; ++c)
+    EXPECT_LT((aft.toFrequency(Eigen::VectorXd(f.col(c))) - F.col(c)).norm(), 1e-10 * F.norm()) << c;
+}
+
+TEST(FrictionContact, BadParametersAreNamed) {
+  EXPECT_THROW(FrictionContact(params(3, 1, 1, 0.3, 1)), InputError);
+  EXPECT_THROW(FrictionContact(params(1, 0, 1, 0.3, 1)), InputError);
+  EXPECT_THROW(FrictionContact(params(1, 1, -1, 0.3, 1)), InputError);
+  EXPECT_THROW(FrictionContact(params(1, 1, 1, -0.3, 1)), InputError);
+  EXPECT_THROW(FrictionContact(params(1, 1, 0, 0.3, 0)), InputError);  // no normal load at all
+  try {
+    FrictionContact(params(1, -2, 1, 0.3, 1));
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("kt"), std::string::npos) << e.what();
+  }
+}
+
+// Limits: mu = 0 transmits no tangential force; a huge preload holds the
+// contact stuck, so the tangential force is the linear spring kt w_t.
+TEST(FrictionContact, FrictionlessAndStuckLimits) {
+  const Aft aft(HarmonicSet::upTo(3), 128);
+  const int nc = aft.numCoefficients();
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+  W(aft.harmonics().cosIndex(1), 0) = 1.0;
+  W(aft.harmonics().sinIndex(1), 1) = 0.5;
+  W(aft.harmonics().cosIndex(1), 2) = 0.2;
+  const Eigen::MatrixXd F0 = force(FrictionContact(params(2, 3.0, 5.0, 0.0, 2.0)), aft, W);
+  EXPECT_LT(F0.leftCols(2).norm(), 1e-14);
+  const Eigen::MatrixXd Fs = force(FrictionContact(params(2, 3.0, 5.0, 0.5, 1e9)), aft, W);
+  EXPECT_LT((Fs.leftCols(2) - 3.0 * W.leftCols(2)).norm(), 1e-12 * Fs.leftCols(2).norm());
+}
