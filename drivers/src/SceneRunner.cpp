@@ -16,12 +16,14 @@
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
@@ -366,6 +368,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     Eigen::MatrixXd W, Wnext;
   };
   std::vector<Placed> placed;
+  std::vector<std::string> elementNames;
   auto elements = scene.section("nonlinear_elements");
   for (const auto& name : elements.sectionNames()) {
     auto e = elements.section(name);
@@ -414,6 +417,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     }
     e.rejectUnknownKeys();
     placed.push_back(std::move(pl));
+    elementNames.push_back(name);
   }
   elements.rejectUnknownKeys();
   int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
@@ -421,6 +425,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   const int samples = scene.getInt("samples", recommended);
 
   ForcedResponseSetup setup;
+  setup.elementNames = elementNames;
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
   auto& hb = *setup.system;
 
@@ -474,9 +479,32 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
     setup.omega = cs.requireDouble("omega");
     if (!(setup.omega > 0)) throw InputError(cs.where("omega"), "must be positive (rad/s)");
+  } else if (parameter == "damping_scale") {
+    setup.parameter = ForcedResponseSetup::Parameter::DampingScale;
+  } else if (parameter.find('/') != std::string::npos) {
+    setup.parameter = ForcedResponseSetup::Parameter::ElementParameter;
+    const std::string element = parameter.substr(0, parameter.find('/'));
+    setup.elementParameter = parameter.substr(parameter.find('/') + 1);
+    const auto it = std::find(setup.elementNames.begin(), setup.elementNames.end(), element);
+    if (it == setup.elementNames.end())
+      throw InputError(cs.where("parameter"), "no nonlinear element named '" + element + "'");
+    setup.parameterElement = int(it - setup.elementNames.begin());
+    setup.baseElement = hb.elements()[setup.parameterElement].element;
+    try {
+      setup.baseElement->withParameter(setup.elementParameter, cs.requireDouble("from"));
+    } catch (const InputError& e) {
+      throw InputError(cs.where("parameter"), e.what());
+    }
   } else {
     throw InputError(cs.where("parameter"),
-                     "unknown parameter '" + parameter + "' (omega: excitation frequency; force_scale: f = s f_ex)");
+                     "unknown parameter '" + parameter +
+                         "' (omega: excitation frequency; force_scale: f = s f_ex; <element>/<parameter>, e.g. "
+                         "contact/preload; damping_scale)");
+  }
+  if (setup.parameter != ForcedResponseSetup::Parameter::Omega &&
+      setup.parameter != ForcedResponseSetup::Parameter::ForceScale) {
+    setup.omega = cs.requireDouble("omega");
+    if (!(setup.omega > 0)) throw InputError(cs.where("omega"), "must be positive (rad/s)");
   }
   opt.from = cs.requireDouble("from");
   opt.to = cs.requireDouble("to");
@@ -484,6 +512,9 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   opt.minStep = cs.getDouble("min_step", 1e-6);
   opt.maxStep = cs.getDouble("max_step", 0.05);
   opt.maxSteps = cs.getInt("max_points", 5000);
+  opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
+  if (!(opt.tolerance > 0 && opt.tolerance < 1))
+    throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
     throw InputError(cs.location(), "the frequency range must be positive");
@@ -497,19 +528,91 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   return setup;
 }
 
+namespace {
+// Residual rows are divided by the size of the forces acting on them: the
+// mean (harmonic 0) rows by the static loads and mean excitation, the others
+// by the dynamic excitation. The continuation's tolerance is then relative,
+// and a 1e9 N preload neither swamps a 10 N excitation nor is held to its
+// absolute accuracy.
+Eigen::VectorXd forceScale(const hbm::HarmonicBalanceSystem& hb, double excitationScale) {
+  const auto& H = hb.aft().harmonics();
+  const int n = hb.numDofs(), nc = hb.numCoefficients();
+  const Eigen::VectorXd F = std::abs(excitationScale) * hb.excitation();
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(n * nc), dynamic = mean;
+  for (int a = 0; a < n; ++a)
+    for (int k = 0; k < nc; ++k) {
+      const bool isMean = H.contains(0) && k == H.cosIndex(0);
+      (isMean ? mean : dynamic)(a * nc + k) = F(a * nc + k) + (isMean ? hb.staticLoad()(a * nc + k) : 0.0);
+    }
+  double f0 = mean.norm(), fd = dynamic.norm();
+  if (f0 == 0) f0 = fd > 0 ? fd : 1.0;
+  if (fd == 0) fd = f0;
+  Eigen::VectorXd D = Eigen::VectorXd::Constant(n * nc, fd);
+  if (H.contains(0))
+    for (int a = 0; a < n; ++a) D(a * nc + H.cosIndex(0)) = f0;
+  return D;
+}
+}  // namespace
+
 continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& hb,
                                                       ForcedResponseSetup::Parameter parameter, double omega,
                                                       double excitationScale) {
+  if (parameter != ForcedResponseSetup::Parameter::Omega && parameter != ForcedResponseSetup::Parameter::ForceScale)
+    throw InputError("continuation", "element and damping parameters need the scene's setup: continuationProblem(setup)");
   const bool byForce = parameter == ForcedResponseSetup::Parameter::ForceScale;
   continuation::ContinuationProblem problem;
   problem.size = hb.numUnknowns();
   const double s = excitationScale;
-  problem.residual = [&hb, byForce, omega, s](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
+  const Eigen::VectorXd f = forceScale(hb, byForce ? 1.0 : s);
+  problem.residual = [&hb, byForce, omega, s, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
     hb.residual(X, byForce ? omega : p, R, nullptr, byForce ? p : s);
+    R.array() /= f.array();
   };
-  problem.jacobian = [&hb, byForce, omega, s](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
+  problem.jacobian = [&hb, byForce, omega, s, f](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
     Eigen::VectorXd R;
     hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : s);
+    J = f.cwiseInverse().asDiagonal() * J;
+  };
+  return problem;
+}
+
+std::string ForcedResponseSetup::parameterName() const {
+  switch (parameter) {
+    case Parameter::Omega: return "omega";
+    case Parameter::ForceScale: return "force_scale";
+    case Parameter::DampingScale: return "damping_scale";
+    case Parameter::ElementParameter: return elementNames.at(parameterElement) + "/" + elementParameter;
+  }
+  return "";
+}
+
+std::pair<double, double> ForcedResponseSetup::apply(double p) {
+  switch (parameter) {
+    case Parameter::Omega: return {p, excitationScale};
+    case Parameter::ForceScale: return {omega, p};
+    case Parameter::DampingScale: system->setDampingScale(p); break;
+    case Parameter::ElementParameter:
+      system->replaceElement(parameterElement, baseElement->withParameter(elementParameter, p));
+      break;
+  }
+  return {omega, excitationScale};
+}
+
+continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup) {
+  continuation::ContinuationProblem problem;
+  problem.size = setup.system->numUnknowns();
+  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
+  const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
+  problem.residual = [&setup, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
+    const auto [w, s] = setup.apply(p);  // an invalid value (e.g. kt < 0) throws: the step is cut
+    setup.system->residual(X, w, R, nullptr, s);
+    R.array() /= f.array();
+  };
+  problem.jacobian = [&setup, f](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
+    const auto [w, s] = setup.apply(p);
+    Eigen::VectorXd R;
+    setup.system->residual(X, w, R, &J, s);
+    J = f.cwiseInverse().asDiagonal() * J;
   };
   return problem;
 }
@@ -532,6 +635,37 @@ ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
 
 namespace {
 
+// The AFT sample count is checked by doubling it: the largest-response point
+// is solved again with 2N samples and the change of its peak reported (friction
+// and gaps place their events only to within a sample).
+std::string samplesCheck(ForcedResponseSetup& setup, const continuation::Branch& branch,
+                         const std::vector<double>& peaks) {
+  const std::size_t ip = std::max_element(peaks.begin(), peaks.end()) - peaks.begin();
+  const auto& pt = branch.points[ip];
+  const auto [w, scale] = setup.apply(pt.parameter);
+  const auto& hb = *setup.system;
+  const int N = hb.aft().numSamples(), dof = setup.outputDofs.front(), nc = hb.numCoefficients();
+  const auto doubled = hbm::withHarmonics(hb, hb.aft().harmonics(), 2 * N);
+  // The force-scale form at this frequency: the same row scaling as the trace.
+  const auto problem = continuationProblem(*doubled, ForcedResponseSetup::Parameter::ForceScale, w);
+  Eigen::VectorXd X = pt.x;
+  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  std::ostringstream out;
+  if (!newton.converged) {
+    out << "samples check: no solution with " << 2 * N << " samples at the peak (residual " << newton.residualNorm
+        << "); the sample count " << N << " may be too small";
+    log::warn(out.str());
+    return out.str();
+  }
+  const double before = peaks[ip];
+  const double after = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(X.segment(dof * nc, nc)));
+  const double change = std::abs(after / before - 1);
+  out << "samples check: " << N << " -> " << 2 * N << " samples changes the peak max|x| of DOF " << dof << " by "
+      << change << " (relative)";
+  if (change > 1e-2) log::warn(out.str() + ": raise `samples`");
+  return out.str();
+}
+
 void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
                          SceneSummary& summary) {
   auto setup = readForcedResponseSetup(scene);
@@ -542,14 +676,15 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   const int samples = hb.aft().numSamples();
   const int n = hb.numDofs();
   Timer timer;
-  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
-  auto frequency = [&](double p) { return byForce ? setup.omega : p; };
-  auto scale = [&](double p) { return byForce ? p : setup.excitationScale; };
-  const auto problem = continuationProblem(hb, setup.parameter, setup.omega, setup.excitationScale);
+  const bool byOmega = setup.parameter == ForcedResponseSetup::Parameter::Omega;
+  const std::string parameterName = setup.parameterName();
+  auto frequency = [&](double p) { return setup.apply(p).first; };
+  const auto problem = continuationProblem(setup);
   {
     std::ostringstream msg;
     msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
-        << " samples, omega " << opt.from << " -> " << opt.to;
+        << " samples, " << parameterName << " " << opt.from << " -> " << opt.to;
+    if (!byOmega) msg << " at omega " << setup.omega;
     if (hb.isCyclic()) {
       msg << "; cyclic: " << hb.cyclic().sectors << " sectors, engine order " << hb.cyclic().engineOrder
           << ", harmonic -> nodal diameter:";
@@ -557,8 +692,8 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     }
     log::info(msg.str());
   }
-  const auto branch = continuation::traceBranch(
-      problem, hb.linearizedSolution(frequency(opt.from), scale(opt.from)), opt);
+  const auto start = setup.apply(opt.from);
+  const auto branch = continuation::traceBranch(problem, hb.linearizedSolution(start.first, start.second), opt);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";
@@ -572,7 +707,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
     csv.precision(12);
-    csv << "point,omega_rad_s,freq_hz" << (byForce ? ",force_scale" : "");
+    csv << "point,omega_rad_s,freq_hz" << (byOmega ? "" : "," + parameterName);
     for (int d : dofs) {
       csv << ",dof" << d << "_h0";
       for (int h : harmonics.harmonics())
@@ -585,7 +720,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
       const auto& pt = branch.points[i];
       const double w = frequency(pt.parameter);
       csv << i << "," << w << "," << w / (2 * M_PI);
-      if (byForce) csv << "," << pt.parameter;
+      if (!byOmega) csv << "," << pt.parameter;
       for (int d : dofs) {
         csv << "," << (harmonics.contains(0) ? pt.x(d * nc + harmonics.cosIndex(0)) : 0.0);
         for (int h : harmonics.harmonics())
@@ -609,7 +744,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     if (!csv) throw Error("cannot write " + csvPath);
     file.commit();
     post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)",
-                       byForce ? "excitation scale" : "omega (rad/s)",
+                       byOmega ? "omega (rad/s)" : parameterName,
                        "max |x(t)| of DOF " + std::to_string(dofs.front()));
     // Stable stretches solid, unstable ones dashed (each stretch shares its end points).
     bool labelled[2] = {false, false};
@@ -651,6 +786,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   summary.computed.push_back(line.str());
   if (!branch.finished)
     log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");
+  if (!plotMax.empty()) summary.computed.push_back(samplesCheck(setup, branch, plotMax));  // rank 0
 }
 
 void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,

@@ -131,3 +131,52 @@ TEST(TmdsimpyFriction2D, SlippingPeaksConfirmedByTimeIntegration) {
     }
   }
 }
+
+// Continuation in a contact parameter (mu) at a fixed frequency, at s = 100:
+// raising mu sticks the contact (the response tends to the stuck linear
+// system's), lowering it to 0 frees it (the response is the linear system
+// without the tangential spring); both limits are closed forms.
+TEST(TmdsimpyFriction2D, FrictionCoefficientStudyReachesStuckAndFreeLimits) {
+  const double w = 3.6, s = 100.0;
+  auto response = [&](const hbm::HarmonicBalanceSystem& sys, double kt) {  // |x1| of the linear system
+    Eigen::Matrix2d K = sys.K();
+    K(0, 0) += kt, K(1, 1) += 21.0;
+    const Eigen::Matrix2cd Z = (K - w * w * sys.M()).cast<std::complex<double>>() +
+                               std::complex<double>(0, w) * sys.C().cast<std::complex<double>>();
+    return std::abs((Z.inverse() * Eigen::Vector2cd(s, 0.1 * s))(0));
+  };
+  for (auto [to, kt] : {std::pair{20.0, 5.0}}) {
+    Timer timer;
+    auto setup = scenes::loadForcedResponseScene(kScene);
+    setup.excitationScale = s;
+    setup.omega = w;
+    setup.parameter = scenes::ForcedResponseSetup::Parameter::ElementParameter;
+    setup.parameterElement = 0;
+    setup.elementParameter = "mu";
+    setup.baseElement = setup.system->elements()[0].element;
+    setup.continuation.from = 0.85, setup.continuation.to = to;
+    setup.continuation.maxStep = 0.5;
+    const auto problem = scenes::continuationProblem(setup);
+    const auto start = setup.apply(setup.continuation.from);
+    const auto branch =
+        continuation::traceBranch(problem, setup.system->linearizedSolution(start.first, start.second), setup.continuation);
+    ASSERT_TRUE(branch.finished) << branch.stopReason;
+    const auto& end = branch.points.back();
+    setup.apply(end.parameter);
+    const double got = setup.system->amplitude(end.x, 0, 1), want = response(*setup.system, kt);
+    std::printf("mu 0.85 -> %.0f at W = %.1f, s = %.0f: %zu points, |x1| %.8f, %s closed form %.8f "
+                "(relative %.1e), %.2f s\n",
+                to, w, s, branch.points.size(), got, kt > 0 ? "stuck" : "free", want, std::abs(got / want - 1),
+                timer.seconds());
+    EXPECT_NEAR(got / want, 1.0, 1e-9);
+    // At the start the study meets the frequency sweep's point at W = 3.6.
+    auto sweep = scenes::loadForcedResponseScene(kScene);
+    sweep.excitationScale = s;
+    Eigen::VectorXd X = branch.points.front().x;
+    const auto omegaProblem =
+        scenes::continuationProblem(*sweep.system, scenes::ForcedResponseSetup::Parameter::Omega, 0, s);
+    Eigen::VectorXd R;
+    omegaProblem.residual(X, w, R);
+    EXPECT_LT(R.norm(), 1e-8);
+  }
+}

@@ -1,5 +1,7 @@
 #include "cyclone/hbm/CubicSpring.hpp"
 
+#include <memory>
+
 #include "cyclone/core/Error.hpp"
 
 #include <cmath>
@@ -20,6 +22,11 @@ void CubicSpring::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eig
     dfdw->diagonal() = 3.0 * k3_ * w.array().square();
   }
   if (dfdwdot) dfdwdot->setZero(n, n);
+}
+
+std::shared_ptr<const ScalarElement> CubicSpring::withParameter(const std::string& name, double value) const {
+  if (name == "k3") return std::make_shared<CubicSpring>(value);
+  throw InputError("nonlinear element", "unknown parameter '" + name + "' (k3)");
 }
 
 }  // namespace cyclone::hbm

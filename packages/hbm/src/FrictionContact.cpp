@@ -1,6 +1,7 @@
 #include "cyclone/hbm/FrictionContact.hpp"
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "cyclone/core/Error.hpp"
@@ -134,6 +135,16 @@ Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eig
   dfdw = df;
   dfdwdot = Eigen::MatrixXd::Zero(d, d);
   return f;
+}
+
+std::shared_ptr<const NonlinearElement> FrictionContact::withParameter(const std::string& name, double value) const {
+  FrictionContactParameters p = p_;
+  if (name == "kt") p.kt = value;
+  else if (name == "kn") p.kn = value;
+  else if (name == "mu") p.mu = value;
+  else if (name == "preload") p.preload = value;
+  else throw InputError("friction contact", "unknown parameter '" + name + "' (kt, kn, mu, preload)");
+  return std::make_shared<FrictionContact>(p);
 }
 
 }  // namespace cyclone::hbm

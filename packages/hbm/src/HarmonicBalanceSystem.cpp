@@ -18,6 +18,7 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(Eigen::MatrixXd M, Eigen::MatrixXd 
   excitation_ = Eigen::VectorXd::Zero(numUnknowns());
   static_ = Eigen::VectorXd::Zero(numUnknowns());
   next_ = Eigen::MatrixXd::Identity(numCoefficients(), numCoefficients());
+  C0_ = C_;
 }
 
 void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
@@ -31,6 +32,8 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
                                      std::to_string(n));
   }
   cyclic_ = std::move(coupling);
+  Cnext0_ = cyclic_.Cnext;
+  cyclic_.Cnext *= dampingScale_;
   // Sector j+1 is sector j delayed by phi = 2 pi EO / N: harmonic h rotates by h phi.
   const auto& H = aft_->harmonics();
   next_.setIdentity(numCoefficients(), numCoefficients());
@@ -70,6 +73,20 @@ void HarmonicBalanceSystem::addElement(std::shared_ptr<const NonlinearElement> e
       throw InputError("nonlinear element", "W_next joins a sector to the next one: the system must be cyclic");
   }
   elements_.push_back({std::move(element), std::move(W), std::move(Wnext)});
+}
+
+void HarmonicBalanceSystem::replaceElement(std::size_t i, std::shared_ptr<const NonlinearElement> element) {
+  if (i >= elements_.size()) throw InputError("nonlinear element", "no element " + std::to_string(i));
+  if (!element || element->dimension() != elements_[i].element->dimension())
+    throw InputError("nonlinear element", "a replacement must have the same number of coordinates");
+  elements_[i].element = std::move(element);
+}
+
+void HarmonicBalanceSystem::setDampingScale(double s) {
+  if (!(std::isfinite(s) && s >= 0)) throw InputError("damping scale", "must be >= 0, got " + std::to_string(s));
+  dampingScale_ = s;
+  C_ = s * C0_;
+  if (isCyclic()) cyclic_.Cnext = s * Cnext0_;
 }
 
 void HarmonicBalanceSystem::addElement(std::shared_ptr<const ScalarElement> element, Eigen::VectorXd direction) {

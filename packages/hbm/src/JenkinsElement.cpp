@@ -1,5 +1,7 @@
 #include "cyclone/hbm/JenkinsElement.hpp"
 
+#include <memory>
+
 #include "cyclone/core/Error.hpp"
 
 #include <cmath>
@@ -65,6 +67,12 @@ double JenkinsElement::incremental(double w, double, double& z, double& dfdw, do
   z = w - sign * slipForce_ / kt_;
   dfdw = 0;
   return sign * slipForce_;
+}
+
+std::shared_ptr<const ScalarElement> JenkinsElement::withParameter(const std::string& name, double value) const {
+  if (name == "kt") return std::make_shared<JenkinsElement>(value, slipForce_);
+  if (name == "slip_force") return std::make_shared<JenkinsElement>(kt_, value);
+  throw InputError("nonlinear element", "unknown parameter '" + name + "' (kt, slip_force)");
 }
 
 }  // namespace cyclone::hbm

@@ -1,5 +1,7 @@
 #include "cyclone/hbm/QuadraticDamper.hpp"
 
+#include <memory>
+
 #include "cyclone/core/Error.hpp"
 
 #include <cmath>
@@ -24,6 +26,11 @@ void QuadraticDamper::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& 
     dfdwdot->setZero(n, n);
     dfdwdot->diagonal() = 2.0 * c2_ * wdot.array().abs();
   }
+}
+
+std::shared_ptr<const ScalarElement> QuadraticDamper::withParameter(const std::string& name, double value) const {
+  if (name == "c2") return std::make_shared<QuadraticDamper>(value);
+  throw InputError("nonlinear element", "unknown parameter '" + name + "' (c2)");
 }
 
 }  // namespace cyclone::hbm

@@ -25,4 +25,9 @@ Eigen::VectorXd ScalarElementAdapter::incremental(const Eigen::VectorXd& w, cons
   return f;
 }
 
+std::shared_ptr<const NonlinearElement> ScalarElementAdapter::withParameter(const std::string& name,
+                                                                       double value) const {
+  return std::make_shared<ScalarElementAdapter>(element_->withParameter(name, value));
+}
+
 }  // namespace cyclone::hbm

@@ -1,5 +1,7 @@
 #include "cyclone/hbm/UnilateralSpring.hpp"
 
+#include <memory>
+
 #include "cyclone/core/Error.hpp"
 
 #include <cmath>
@@ -25,6 +27,12 @@ void UnilateralSpring::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&
     if (dfdw && closed) (*dfdw)(i, i) = k_;  // one-sided: 0 exactly at contact onset
   }
   if (dfdwdot) dfdwdot->setZero(n, n);
+}
+
+std::shared_ptr<const ScalarElement> UnilateralSpring::withParameter(const std::string& name, double value) const {
+  if (name == "k") return std::make_shared<UnilateralSpring>(value, gap_);
+  if (name == "gap") return std::make_shared<UnilateralSpring>(k_, value);
+  throw InputError("nonlinear element", "unknown parameter '" + name + "' (k, gap)");
 }
 
 }  // namespace cyclone::hbm

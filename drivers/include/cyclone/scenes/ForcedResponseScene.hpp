@@ -15,14 +15,30 @@ class SceneSection;
 
 struct ForcedResponseSetup {
   std::unique_ptr<hbm::HarmonicBalanceSystem> system;
-  /// The continuation parameter: the excitation frequency (rad/s), or the excitation
-  /// scale s (f = s f_ex) at the fixed frequency `omega`.
-  enum class Parameter { Omega, ForceScale } parameter = Parameter::Omega;
-  double omega = 0;  ///< ForceScale: the fixed excitation frequency
-  double excitationScale = 1;  ///< Omega: the scale s of f = s f_ex (excitation: scale); static loads stay
+  /// The continuation parameter: the excitation frequency (rad/s); the excitation
+  /// scale s (f = s f_ex); a parameter of one nonlinear element (e.g. a contact's
+  /// preload, kn, kt, mu); or a scale of the damping. All but Omega at the fixed
+  /// frequency `omega`.
+  enum class Parameter { Omega, ForceScale, ElementParameter, DampingScale } parameter = Parameter::Omega;
+  double omega = 0;            ///< the fixed excitation frequency unless the parameter is Omega
+  double excitationScale = 1;  ///< the scale s of f = s f_ex (excitation: scale) unless the parameter is ForceScale
+  std::vector<std::string> elementNames;  ///< the scene's names of system->elements(), in order
+  int parameterElement = -1;              ///< ElementParameter: which element
+  std::string elementParameter;           ///< ElementParameter: which of its parameters
+  std::shared_ptr<const hbm::NonlinearElement> baseElement;  ///< ElementParameter: the element as the scene gives it
   continuation::ContinuationOptions continuation;
   std::vector<int> outputDofs;
+
+  /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.
+  std::string parameterName() const;
+  /// Puts the system at parameter value p (swaps the element or sets the damping
+  /// scale) and returns the frequency and excitation scale that go with it.
+  std::pair<double, double> apply(double p);
 };
+
+/// The continuation problem of a scene's system in its parameter (the closures
+/// keep a reference to `setup` and call setup.apply(p)).
+continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup);
 
 /// The continuation problem of a harmonic balance system in the chosen parameter:
 /// the frequency, or the excitation scale at the fixed frequency `omega`.

@@ -41,6 +41,8 @@ public:
   int stateSize() const override { return p_.tangentialDirections; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
+  /// kt, kn, mu, preload.
+  std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 
 private:
   FrictionContactParameters p_;

@@ -53,6 +53,12 @@ public:
   /// A scalar element on w = direction^T x (e.g. a unit vector for DOF-to-ground,
   /// e_i - e_j between two DOFs).
   void addElement(std::shared_ptr<const ScalarElement> element, Eigen::VectorXd direction);
+  /// Swaps element i for another of the same dimension (a parameter study:
+  /// element.withParameter(...)); W and W_next stay.
+  void replaceElement(std::size_t i, std::shared_ptr<const NonlinearElement> element);
+  /// Damping = s times the damping given (C and C_next): a continuation parameter.
+  void setDampingScale(double s);
+  double dampingScale() const { return dampingScale_; }
   /// Harmonic excitation on one DOF: f = cosAmplitude cos(h w t) + sinAmplitude sin(h w t)
   /// (on sector 0 of a cyclic system; sector j gets it delayed by j 2 pi EO / N).
   void addExcitation(int dof, int harmonic, double cosAmplitude, double sinAmplitude = 0);
@@ -103,6 +109,8 @@ public:
 
 private:
   Eigen::MatrixXd M_, C_, K_;
+  Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale
+  double dampingScale_ = 1.0;
   std::unique_ptr<Aft> aft_;
   CyclicCoupling cyclic_;
   Eigen::MatrixXd next_;

@@ -23,6 +23,7 @@ public:
   /// One time step of the same law: state = slider position z (0 initially).
   double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const override;
 
+  std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const override;
 private:
   double kt_, slipForce_;
 };

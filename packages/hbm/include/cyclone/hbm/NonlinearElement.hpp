@@ -8,6 +8,8 @@
 // coefficients along the time march, which is far cheaper than forming the
 // (N d) x (N d) time-domain Jacobian.
 #include <Eigen/Dense>
+#include <memory>
+#include <string>
 
 #include "cyclone/hbm/Aft.hpp"
 
@@ -42,6 +44,10 @@ public:
   /// copy). dfdw and dfdwdot are set to d x d.
   virtual Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                                       Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const = 0;
+
+  /// A copy with one named parameter changed (parameter studies and
+  /// continuation in it); InputError naming the element's parameters otherwise.
+  virtual std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const;
 };
 
 }  // namespace cyclone::hbm

@@ -14,6 +14,7 @@ public:
   void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
 
+  std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const override;
 private:
   double c2_;
 };

@@ -4,6 +4,8 @@
 // AFT scheme only needs forces and their sensitivities at the samples, so
 // every element, with or without memory, fits this one interface.
 #include <Eigen/Dense>
+#include <memory>
+#include <string>
 
 namespace cyclone::hbm {
 
@@ -28,6 +30,9 @@ public:
   /// converged step; `state` is updated in place for the trial (the caller keeps
   /// the committed copy). Memoryless elements use evaluate() on one sample.
   virtual double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const;
+
+  /// A copy with one named parameter changed; InputError if it has no such parameter.
+  virtual std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const;
 };
 
 }  // namespace cyclone::hbm

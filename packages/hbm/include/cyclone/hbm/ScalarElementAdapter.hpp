@@ -21,6 +21,7 @@ public:
   int stateSize() const override { return 1; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
+  std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 
 private:
   std::shared_ptr<const ScalarElement> element_;

@@ -1,0 +1,124 @@
+// Benchmark (a program, not a test): harmonic balance of a reduced cyclic
+// sector with 3D friction contacts, the size the project's issue names: 84 DOFs
+// (27 contact nodes and one excitation node, 3 directions each), 27 friction3d
+// elements joining each contact node to its partner on the next sector, an
+// engine-order 3 travelling wave on 24 sectors. Prints, against H and the
+// number of time samples N: the time of one residual + Jacobian and its
+// shares (element AFT and marching, linear operator, assembly of the element
+// blocks), the dense LU of the Jacobian, and then a whole resonance curve
+// traced by LOCA with its time per point.
+//   build/regression/hbm_benchmark [max H (default 7)]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <random>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+
+using namespace cyclone;
+
+namespace {
+
+constexpr int kNodes = 28, kDofs = 3 * kNodes, kContacts = 27;
+
+// A sector model with the spectrum of a reduced bladed sector: M = I and
+// K = Q diag(w_j^2) Q^T with w_j from 1 to 20 (rad/s, scaled units), Q a
+// fixed random orthogonal matrix; 0.3 % modal damping.
+std::unique_ptr<hbm::HarmonicBalanceSystem> sector(int H, int samples) {
+  std::mt19937 rng(2024);
+  std::normal_distribution<double> g;
+  Eigen::MatrixXd A(kDofs, kDofs);
+  for (int i = 0; i < A.size(); ++i) A.data()[i] = g(rng);
+  const Eigen::MatrixXd Q = A.householderQr().householderQ();
+  Eigen::VectorXd w2(kDofs);
+  for (int j = 0; j < kDofs; ++j) w2(j) = std::pow(1.0 + 19.0 * j / (kDofs - 1), 2);
+  const Eigen::MatrixXd K = Q * w2.asDiagonal() * Q.transpose();
+  const Eigen::MatrixXd C = Q * (2 * 0.003 * w2.cwiseSqrt()).asDiagonal() * Q.transpose();
+  auto s = std::make_unique<hbm::HarmonicBalanceSystem>(Eigen::MatrixXd::Identity(kDofs, kDofs), C, K,
+                                                        hbm::HarmonicSet::upTo(H), samples);
+  hbm::CyclicCoupling c;
+  c.sectors = 24, c.engineOrder = 3;
+  s->setCyclic(c);
+  hbm::FrictionContactParameters p;
+  p.tangentialDirections = 2, p.kt = 2.0, p.kn = 2.0, p.mu = 0.4, p.preload = 0.02;
+  for (int k = 1; k <= kContacts; ++k) {
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(kDofs, 3);
+    W.block(3 * k, 0, 3, 3).setIdentity();
+    s->addElement(std::make_shared<hbm::FrictionContact>(p), W, -W);
+  }
+  s->addExcitation(0, 1, 0.05);
+  s->addExcitation(1, 1, 0.02);
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int maxH = argc > 1 ? std::atoi(argv[1]) : 7;
+  std::printf("reduced cyclic sector: %d DOFs, %d friction3d elements across the sector boundary, EO 3 of 24\n\n",
+              kDofs, kContacts);
+  std::printf("%3s %5s %9s | %10s %8s %8s %8s | %9s\n", "H", "N", "unknowns", "R+J [s]", "elements", "linear",
+              "assembly", "LU [s]");
+  for (int H = 1; H <= maxH; H += 2)
+    for (int N : {64, 128, 256, 512}) {
+      if (N < 2 * H + 1) continue;
+      const auto s = sector(H, N);
+      const double w = 1.0;
+      const Eigen::VectorXd X = s->linearizedSolution(w);
+      Eigen::VectorXd R;
+      Eigen::MatrixXd J;
+      const int reps = 3;
+      Timer t;
+      for (int r = 0; r < reps; ++r) s->residual(X, w, R, &J);
+      const double total = t.seconds() / reps;
+      t.restart();
+      for (int r = 0; r < reps; ++r) s->linearOperator(w);
+      const double linear = t.seconds() / reps;
+      // The elements alone: their AFT, march and coefficient Jacobians.
+      const int nc = s->numCoefficients();
+      const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, kDofs);
+      Eigen::MatrixXd F, Jf;
+      t.restart();
+      for (int r = 0; r < reps; ++r)
+        for (const auto& c : s->elements()) {
+          const Eigen::MatrixXd Wc = Xm * c.W + s->nextSectorMap() * (Xm * c.Wnext);
+          c.element->harmonicForce(s->aft(), Wc, w, F, &Jf);
+        }
+      const double elements = t.seconds() / reps;
+      t.restart();
+      const auto lu = J.partialPivLu();
+      const double luTime = t.seconds();
+      std::printf("%3d %5d %9d | %10.4f %7.0f%% %7.0f%% %7.0f%% | %9.4f\n", H, N, s->numUnknowns(), total,
+                  100 * elements / total, 100 * linear / total, 100 * (total - elements - linear) / total, luTime);
+      (void)lu;
+    }
+
+  std::printf("\nresonance curve, EO 3 (nodal diameter 3), omega 0.9 -> 1.6:\n");
+  for (int H : {1, 3, maxH}) {
+    const int N = 128;
+    const auto s = sector(H, N);
+    continuation::ContinuationProblem problem;
+    problem.size = s->numUnknowns();
+    problem.residual = [&](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) { s->residual(X, p, R, nullptr); };
+    problem.jacobian = [&](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
+      Eigen::VectorXd R;
+      s->residual(X, p, R, &J);
+    };
+    continuation::ContinuationOptions o;
+    o.from = 0.9, o.to = 1.6, o.initialStep = 0.05, o.maxStep = 0.2;
+    Timer t;
+    const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
+    const double secs = t.seconds();
+    double peak = 0, peakW = 0;
+    for (const auto& pt : branch.points)
+      if (s->amplitude(pt.x, 0, 1) > peak) peak = s->amplitude(pt.x, 0, 1), peakW = pt.parameter;
+    std::printf("  H = %d, N = %d: %zu points in %.2f s (%.3f s per point), peak |x1| of DOF 0 %.5f at %.4f; %s\n", H,
+                N, branch.points.size(), secs, secs / std::max<std::size_t>(1, branch.points.size()), peak, peakW,
+                branch.stopReason.c_str());
+  }
+  return 0;
+}
