@@ -59,39 +59,34 @@ private:
 
 }  // namespace
 
-namespace {
-
-// A converged start for LOCA (whose first Newton solve has no line search):
-// Newton with backtracking on ||F|| from the guess, at the first parameter value.
-bool solveStart(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, const ContinuationOptions& o) {
+bool solveAt(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, const ContinuationOptions& o,
+             int maxIterations) {
   Eigen::VectorXd F, Ft;
   Eigen::MatrixXd J;
   try {
     problem.residual(x, p, F);
-    for (int it = 0; it < 200; ++it) {
-      if (F.norm() <= o.tolerance) return true;
+    for (int it = 0; it < maxIterations && F.allFinite() && F.norm() > o.tolerance; ++it) {
       problem.jacobian(x, p, J);
       const Eigen::VectorXd dx = J.fullPivLu().solve(-F);
       double step = 1.0;
-      for (int k = 0; k < 40; ++k, step *= 0.5) {
+      for (int k = 0;; ++k, step *= 0.5) {
         problem.residual(x + step * dx, p, Ft);
         if (Ft.allFinite() && Ft.norm() < (1 - 1e-4 * step) * F.norm()) break;
+        if (k == 30) return false;  // stagnation: no step along dx decreases ||F||
       }
       x += step * dx;
-      problem.residual(x, p, F);
+      F = Ft;
     }
   } catch (...) {
     return false;
   }
-  return F.norm() <= o.tolerance;
+  return F.allFinite() && F.norm() <= o.tolerance;
 }
-
-}  // namespace
 
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   Branch branch;
   Eigen::VectorXd x0 = guess;
-  if (!solveStart(problem, x0, o.from, o)) {
+  if (!solveAt(problem, x0, o.from, o)) {
     branch.stopReason = "no converged solution at the start of the range (Newton with line search from the guess failed)";
     return branch;
   }

@@ -40,7 +40,17 @@ struct Branch {
   int failedSteps = 0;
 };
 
-/// Traces from x0 (a solution, or a good guess, at p = options.from).
+/// Newton with backtracking on ||F|| at the fixed parameter p, from x (updated in
+/// place); true when ||F|| <= options.tolerance. Gives up after maxIterations, or
+/// as soon as no step along the Newton direction (down to 2^-30 of it) decreases
+/// ||F||: a stagnation, e.g. a spurious local minimum of ||F|| at the kinks of a
+/// nonsmooth system, which more iterations do not leave.
+bool solveAt(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, const ContinuationOptions& options,
+             int maxIterations = 100);
+
+/// Traces from x0 (a solution, or a good guess, at p = options.from; it is
+/// corrected by solveAt before LOCA takes it, whose first Newton solve has no
+/// line search).
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& x0, const ContinuationOptions& options);
 
 }  // namespace cyclone::continuation
