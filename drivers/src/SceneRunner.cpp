@@ -431,16 +431,19 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   Timer timer;
   const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
   auto frequency = [&](double p) { return byForce ? setup.omega : p; };
-  auto scale = [&](double p) { return byForce ? p : 1.0; };
-  const auto problem = continuationProblem(hb, setup.parameter, setup.omega);
   {
     std::ostringstream msg;
     msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
         << " samples, omega " << opt.from << " -> " << opt.to;
     log::info(msg.str());
   }
-  const auto branch = continuation::traceBranch(
-      problem, scale(opt.from) * hb.linearSolution(frequency(opt.from)), opt);
+  const StartingPoint start = findStartingPoint(setup);
+  if (start.x.size() > 0) {
+    std::ostringstream msg;
+    msg << "forced response: first point by " << start.method << " (" << start.seconds << " s)";
+    log::info(msg.str());
+  }
+  const auto branch = traceForcedResponse(setup, start);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";
