@@ -679,7 +679,6 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   const bool byOmega = setup.parameter == ForcedResponseSetup::Parameter::Omega;
   const std::string parameterName = setup.parameterName();
   auto frequency = [&](double p) { return setup.apply(p).first; };
-  const auto problem = continuationProblem(setup);
   {
     std::ostringstream msg;
     msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
@@ -692,8 +691,13 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     }
     log::info(msg.str());
   }
-  const auto start = setup.apply(opt.from);
-  const auto branch = continuation::traceBranch(problem, hb.linearizedSolution(start.first, start.second), opt);
+  const StartingPoint start = findStartingPoint(setup);
+  if (start.x.size() > 0) {
+    std::ostringstream msg;
+    msg << "forced response: first point by " << start.method << " (" << start.seconds << " s)";
+    log::info(msg.str());
+  }
+  const auto branch = traceForcedResponse(setup, start);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/frc.csv";

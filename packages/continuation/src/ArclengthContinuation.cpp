@@ -1,6 +1,10 @@
 // LOCA::LAPACK glue: the only translation unit with LOCA headers.
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 
+#include <sstream>
+
+#include "cyclone/continuation/NewtonSolve.hpp"
+
 #include <LOCA.H>
 #include <LOCA_LAPACK.H>
 
@@ -59,40 +63,17 @@ private:
 
 }  // namespace
 
-namespace {
-
-// A converged start for LOCA (whose first Newton solve has no line search):
-// Newton with backtracking on ||F|| from the guess, at the first parameter value.
-bool solveStart(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, const ContinuationOptions& o) {
-  Eigen::VectorXd F, Ft;
-  Eigen::MatrixXd J;
-  try {
-    problem.residual(x, p, F);
-    for (int it = 0; it < 200; ++it) {
-      if (F.norm() <= o.tolerance) return true;
-      problem.jacobian(x, p, J);
-      const Eigen::VectorXd dx = J.fullPivLu().solve(-F);
-      double step = 1.0;
-      for (int k = 0; k < 40; ++k, step *= 0.5) {
-        problem.residual(x + step * dx, p, Ft);
-        if (Ft.allFinite() && Ft.norm() < (1 - 1e-4 * step) * F.norm()) break;
-      }
-      x += step * dx;
-      problem.residual(x, p, F);
-    }
-  } catch (...) {
-    return false;
-  }
-  return F.norm() <= o.tolerance;
-}
-
-}  // namespace
-
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   Branch branch;
   Eigen::VectorXd x0 = guess;
-  if (!solveStart(problem, x0, o.from, o)) {
-    branch.stopReason = "no converged solution at the start of the range (Newton with line search from the guess failed)";
+  const auto start = solveNewton(problem, x0, o.from, o.tolerance, 100);
+  if (!start.converged) {
+    std::ostringstream why;
+    why << "no converged solution at the start of the range: Newton with line search from the guess stopped at ||R|| = "
+        << start.residualNorm << " (tolerance " << o.tolerance
+        << "; round-off of very different forces, e.g. a huge preload against a tiny excitation, needs a looser "
+           "continuation tolerance)";
+    branch.stopReason = why.str();
     return branch;
   }
   auto params = Teuchos::rcp(new Teuchos::ParameterList);

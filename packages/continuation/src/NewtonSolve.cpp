@@ -16,12 +16,16 @@ NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x,
       problem.jacobian(x, p, J);
       const Eigen::VectorXd dx = J.fullPivLu().solve(-F);
       double step = 1.0;
-      for (int k = 0; k < 40; ++k, step *= 0.5) {  // backtracking: accept the first decrease
+      for (int k = 0;; ++k, step *= 0.5) {  // backtracking: accept the first sufficient decrease
         problem.residual(x + step * dx, p, Ft);
         if (Ft.allFinite() && Ft.norm() < (1 - 1e-4 * step) * F.norm()) break;
+        if (k == 30) {  // stagnation (e.g. a spurious minimum of ||F|| at the kinks of a nonsmooth
+          r.residualNorm = F.norm();  // system): more iterations would not leave it
+          return r;
+        }
       }
       x += step * dx;
-      problem.residual(x, p, F);
+      F = Ft;
     }
   } catch (...) {
     r.residualNorm = F.size() ? F.norm() : 0.0;

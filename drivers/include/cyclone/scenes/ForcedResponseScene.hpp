@@ -46,6 +46,32 @@ continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalance
                                                       ForcedResponseSetup::Parameter parameter, double omega = 0,
                                                       double excitationScale = 1.0);
 
+/// A converged harmonic balance solution at the start of a scene's range, and how it was found.
+struct StartingPoint {
+  Eigen::VectorXd x;   ///< empty when no way converged
+  std::string method;  ///< what converged (or why nothing did)
+  double seconds = 0;
+};
+
+/// The first point of a forced-response curve at the start of the range (the frequency
+/// `continuation.from`, or the scale `continuation.from` at `omega`), tried in this order:
+///  1. Newton with line search from rest, X = 0: its first step solves the system
+///     linearised at rest (friction elements stuck, open gaps and cubic springs without
+///     stiffness; NLvib's start for its example 07);
+///  2. the same from the linear solution without the nonlinear elements;
+///  3. a ramp of the excitation scale from 0 (the system at rest) to the start's scale
+///     at the start frequency by arclength continuation (through folds in the scale),
+///     its end corrected by Newton.
+/// Each Newton attempt stops at a stagnation (continuation::solveNewton), so a failed way
+/// costs a few iterations.
+StartingPoint findStartingPoint(ForcedResponseSetup& setup);
+
+/// The curve a scene describes: arclength continuation over the range from a
+/// starting point (by default findStartingPoint's; an empty one gives an empty branch
+/// whose stop reason is its method). The scene runner and the tests both trace here.
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
+
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
 /// The same from a scene file.

@@ -40,7 +40,9 @@ struct Branch {
   int failedSteps = 0;
 };
 
-/// Traces from x0 (a solution, or a good guess, at p = options.from).
+/// Traces from x0 (a solution, or a good guess, at p = options.from; it is
+/// corrected by solveNewton (NewtonSolve.hpp) before LOCA takes it, whose first Newton solve has no
+/// line search).
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& x0, const ContinuationOptions& options);
 
 }  // namespace cyclone::continuation

@@ -12,7 +12,10 @@ struct NewtonResult {
   double residualNorm = 0;
 };
 
-/// Updates x in place. Throwing residuals count as failure (converged = false).
+/// Updates x in place. Throwing residuals count as failure (converged = false), and
+/// so does a stagnation: no step along the Newton direction (down to 2^-30 of it)
+/// decreases ||F|| (a spurious local minimum at the kinks of a nonsmooth system,
+/// which more iterations do not leave).
 NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance = 1e-10,
                          int maxIterations = 200);
 
