@@ -63,6 +63,67 @@ private:
 
 }  // namespace
 
+namespace {
+
+// One LOCA run from the converged point (x0, p0) over the range of o, its
+// first step of size `initialStep` (sign: the direction of p). Appends the
+// points (the start itself only when `keepStart`) and sets the stop fields.
+void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, double initialStep,
+             const ContinuationOptions& o, bool keepStart, Branch& branch, bool& threw) {
+  threw = false;
+  Branch run;
+  auto params = Teuchos::rcp(new Teuchos::ParameterList);
+  auto& stepper = params->sublist("LOCA").sublist("Stepper");
+  stepper.set("Continuation Method", "Arc Length");
+  stepper.set("Continuation Parameter", "p");
+  stepper.set("Initial Value", p0);
+  stepper.set("Max Value", std::max(o.from, o.to));
+  stepper.set("Min Value", std::min(o.from, o.to));
+  stepper.set("Max Steps", std::max(1, o.maxSteps - int(branch.points.size())));
+  stepper.set("Max Nonlinear Iterations", o.maxNewtonIterations);
+  stepper.set("Compute Eigenvalues", false);
+  params->sublist("LOCA").sublist("Predictor").set("Method", "Tangent");
+  auto& step = params->sublist("LOCA").sublist("Step Size");
+  step.set("Method", "Adaptive");
+  step.set("Initial Step Size", initialStep);
+  step.set("Min Step Size", o.minStep);
+  step.set("Max Step Size", o.maxStep);
+  params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  auto globalData = LOCA::createGlobalData(params);
+  {
+    LOCA::ParameterVector p;
+    p.addParameter("p", p0);
+    Interface iface(problem, x0, p0, run);
+    auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
+    group->setParams(p);
+    auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::NormF(o.tolerance)));
+    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(o.maxNewtonIterations)));
+    LOCA::Stepper stepperObject(globalData, group, tests, params);
+    LOCA::Abstract::Iterator::IteratorStatus status = LOCA::Abstract::Iterator::Failed;
+    try {
+      status = stepperObject.run();
+    } catch (const std::exception& e) {
+      run.stopReason = std::string("continuation stopped by an exception: ") + e.what();
+      threw = true;
+    } catch (...) {
+      run.stopReason = "continuation stopped: Newton could not start (no converged initial point)";
+      threw = true;
+    }
+    branch.finished = status == LOCA::Abstract::Iterator::Finished;
+    branch.failedSteps += stepperObject.getNumFailedSteps();
+    branch.stopReason = run.stopReason.empty()
+                            ? (branch.finished ? "end of the parameter range reached"
+                                               : "step size fell below the minimum or too many steps (the branch so far "
+                                                 "is kept)")
+                            : run.stopReason;
+  }
+  LOCA::destroyGlobalData(globalData);
+  for (std::size_t i = keepStart ? 0 : 1; i < run.points.size(); ++i) branch.points.push_back(run.points[i]);
+}
+
+}  // namespace
+
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   Branch branch;
   Eigen::VectorXd x0 = guess;
@@ -76,49 +137,23 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
     branch.stopReason = why.str();
     return branch;
   }
-  auto params = Teuchos::rcp(new Teuchos::ParameterList);
-  auto& stepper = params->sublist("LOCA").sublist("Stepper");
-  stepper.set("Continuation Method", "Arc Length");
-  stepper.set("Continuation Parameter", "p");
-  stepper.set("Initial Value", o.from);
-  stepper.set("Max Value", std::max(o.from, o.to));
-  stepper.set("Min Value", std::min(o.from, o.to));
-  stepper.set("Max Steps", o.maxSteps);
-  stepper.set("Max Nonlinear Iterations", o.maxNewtonIterations);
-  stepper.set("Compute Eigenvalues", false);
-  params->sublist("LOCA").sublist("Predictor").set("Method", "Tangent");
-  auto& step = params->sublist("LOCA").sublist("Step Size");
-  step.set("Method", "Adaptive");
-  step.set("Initial Step Size", o.to >= o.from ? o.initialStep : -o.initialStep);
-  step.set("Min Step Size", o.minStep);
-  step.set("Max Step Size", o.maxStep);
-  params->sublist("NOX").sublist("Printing").set("Output Information", 0);
-  auto globalData = LOCA::createGlobalData(params);
-  {
-    LOCA::ParameterVector p;
-    p.addParameter("p", o.from);
-    Interface iface(problem, x0, o.from, branch);
-    auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
-    group->setParams(p);
-    auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
-    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::NormF(o.tolerance)));
-    tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(o.maxNewtonIterations)));
-    LOCA::Stepper stepperObject(globalData, group, tests, params);
-    LOCA::Abstract::Iterator::IteratorStatus status = LOCA::Abstract::Iterator::Failed;
-    try {
-      status = stepperObject.run();
-    } catch (const std::exception& e) {
-      branch.stopReason = std::string("continuation stopped by an exception: ") + e.what();
-    } catch (...) {
-      branch.stopReason = "continuation stopped: Newton could not start (no converged initial point)";
-    }
-    branch.finished = status == LOCA::Abstract::Iterator::Finished;
-    branch.failedSteps = stepperObject.getNumFailedSteps();
-    if (branch.stopReason.empty())
-      branch.stopReason = branch.finished ? "end of the parameter range reached"
-                                          : "step size fell below the minimum or too many steps (the branch so far is kept)";
+  // A failed evaluation inside LOCA (e.g. a parameter leaving its domain in a
+  // corrector iteration) ends its run by an exception: restart from the last
+  // converged point with a quarter of the step, in the direction the branch
+  // was moving, a few times, as a step cut.
+  const double forward = o.to >= o.from ? 1.0 : -1.0;
+  bool threw = false;
+  runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw);
+  double step = o.initialStep;
+  for (int restart = 0; threw && restart < 6 && branch.points.size() >= 2; ++restart) {
+    step /= 4;
+    if (step < o.minStep) break;
+    const auto& last = branch.points.back();
+    const double moving = last.parameter - branch.points[branch.points.size() - 2].parameter;
+    const std::size_t before = branch.points.size();
+    runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw);
+    if (branch.points.size() > before) step = o.initialStep;  // progress: the next cut starts afresh
   }
-  LOCA::destroyGlobalData(globalData);
   return branch;
 }
 
