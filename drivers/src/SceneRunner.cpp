@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "DemoScene.hpp"
@@ -19,6 +20,7 @@
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/BifurcationFlags.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
@@ -452,7 +454,17 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   for (const auto& name : excitations) {
     auto f = ex.section(name);
     if (f.has("engine_order")) f.getInt("engine_order", 0);  // read above
-    hb.addExcitation(f.getInt("dof", 0), f.getInt("harmonic", 1), f.getDouble("cos", 0.0), f.getDouble("sin", 0.0));
+    // cos/sin coefficients, or amplitude A and phase phi (radians): A cos(h w t + phi).
+    double c = f.getDouble("cos", 0.0), sn = f.getDouble("sin", 0.0);
+    if (f.has("amplitude")) {
+      if (f.has("cos") || f.has("sin"))
+        throw InputError(f.location(), "give either cos/sin or amplitude/phase, not both");
+      const double A = f.getDouble("amplitude", 0.0), phi = f.getDouble("phase", 0.0);
+      c = A * std::cos(phi), sn = -A * std::sin(phi);
+    } else if (f.has("phase")) {
+      throw InputError(f.where("phase"), "goes with amplitude (A cos(h w t + phase))");
+    }
+    hb.addExcitation(f.getInt("dof", 0), f.getInt("harmonic", 1), c, sn);
     f.rejectUnknownKeys();
   }
   setup.excitationScale = ex.getDouble("scale", 1.0);
@@ -707,7 +719,22 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   for (const auto& c : hb.elements()) hill = hill && !c.element->usesVelocity();
   if (!hill) log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
   int unstablePoints = 0;
+  std::map<std::string, int> special;  // fold, branch_point, period_doubling, neimark_sacker
   if (comm->getRank() == 0) {
+    // Stability of every point first: the flags need the neighbours.
+    std::vector<hbm::CurvePointStability> stability;
+    for (const auto& pt : branch.points) {
+      hbm::CurvePointStability st;
+      st.parameter = pt.parameter;
+      st.omega = frequency(pt.parameter);
+      if (hill) {
+        const auto fl = hbm::hillStability(hb, pt.x, st.omega);
+        st.stable = fl.stable ? 1 : 0;
+        st.leading = fl.exponents(0);
+      }
+      stability.push_back(st);
+    }
+    const auto flags = hbm::bifurcationFlags(stability);
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
     csv.precision(12);
@@ -718,7 +745,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         if (h > 0) csv << ",dof" << d << "_amp_h" << h;
       csv << ",dof" << d << "_max";
     }
-    csv << ",stable,max_floquet_real\n";
+    csv << ",stable,max_floquet_real,bifurcation\n";
     const int nc = hb.numCoefficients();
     for (std::size_t i = 0; i < branch.points.size(); ++i) {
       const auto& pt = branch.points[i];
@@ -734,15 +761,16 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
         if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);  // x: the parameter
       }
       if (hill) {
-        const auto fl = hbm::hillStability(hb, pt.x, w);
-        csv << "," << (fl.stable ? 1 : 0) << "," << fl.maxRealPart;
-        plotStable.push_back(fl.stable ? 1 : 0);
-        unstablePoints += fl.stable ? 0 : 1;
+        const auto& st = stability[i];
+        csv << "," << st.stable << "," << st.leading.real();
+        plotStable.push_back(st.stable);
+        unstablePoints += st.stable ? 0 : 1;
       } else {
         csv << ",,";
         plotStable.push_back(1);
       }
-      csv << "\n";
+      csv << "," << flags[i] << "\n";
+      if (!flags[i].empty()) ++special[flags[i]];
     }
     csv.close();
     if (!csv) throw Error("cannot write " + csvPath);
@@ -787,6 +815,7 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   std::ostringstream line;
   line << "forced response: " << branch.points.size() << " points (" << unstablePoints
        << " unstable by Hill's method) in " << timer.seconds() << " s, " << branch.stopReason;
+  for (const auto& [kind, count] : special) line << "; " << count << " " << kind;
   summary.computed.push_back(line.str());
   if (!branch.finished)
     log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");

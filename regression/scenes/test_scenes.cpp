@@ -18,6 +18,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/post/ResponseCurveFile.hpp"
+#include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
 using namespace cyclone;
@@ -211,15 +212,24 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   double best = 0, bestW = 0;
   int rows = 0;
   std::vector<int> stability;
+  std::vector<double> folds;
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    std::string cell;
+    for (int c = 0; c < 14 && std::getline(ss, cell, ','); ++c) v.push_back(std::stod(cell));
     ASSERT_EQ(v.size(), 14u);
+    std::getline(ss, cell);  // the bifurcation column: empty or a kind
+    if (cell == "fold") folds.push_back(v[1]);
+    else EXPECT_EQ(cell, "") << line;
     if (v[4] > best) best = v[4], bestW = v[1];
     stability.push_back(int(v[12]));
     ++rows;
   }
+  // The two folds of the H = 7 curve, flagged where the parameter turns.
+  ASSERT_EQ(folds.size(), 2u);
+  EXPECT_NEAR(folds[0], 1.2696, 1e-3);
+  EXPECT_NEAR(folds[1], 1.1157, 1e-3);
   // Hill's method: stable, then one unstable stretch (the middle branch between the
   // two folds), then stable again.
   int changes = 0;
@@ -299,7 +309,11 @@ std::vector<std::vector<double>> readCsv(const fs::path& path) {
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(cell.empty() ? NAN : std::stod(cell));
+    for (std::string cell; std::getline(ss, cell, ',');) {  // text cells (the bifurcation kind) as NaN
+      char* end = nullptr;
+      const double x = std::strtod(cell.c_str(), &end);
+      v.push_back(cell.empty() || *end != '\0' ? NAN : x);
+    }
     rows.push_back(v);
   }
   return rows;
@@ -347,4 +361,22 @@ TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {
   const auto curve = post::readResponseCurveHdf5((dirF / "frc.h5").string());
   ASSERT_EQ(curve.parameter.size(), force.size());
   EXPECT_DOUBLE_EQ(curve.parameter.back(), force.back()[3]);
+}
+
+// A force given by amplitude and phase is the same force as its cos/sin form:
+// A cos(w t + phi) = A cos(phi) cos(w t) - A sin(phi) sin(w t).
+TEST(Scenes, ExcitationByAmplitudeAndPhase) {
+  const auto dir = freshDir("amplitude_phase");
+  fs::create_directories(dir);
+  auto scene = [&](const std::string& name, const std::string& force) {
+    const auto path = dir / name;
+    std::ofstream(path) << "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 1\n    M: [1.0]\n    K: [1.0]\n"
+                           "  excitation:\n    f: {dof: 0, " + force + "}\n  continuation:\n    from: 0.5\n    to: 1.5\n";
+    return scenes::loadForcedResponseScene(path.string());
+  };
+  const double A = 0.7, phi = 0.4;
+  const auto a = scene("a.yaml", "amplitude: 0.7, phase: 0.4");
+  const auto b = scene("b.yaml", "cos: " + std::to_string(A * std::cos(phi)) + ", sin: " + std::to_string(-A * std::sin(phi)));
+  EXPECT_LT((a.system->excitation() - b.system->excitation()).norm(), 1e-6);
+  EXPECT_NEAR(a.system->amplitude(a.system->excitation(), 0, 1), A, 1e-15);
 }

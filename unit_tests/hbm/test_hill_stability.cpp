@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cyclone/hbm/CubicSpring.hpp"
+#include "cyclone/hbm/BifurcationFlags.hpp"
 #include "cyclone/hbm/HillStability.hpp"
 
 using namespace cyclone;
@@ -86,4 +87,26 @@ TEST(HillStability, DuffingMiddleBranchIsUnstable) {
   EXPECT_LT(amplitudes[1], amplitudes[2]);
   EXPECT_EQ(stable, 2);
   EXPECT_EQ(unstable, 1);
+}
+
+// Flags along synthetic curves: a fold where the parameter turns (whatever the
+// exponents), and away from folds the kind of stability loss from the exponent
+// that crosses: real, at i w/2, or another complex pair.
+TEST(BifurcationFlags, FoldsAndTheKindOfEachCrossing) {
+  using cyclone::hbm::CurvePointStability;
+  const double w = 2.0;
+  std::vector<CurvePointStability> c = {
+      {1.0, w, 1, {-0.1, 0.3}}, {1.1, w, 1, {-0.1, 0.3}}, {1.2, w, 1, {-0.01, 0}}, {1.15, w, 0, {0.02, 0}},
+      {1.1, w, 0, {0.05, 0}},   {1.05, w, 0, {0.01, 0}},  {1.1, w, 1, {-0.02, 0}}, {1.2, w, 1, {-0.1, 0.2}},
+      {1.3, w, 0, {0.01, 1.0}}, {1.4, w, 1, {-0.1, 0.2}}, {1.5, w, 0, {0.01, 0.7}}, {1.6, w, 1, {-0.1, 0.2}},
+      {1.7, w, 0, {0.01, 0.0}}};
+  const auto f = cyclone::hbm::bifurcationFlags(c);
+  EXPECT_EQ(f[2], "fold");
+  EXPECT_EQ(f[5], "fold");
+  EXPECT_EQ(f[3], "");  // the stability change at a fold is the fold
+  EXPECT_EQ(f[8], "period_doubling");
+  EXPECT_EQ(f[9], "period_doubling");  // regained: the same crossing back
+  EXPECT_EQ(f[10], "neimark_sacker");
+  EXPECT_EQ(f[12], "branch_point");
+  EXPECT_EQ(f[1], "");
 }
