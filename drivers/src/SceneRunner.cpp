@@ -533,6 +533,9 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   auto out = scene.section("output");
   setup.outputDofs = out.getIntList("dofs", {0});
   const auto& dofs = setup.outputDofs;
+  setup.stability = out.getString("stability", "auto");
+  if (setup.stability != "auto" && setup.stability != "true" && setup.stability != "false")
+    throw InputError(out.where("stability"), "must be auto, true or false");
   out.rejectUnknownKeys();
   for (int d : dofs)
     if (d < 0 || d >= n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");
@@ -715,9 +718,17 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
   const std::string csvPath = outDir + "/frc.csv";
   std::vector<double> plotW, plotMax;
   std::vector<int> plotStable;
-  bool hill = true;
+  bool hill = setup.stability != "false";
   for (const auto& c : hb.elements()) hill = hill && !c.element->usesVelocity();
-  if (!hill) log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
+  if (!hill && setup.stability != "false")
+    log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
+  // Hill's eigenproblem is dense of size 2 n nc: about a second per point at
+  // 1200, so larger systems skip it unless the scene insists.
+  if (hill && setup.stability == "auto" && 2 * hb.numUnknowns() > 1200) {
+    hill = false;
+    log::warn("stability not computed: Hill's eigenproblem has " + std::to_string(2 * hb.numUnknowns()) +
+              " unknowns per point (set output: stability: true to compute it anyway)");
+  }
   int unstablePoints = 0;
   std::map<std::string, int> special;  // fold, branch_point, period_doubling, neimark_sacker
   if (comm->getRank() == 0) {
