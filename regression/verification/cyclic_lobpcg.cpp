@@ -5,12 +5,12 @@
 //
 // Tolerance 1e-8 relative on frequencies: both solvers stop at relative residuals
 // of 1e-10, and an eigenvalue's error is of the order of the residual squared over
-// the gap to its neighbours, so converged runs agree to about 1e-12 (observed:
-// 1e-11 or better). 1e-8 leaves room for rounding and is far below what a real
+// the gap to its neighbours, so converged runs agree to about 1e-11 (observed:
+// 2e-11 or better). 1e-8 leaves room for rounding and is far below what a real
 // disagreement gives: a missed member of a pair, a skipped or spurious mode shifts
-// the sorted lists against each other by a whole spectral gap (over 20 % between
-// the distinct frequencies here), and a stalled vector fails the solver's own
-// backward-error check (1e-6) or leaves an error near its residual, >> 1e-8.
+// the sorted lists against each other by a whole spectral gap (at least 4 %
+// between the distinct frequencies here), and a stalled vector fails the solver's
+// own backward-error check (1e-6) or leaves an error near its residual, >> 1e-8.
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
@@ -27,15 +27,15 @@ using namespace cyclone;
 TEST(CyclicLobpcg, AgreesWithShiftInvertPerNodalDiameter) {
   log::setQuiet(true);
   mesh::ShroudedSectorParameters p;
-  p.sectors = 8;
-  p.meshSize = 10.0;
+  p.sectors = 12;  // k = 0 and 6 here once met an indefinite MueLu V-cycle (see IterativeSolver.cpp)
+  p.meshSize = 12.0;
   const auto sectorMesh = mesh::generateShroudedSector(p);
   const auto sector = cyclic::makeCyclicSector(sectorMesh, p.sectors, {}, {"disc_left", "shroud_left"},
                                                {"disc_right", "shroud_right"});
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
   problem.modesPerHarmonic = 4;
-  const std::vector<int> harmonics = {0, 2, p.sectors / 2};
+  const std::vector<int> harmonics = {0, 3, p.sectors / 2};
   std::printf("\ncyclic sector (%d sectors, %lld nodes): LOBPCG + MueLu against shift-invert\n", p.sectors,
               (long long)sectorMesh.numNodes());
   for (int k : harmonics) {

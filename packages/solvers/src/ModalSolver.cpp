@@ -172,8 +172,8 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
   if (status != Anasazi::Converged || sol.numVecs < nev)
     throw SolverError("LOBPCG: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
                       " modes converged (at most " + std::to_string(maxIterations) +
-                      " iterations; a stall, or a failed Cholesky reported by Anasazi, means a weak "
-                      "preconditioner: check the near null space)");
+                      " iterations; a stall, or a failed Cholesky reported by Anasazi, means a weak or "
+                      "indefinite preconditioner: check the near null space)");
   std::vector<int> order(sol.numVecs);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return sol.Evals[a].realpart < sol.Evals[b].realpart; });
