@@ -168,6 +168,19 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   problem.fixedNodeSets = fixedSets;
   problem.harmonics = m.getIntList("nodal_diameters", {});
   problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
+  const std::string eigenSolver = m.getString("eigen_solver", "shift_invert");
+  if (eigenSolver == "lobpcg") problem.method = solvers::EigenMethod::Lobpcg;
+  else if (eigenSolver != "shift_invert")
+    throw InputError(m.where("eigen_solver"), "unknown eigen solver '" + eigenSolver +
+                                                  "' (use shift_invert: CHOLMOD factorization; or lobpcg: LOBPCG + "
+                                                  "MueLu, no factorization, for meshes too big to factor)");
+  if (problem.method == solvers::EigenMethod::Lobpcg) {
+    if (m.has("shift"))
+      throw InputError(m.where("shift"), "applies to eigen_solver shift_invert only (lobpcg takes no shift)");
+    if (fixedSets.empty())
+      throw InputError(m.where("eigen_solver"), "lobpcg needs a constrained model (constraints/fixed_node_sets): "
+                                                "rigid-body modes need shift_invert");
+  }
   // Without a shift the solver picks one (0 when K factors; below the first elastic
   // eigenvalue when rigid-body modes exist).
   problem.shift = m.has("shift") ? m.getDouble("shift", 0.0) : solvers::ModalOptions::automaticShift();

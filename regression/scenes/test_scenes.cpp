@@ -60,6 +60,22 @@ std::string failure(const std::string& yaml, const fs::path& dir) {
   return "";
 }
 
+// frequencies.csv as (rpm, nd) -> frequencies in mode order; checks the header.
+std::map<std::pair<double, int>, std::vector<double>> readFrequencies(const fs::path& dir) {
+  std::map<std::pair<double, int>, std::vector<double>> f;
+  std::ifstream csv(dir / "frequencies.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "rpm,nd,mode,freq_hz");
+  while (std::getline(csv, line)) {
+    double rpm, hz;
+    int nd, mode;
+    EXPECT_EQ(std::sscanf(line.c_str(), "%lf,%d,%d,%lf", &rpm, &nd, &mode, &hz), 4) << line;
+    f[{rpm, nd}].push_back(hz);
+  }
+  return f;
+}
+
 }  // namespace
 
 TEST(Scenes, DemoSceneWritesSaneProducts) {
@@ -143,18 +159,8 @@ TEST(Scenes, ModalSceneWritesFrequenciesPerNodalDiameter) {
   o.outputDirectory = dir.string();
   const auto summary = scenes::runSceneText(yaml, "modal.yaml", o, Tpetra::getDefaultComm());
   for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
-  std::ifstream csv(dir / "frequencies.csv");
-  std::string line;
-  std::getline(csv, line);
-  EXPECT_EQ(line, "rpm,nd,mode,freq_hz");
   // Rows: per speed, ND 0 and 6 (= N/2) single (2 modes), ND 3 pairs (4 modes).
-  std::map<std::pair<double, int>, std::vector<double>> f;
-  while (std::getline(csv, line)) {
-    double rpm, hz;
-    int nd, mode;
-    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%d,%d,%lf", &rpm, &nd, &mode, &hz), 4) << line;
-    f[{rpm, nd}].push_back(hz);
-  }
+  auto f = readFrequencies(dir);
   auto at = [&](double rpm, int nd) { return f[std::make_pair(rpm, nd)]; };
   EXPECT_EQ(f.size(), 6u);
   EXPECT_EQ(at(0.0, 0).size(), 2u);
@@ -165,6 +171,31 @@ TEST(Scenes, ModalSceneWritesFrequenciesPerNodalDiameter) {
   for (int nd : {0, 3, 6}) EXPECT_GT(at(12000.0, nd)[0], at(0.0, nd)[0]) << "ND " << nd;
 }
 
+// eigen_solver: lobpcg (LOBPCG + MueLu, no factorization) gives the shift-invert
+// frequencies of the same scene (1e-8: see regression/verification/cyclic_lobpcg.cpp).
+TEST(Scenes, ModalSceneByLobpcgMatchesShiftInvert) {
+  log::setQuiet(true);
+  const std::string yaml =
+      "cyclone:\n  analysis: modal\n  mesh:\n    shrouded_sector:\n      sectors: 12\n      mesh_size: 12.0\n"
+      "  constraints:\n    fixed_node_sets: [bore]\n"
+      "  modal:\n    nodal_diameters: [0, 6]\n    modes_per_nd: 2\n    prestress: none\n";
+  std::map<std::pair<double, int>, std::vector<double>> f[2];
+  for (int i = 0; i < 2; ++i) {
+    const auto dir = freshDir(i ? "lobpcg" : "shift_invert");
+    scenes::SceneOverrides o;
+    o.outputDirectory = dir.string();
+    scenes::runSceneText(yaml + (i ? "    eigen_solver: lobpcg\n" : "    eigen_solver: shift_invert\n"), "modal.yaml", o,
+                         Tpetra::getDefaultComm());
+    f[i] = readFrequencies(dir);
+  }
+  ASSERT_EQ(f[0].size(), 2u);
+  for (const auto& [key, reference] : f[0]) {
+    ASSERT_EQ(f[1][key].size(), reference.size()) << "ND " << key.second;
+    for (std::size_t m = 0; m < reference.size(); ++m)
+      EXPECT_NEAR(f[1][key][m] / reference[m], 1.0, 1e-8) << "ND " << key.second << " mode " << m + 1;
+  }
+}
+
 TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   const auto dir = freshDir("modalbad");
   const std::string base =
@@ -173,6 +204,11 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   auto msg = failure(base + "  modal:\n    nodal_diameters: [7]\n", dir);
   EXPECT_NE(msg.find("nodal_diameters"), std::string::npos) << msg;
   EXPECT_NE(msg.find("0..6"), std::string::npos) << msg;
+  msg = failure(base + "  modal:\n    eigen_solver: arpack\n", dir);
+  EXPECT_NE(msg.find("eigen_solver"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("lobpcg"), std::string::npos) << msg;
+  msg = failure(base + "  modal:\n    eigen_solver: lobpcg\n    shift: -1.0\n", dir);
+  EXPECT_NE(msg.find("shift_invert only"), std::string::npos) << msg;
   msg = failure(base + "  cyclic:\n    configuration: glued\n", dir);
   EXPECT_NE(msg.find("configuration"), std::string::npos) << msg;
   msg = failure(base + "  cyclic:\n    sectors: 1\n", dir);

@@ -52,6 +52,25 @@ TEST(CyclicTransform, UnknownCountsAndRightFacePhase) {
   }
 }
 
+// Every unknown's master DOF (where the rigid-body near null space is sampled) lies
+// on the node that owns it, so the unknowns come blocked by node (3 x copies each),
+// as MueLu's aggregation needs, for every k. The right face must not take a master
+// even where it carries a left unknown alone (k = 0: the axial component, Q_zz = 1).
+// Node 0 is the right face here: it comes first in physical order.
+TEST(CyclicTransform, MastersOnTheOwningNodeSoUnknownsAreBlockedByNode) {
+  const int N = 8;
+  cyclic::CyclicSector sector;
+  sector.sectors = N;
+  sector.left = {1};
+  sector.right = {0};
+  const std::vector<char> fixed(9, 0);
+  for (int k = 0; k <= N / 2; ++k) {
+    const auto T = cyclic::cyclicTransform(3, sector, k, fixed, sector.rotation());
+    EXPECT_TRUE(T.blockedByNode()) << "k " << k;
+    for (long long e = 0; e < T.numEquations(); ++e) EXPECT_NE(T.masterDof()[e] / 3, 0) << "k " << k << " unknown " << e;
+  }
+}
+
 TEST(CyclicTransform, AxisNodeKeepsOnlyAllowedMotions) {
   // A node on the axis of an 8-sector model: axial motion for k = 0, in-plane
   // (one travelling pair: 2 unknowns over the two copies) for k = 1, nothing beyond.

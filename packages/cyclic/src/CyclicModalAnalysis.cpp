@@ -40,6 +40,12 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));
     opt.shift = problem.shift;
     opt.blockSize = std::max(4, 2 * hm.copies);
+    opt.method = problem.method;
+    if (opt.method == solvers::EigenMethod::Lobpcg) {
+      // The sector's unknowns are rigid-body-like per copy away from the side faces.
+      opt.nearNullSpace = assembler.rigidBodyModes();
+      opt.equationsPerNode = assembler.transform().blockedByNode() ? 3 * hm.copies : 1;
+    }
     const double assemblySeconds = timer.seconds();
     const auto result = solvers::solveModes(*K, *M, opt);
     hm.frequenciesHz = result.frequenciesHz;
@@ -53,8 +59,10 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     msg << "nodal diameter " << k << ": " << hm.equations << " equations, " << opt.numModes << " modes, "
         << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.front()) << " .. "
         << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.back()) << " Hz, " << hm.seconds
-        << " s (assembly " << assemblySeconds << " s, factorization " << result.factorSeconds << " s, eigen-solution "
-        << result.solveSeconds << " s, " << result.operatorApplies << " solves)";
+        << " s (assembly " << assemblySeconds << " s, "
+        << (opt.method == solvers::EigenMethod::Lobpcg ? "preconditioner " : "factorization ") << result.factorSeconds
+        << " s, eigen-solution " << result.solveSeconds << " s, " << result.operatorApplies
+        << (opt.method == solvers::EigenMethod::Lobpcg ? " LOBPCG iterations)" : " solves)");
     log::info(msg.str());
     out.push_back(std::move(hm));
   }

@@ -27,11 +27,22 @@ void DofTransform::finalize(long long numEquations) {
       if (t.equation < 0 || t.equation >= numEquations)
         throw Error("DofTransform: equation " + std::to_string(t.equation) + " out of range");
       terms_.push_back(t);
-      // Copy 0 DOFs in physical order come first, so masters are copy-0 DOFs when possible.
-      if (t.coefficient == 1.0 && building_[s].size() == 1 && master_[t.equation] < 0) {
-        master_[t.equation] = (long long)(s % (std::size_t(numNodes_) * 3));
-        masterCopy_[t.equation] = int(s / (std::size_t(numNodes_) * 3));
-      }
+    }
+  // Masters: a DOF that carries the unknown alone with coefficient 1. Preferred on a
+  // node whose three components all do (the node that owns the unknowns): a cyclic
+  // right-face node can carry one unknown of its left partner alone too (k = 0, the
+  // axial component), and must not take it. Copy 0 DOFs in physical order come
+  // first, so masters are copy-0 DOFs when possible.
+  const std::size_t perCopy = std::size_t(numNodes_) * 3;
+  auto alone = [&](std::size_t s) { return building_[s].size() == 1 && building_[s][0].coefficient == 1.0; };
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t s = 0; s < building_.size(); ++s) {
+      const std::size_t first = s - s % 3;  // component 0 of the same node and copy
+      if (!alone(s) || (pass == 0 && !(alone(first) && alone(first + 1) && alone(first + 2)))) continue;
+      const long long eq = building_[s][0].equation;
+      if (master_[eq] >= 0) continue;
+      master_[eq] = (long long)(s % perCopy);
+      masterCopy_[eq] = int(s / perCopy);
     }
   // Blocked by node: unknowns come in runs of 3 x copies, each run one node's masters.
   blocked_ = numEquations % (3 * copies_) == 0;

@@ -48,12 +48,19 @@ Teuchos::RCP<linalg::MultiVector> viewOn(const linalg::MultiVector& v,
 
 // Smoothed aggregation for elasticity: Chebyshev smoothing, relaxation on the
 // coarse level (Debian's KLU2 is wrong on more than one rank).
+// Chebyshev needs an upper bound of the spectrum of D^-1 A (the prolongator damping
+// reuses it). Ifpack2's default, 10 power iterations, can fall short: on a 12-sector
+// cyclic sector (k = 0 and N/2) it gave 4.08 for a true 4.78, more than the 1.1 boost covers,
+// so the smoother amplified the top modes and the V-cycle was indefinite
+// ((Ke)^T P (Ke) < 0 for some e): LOBPCG stalled and ended in a failed Cholesky.
+// 100 iterations (one-off, at set-up) give 4.78 there.
 Teuchos::ParameterList smoothedAggregationParameters(int equationsPerNode) {
   Teuchos::ParameterList mueluParams;
   mueluParams.set("verbosity", "none");
   mueluParams.set("multigrid algorithm", "sa");
   mueluParams.set("smoother: type", "CHEBYSHEV");
   mueluParams.sublist("smoother: params").set("chebyshev: degree", 2);
+  mueluParams.sublist("smoother: params").set("chebyshev: eigenvalue max iterations", 100);
   mueluParams.set("coarse: type", "RELAXATION");
   mueluParams.sublist("coarse: params").set("relaxation: type", "Symmetric Gauss-Seidel");
   mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);

@@ -124,14 +124,31 @@ static void finishModes(const linalg::Matrix& K, const linalg::Matrix& M, const 
   }
 }
 
+// LOBPCG needs a preconditioner that resolves the low end of the spectrum; for
+// elasticity that means MueLu with the rigid-body near null space, blocked by node.
+// With MueLu's default (a constant per scalar unknown) or none, LOBPCG creeps for
+// hundreds of iterations until the update of the Ritz vectors outside X is tiny,
+// [CX CP]^T M [CX CP] is numerically singular, and Anasazi's full orthogonalisation
+// stops with a failed Cholesky (reproduced on cyclic sectors with MueLu's default
+// near null space). So the near null space is required unless the unknowns are scalar
+// (equationsPerNode = 1, where MueLu's constant is the right one).
 static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& opt) {
+  const long long n = K.getGlobalNumRows();
+  const int nev = opt.numModes;
+  if (nev < 1) throw InputError("modes", "number of modes must be at least 1");
+  const int bs = std::max(opt.blockSize, nev + 2);  // one block holding all wanted modes and a margin
+  if (bs >= n)
+    throw InputError("modes", "asked for " + std::to_string(nev) + " modes of a model with only " +
+                                  std::to_string(n) + " free degrees of freedom (LOBPCG needs modes + 2 fewer)");
+  if (opt.nearNullSpace.is_null() && opt.equationsPerNode != 1)
+    throw InputError("LOBPCG", "needs the near null space for its MueLu preconditioner (Assembler::rigidBodyModes()); "
+                               "without it the iteration stalls");
   ModalResult result;
+  result.shift = 0;  // no shift: LOBPCG works on K and M directly
   Timer timer;
   auto prec = makeMueLuPreconditioner(K, opt.nearNullSpace, opt.equationsPerNode);
   result.factorSeconds = timer.seconds();  // the preconditioner set-up stands in for the factorization
   timer.restart();
-  const int nev = opt.numModes;
-  const int bs = std::max(opt.blockSize, nev + 2);  // one block holding all wanted modes and a margin
   auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
   X0->randomize();
   auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(
@@ -140,10 +157,11 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
   problem->setNEV(nev);
   problem->setPrec(prec);
   if (!problem->setProblem()) throw SolverError("Anasazi rejected the LOBPCG set-up");
+  const int maxIterations = 2000;
   Teuchos::ParameterList pl;
   pl.set("Which", "SM");
   pl.set("Block Size", bs);
-  pl.set("Maximum Iterations", 2000);
+  pl.set("Maximum Iterations", maxIterations);
   pl.set("Convergence Tolerance", std::max(opt.tolerance, 1e-10));
   pl.set("Use Locking", true);
   pl.set("Full Ortho", true);
@@ -153,7 +171,9 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
   const auto& sol = problem->getSolution();
   if (status != Anasazi::Converged || sol.numVecs < nev)
     throw SolverError("LOBPCG: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
-                      " modes converged in 2000 iterations");
+                      " modes converged (at most " + std::to_string(maxIterations) +
+                      " iterations; a stall, or a failed Cholesky reported by Anasazi, means a weak or "
+                      "indefinite preconditioner: check the near null space)");
   std::vector<int> order(sol.numVecs);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return sol.Evals[a].realpart < sol.Evals[b].realpart; });
@@ -164,12 +184,18 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
     vectors.push_back(sol.Evecs->getVector(order[i]));
   }
   finishModes(K, M, lambda, vectors, result);
+  for (int i = 0; i < nev; ++i)
+    if (!(result.residuals[i] < 1e-6))
+      throw SolverError("LOBPCG: mode " + std::to_string(i + 1) + " has relative residual " +
+                        std::to_string(result.residuals[i]));
   result.operatorApplies = manager.getNumIters();
   result.solveSeconds = timer.seconds();
   return result;
 }
 
 ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options) {
+  // LOBPCG takes no shift: choosing one would factor K, which that path exists to avoid.
+  if (options.method == EigenMethod::Lobpcg) return solveModesLobpcg(K, M, options);
   ModalOptions opt = options;
   int rigidModes = 0;
   if (std::isnan(opt.shift)) {
@@ -178,7 +204,6 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
   }
   ModalResult result;
   result.shift = opt.shift;
-  if (opt.method == EigenMethod::Lobpcg) return solveModesLobpcg(K, M, opt);
   const long long n = K.getGlobalNumRows();
   if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
   if (opt.numModes >= n)

@@ -1,8 +1,9 @@
 #pragma once
 // Modes of a cyclic sector for each requested harmonic index (nodal
 // diameter): the cyclic transform per k, assembled K and M, Anasazi
-// shift-invert. Mode shapes are mass-normalised over the sector in the real
-// form: sum over the copies of u_c^T M u_c = 1.
+// shift-invert (or LOBPCG + MueLu, no factorization). Mode shapes are
+// mass-normalised over the sector in the real form: sum over the copies of
+// u_c^T M u_c = 1.
 #include <array>
 #include <string>
 #include <vector>
@@ -20,7 +21,10 @@ struct CyclicModalProblem {
   std::vector<std::string> fixedNodeSets;
   std::vector<int> harmonics;     ///< empty: all of 0..N/2
   int modesPerHarmonic = 6;       ///< distinct frequencies per k (a pair counts once)
-  double shift = 0.0;             ///< (rad/s)^2, below the lowest eigenvalue
+  double shift = 0.0;             ///< (rad/s)^2, below the lowest eigenvalue (shift-invert only)
+  /// Shift-invert (CHOLMOD) or LOBPCG with MueLu preconditioned by the per-copy
+  /// rigid-body near null space (constrained models only).
+  solvers::EigenMethod method = solvers::EigenMethod::ShiftInvert;
   /// Prestressed tangent K + K_sigma - K_Omega at this state's speed; null: K alone.
   const PrestressState* prestress = nullptr;
 };

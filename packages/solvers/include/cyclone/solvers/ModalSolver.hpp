@@ -11,14 +11,18 @@
 namespace cyclone::solvers {
 
 /// Shift-invert block Krylov-Schur (factorization, the default) or LOBPCG with a
-/// MueLu preconditioner (no factorization: for meshes too big to factor).
+/// MueLu preconditioner (no factorization: for meshes too big to factor; K must be
+/// positive definite, i.e. a constrained model, and the shift is not used).
 enum class EigenMethod { ShiftInvert, Lobpcg };
 
 struct ModalOptions {
   EigenMethod method = EigenMethod::ShiftInvert;
   /// LOBPCG: near null space for the MueLu preconditioner (Assembler::rigidBodyModes).
+  /// Required unless equationsPerNode is 1: without it LOBPCG stalls.
   Teuchos::RCP<const linalg::MultiVector> nearNullSpace;
-  int equationsPerNode = 3;  ///< LOBPCG: MueLu's block size (1 when unknowns are not 3 per node)
+  /// LOBPCG: MueLu's block size, the unknowns per node: 3 x copies when the transform
+  /// is blockedByNode() (a cyclic pair has 6), otherwise 1.
+  int equationsPerNode = 3;
   int numModes = 10;
   /// Shift sigma in (rad/s)^2; must lie below the lowest eigenvalue so that
   /// K - sigma M is positive definite. 0 suits constrained models. A free body
@@ -40,7 +44,7 @@ struct ModalResult {
   std::vector<double> residuals;     ///< ||K x - lambda M x|| / ((||K||_F + |lambda| ||M||_F) ||x||)
   Teuchos::RCP<linalg::MultiVector> modes;  ///< mass-normalised: x^T M x = 1
   int operatorApplies = 0;
-  double shift = 0;  ///< the shift used (chosen when automatic)
+  double shift = 0;  ///< the shift used (chosen when automatic; 0 for LOBPCG)
   double factorSeconds = 0, solveSeconds = 0;
 };
 
