@@ -304,6 +304,23 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
     if (required) throw InputError(s.where(key), "is required (" + std::to_string(n * n) + " numbers, row by row)");
     return Eigen::MatrixXd::Zero(n, n);
   }
+  if (s.isSection(key)) {  // sparse: {rows: [...], cols: [...], values: [...]}, 0-based, duplicates summed
+    auto t = s.section(key);
+    const auto r = t.getIntList("rows", {}), c = t.getIntList("cols", {});
+    const auto v = t.getDoubleList("values", {});
+    t.rejectUnknownKeys();
+    if (r.size() != v.size() || c.size() != v.size())
+      throw InputError(t.location(), "rows, cols and values must have the same length");
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (r[k] < 0 || r[k] >= n || c[k] < 0 || c[k] >= n)
+        throw InputError(t.location(), "entry " + std::to_string(k) + " (" + std::to_string(r[k]) + ", " +
+                                           std::to_string(c[k]) + ") is outside " + std::to_string(n) + " x " +
+                                           std::to_string(n));
+      A(r[k], c[k]) += v[k];
+    }
+    return A;
+  }
   const auto v = s.getDoubleList(key, {});
   if (int(v.size()) != n * n)
     throw InputError(s.where(key), "needs " + std::to_string(n * n) + " numbers (row by row for " +
@@ -343,6 +360,9 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     const Eigen::VectorXd c = 2 * zeta * modes.eigenvalues().cwiseMax(0).cwiseSqrt();
     C += MPhi * c.asDiagonal() * MPhi.transpose();
   }
+  std::vector<std::string> dofNames = sys.getStringList("dof_names", {});
+  if (!dofNames.empty() && int(dofNames.size()) != n)
+    throw InputError(sys.where("dof_names"), "needs one name per DOF (" + std::to_string(n) + ")");
   hbm::CyclicCoupling coupling;
   coupling.sectors = sys.getInt("sectors", 1);
   if (coupling.sectors < 1) throw InputError(sys.where("sectors"), "must be >= 1 (1: not cyclic)");
@@ -441,6 +461,8 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
 
   ForcedResponseSetup setup;
   setup.elementNames = elementNames;
+  setup.dofNames = dofNames;
+  for (int d = int(setup.dofNames.size()); d < n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
   auto& hb = *setup.system;
 
@@ -764,10 +786,11 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg:
     csv.precision(12);
     csv << "point,omega_rad_s,freq_hz" << (byOmega ? "" : "," + parameterName);
     for (int d : dofs) {
-      csv << ",dof" << d << "_h0";
+      const std::string& name = setup.dofNames[d];
+      csv << "," << name << "_h0";
       for (int h : harmonics.harmonics())
-        if (h > 0) csv << ",dof" << d << "_amp_h" << h;
-      csv << ",dof" << d << "_max";
+        if (h > 0) csv << "," << name << "_amp_h" << h;
+      csv << "," << name << "_max";
     }
     csv << ",stable,max_floquet_real,bifurcation\n";
     const int nc = hb.numCoefficients();

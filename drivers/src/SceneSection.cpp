@@ -26,6 +26,8 @@ void SceneSection::markUsed(const std::string& key) { used_.insert(key); }
 
 bool SceneSection::has(const std::string& key) const { return list_.isParameter(key); }
 
+bool SceneSection::isSection(const std::string& key) const { return has(key) && list_.isSublist(key); }
+
 double SceneSection::getDouble(const std::string& key, double fallback) {
   markUsed(key);
   if (!has(key)) return fallback;

@@ -416,3 +416,27 @@ TEST(Scenes, ExcitationByAmplitudeAndPhase) {
   EXPECT_LT((a.system->excitation() - b.system->excitation()).norm(), 1e-6);
   EXPECT_NEAR(a.system->amplitude(a.system->excitation(), 0, 1), A, 1e-15);
 }
+
+// A sparse matrix (triplets) is the same matrix as its dense form; DOF names
+// label the outputs.
+TEST(Scenes, SparseMatricesAndDofNames) {
+  const auto dir = freshDir("sparse");
+  fs::create_directories(dir);
+  auto scene = [&](const std::string& name, const std::string& K) {
+    const auto path = dir / name;
+    std::ofstream(path) << "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 2\n"
+                           "    M: [1.0, 0.0, 0.0, 1.0]\n    K: " + K + "\n    dof_names: [disc, tip]\n"
+                           "  excitation:\n    f: {dof: 0, cos: 1.0}\n  continuation:\n    from: 0.5\n    to: 1.5\n";
+    return scenes::loadForcedResponseScene(path.string());
+  };
+  const auto dense = scene("dense.yaml", "[3.0, -1.0, -1.0, 2.0]");
+  const auto sparse = scene("sparse.yaml", "{rows: [0, 0, 1, 1, 1], cols: [0, 1, 0, 1, 1], values: [3.0, -1.0, -1.0, 1.5, 0.5]}");
+  EXPECT_EQ((dense.system->K() - sparse.system->K()).norm(), 0.0);
+  EXPECT_EQ(sparse.dofNames, (std::vector<std::string>{"disc", "tip"}));
+  try {
+    scene("bad.yaml", "{rows: [0, 2], cols: [0, 0], values: [1.0, 1.0]}");
+    ADD_FAILURE() << "an entry outside the matrix was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside 2 x 2"), std::string::npos) << e.what();
+  }
+}

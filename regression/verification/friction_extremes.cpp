@@ -24,6 +24,7 @@ struct Case {
   double kt, kn, mu, staticLoad, dampingScale;
   double limitKt;  // closed form of the x response with this tangential spring; < 0: none
   double tolerance = 1e-10;  // the continuation's (relative) tolerance
+  double excitation = 10;    // the excitation scale s
 };
 
 }  // namespace
@@ -42,6 +43,8 @@ TEST(FrictionExtremes, ConvergeOrStopWithAReason) {
       {"preload 1e9, tolerance 1e-10", 5, 21, 0.85, 1e9, 1, -1},
       {"preload 1e9 (stuck), tolerance 1e-6", 5, 21, 0.85, 1e9, 1, 5.0, 1e-6},
       {"zero damping", 5, 21, 0.85, 100, 0, -1},
+      // Every force 1e-9 times smaller: amplitudes of 1e-8 converge like O(1) ones.
+      {"tiny amplitudes (forces x 1e-9)", 5, 21, 0.85, 1e-7, 1, 5.0, 1e-10, 1e-8},
   };
   for (const Case& c : cases) {
     Timer timer;
@@ -53,12 +56,13 @@ TEST(FrictionExtremes, ConvergeOrStopWithAReason) {
     sys.setDampingScale(c.dampingScale);
     // The static load comes from the scene (100); rescale it to the case's.
     sys.addStaticLoadCoefficients((c.staticLoad / 100.0 - 1.0) * sys.staticLoad());
-    setup.excitationScale = 10;
+    setup.excitationScale = c.excitation;
     setup.continuation.from = 3.0, setup.continuation.to = 5.0;
     setup.continuation.maxSteps = 3000;
     setup.continuation.tolerance = c.tolerance;
     const auto problem = scenes::continuationProblem(sys, setup.parameter, 0, setup.excitationScale);
-    const auto branch = continuation::traceBranch(problem, sys.linearizedSolution(3.0, 10), setup.continuation);
+    const auto branch =
+        continuation::traceBranch(problem, sys.linearizedSolution(3.0, c.excitation), setup.continuation);
     // Every returned point solves the equations relative to the largest force in them.
     double worst = 0, worstLimit = 0, peak = 0;
     for (const auto& pt : branch.points) {
@@ -72,7 +76,7 @@ TEST(FrictionExtremes, ConvergeOrStopWithAReason) {
         const double w = pt.parameter;
         const Eigen::Matrix2cd Z = (K - w * w * sys.M()).cast<std::complex<double>>() +
                                    std::complex<double>(0, w) * sys.C().cast<std::complex<double>>();
-        const double x = std::abs((Z.inverse() * Eigen::Vector2cd(10, 1))(0));
+        const double x = std::abs((Z.inverse() * Eigen::Vector2cd(c.excitation, 0.1 * c.excitation))(0));
         worstLimit = std::max(worstLimit, std::abs(sys.amplitude(pt.x, 0, 1) / x - 1));
       }
     }

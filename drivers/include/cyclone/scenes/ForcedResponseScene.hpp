@@ -28,6 +28,7 @@ struct ForcedResponseSetup {
   std::shared_ptr<const hbm::NonlinearElement> baseElement;  ///< ElementParameter: the element as the scene gives it
   continuation::ContinuationOptions continuation;
   std::vector<int> outputDofs;
+  std::vector<std::string> dofNames;  ///< system: dof_names, or dof0, dof1, ...
   std::string stability = "auto";  ///< Hill's method per point: auto (small systems), true, false
 
   /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.

@@ -17,6 +17,8 @@ public:
   SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path);
 
   bool has(const std::string& key) const;
+  /// Whether the key holds a section (a map) rather than a value.
+  bool isSection(const std::string& key) const;
   double getDouble(const std::string& key, double fallback);
   double requireDouble(const std::string& key);
   int getInt(const std::string& key, int fallback);
