@@ -184,13 +184,16 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
                                      Eigen::MatrixXd* jacobian, double excitationScale) const {
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
-  const Eigen::MatrixXd Z = linearOperator(omega);
-  R = Z * X - excitationScale * excitation_ - static_;
-  if (jacobian) *jacobian = Z;
+  if (jacobian) {  // the linear operator straight into the Jacobian: no copy of the dense matrix
+    *jacobian = linearOperator(omega);
+    R.noalias() = *jacobian * X;
+  } else {
+    R.noalias() = linearOperator(omega) * X;
+  }
+  R -= excitationScale * excitation_ + static_;
   const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, n);  // column a: coefficients of DOF a
   Eigen::Map<Eigen::MatrixXd> Rm(R.data(), nc, n);
   const Eigen::MatrixXd& S = next_;
-  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(nc, nc);
   Eigen::MatrixXd F, Jf;
   for (const auto& c : elements_) {
     const int d = c.element->dimension();
@@ -201,24 +204,35 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
     Rm.noalias() += F * c.W.transpose();
     if (across) Rm.noalias() += S.transpose() * (F * c.Wnext.transpose());
     if (!jacobian) continue;
-    // dR_a/dX_b = B_a Jf A_b with A_b = [W(b,c) I + Wnext(b,c) S]_c stacked and
-    // B_a = [W(a,c) I + Wnext(a,c) S^T]_c side by side.
+    // dR_a/dX_b = B_a Jf A_b with A_b = [W(b,k) I + Wnext(b,k) S]_k stacked and
+    // B_a = [W(a,c) I + Wnext(a,c) S^T]_c side by side: formed block by block
+    // with the S products made once per element (and per column DOF), never
+    // by multiplying with the identity blocks.
     std::vector<int> support;
     for (int a = 0; a < n; ++a)
       if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) support.push_back(a);
-    Eigen::MatrixXd A(nc * d, nc), JA, B(nc, nc * d);
+    Eigen::MatrixXd JfS;  // Jf (I_d (x) S)
+    if (across) {
+      JfS.resize(nc * d, nc * d);
+      for (int k = 0; k < d; ++k) JfS.middleCols(k * nc, nc).noalias() = Jf.middleCols(k * nc, nc) * S;
+    }
+    Eigen::MatrixXd JA(nc * d, nc), STJA;
     for (int b : support) {
+      JA.setZero();
       for (int k = 0; k < d; ++k) {
-        A.middleRows(k * nc, nc) = c.W(b, k) * I;
-        if (across) A.middleRows(k * nc, nc) += c.Wnext(b, k) * S;
+        if (c.W(b, k) != 0) JA += c.W(b, k) * Jf.middleCols(k * nc, nc);
+        if (across && c.Wnext(b, k) != 0) JA += c.Wnext(b, k) * JfS.middleCols(k * nc, nc);
       }
-      JA.noalias() = Jf * A;
+      if (across) {
+        STJA.resize(nc * d, nc);
+        for (int k = 0; k < d; ++k) STJA.middleRows(k * nc, nc).noalias() = S.transpose() * JA.middleRows(k * nc, nc);
+      }
       for (int a : support) {
+        auto block = jacobian->block(a * nc, b * nc, nc, nc);
         for (int k = 0; k < d; ++k) {
-          B.middleCols(k * nc, nc) = c.W(a, k) * I;
-          if (across) B.middleCols(k * nc, nc) += c.Wnext(a, k) * S.transpose();
+          if (c.W(a, k) != 0) block += c.W(a, k) * JA.middleRows(k * nc, nc);
+          if (across && c.Wnext(a, k) != 0) block += c.Wnext(a, k) * STJA.middleRows(k * nc, nc);
         }
-        jacobian->block(a * nc, b * nc, nc, nc).noalias() += B * JA;
       }
     }
   }
