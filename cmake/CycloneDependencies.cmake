@@ -41,10 +41,11 @@ endif()
 
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(UMFPACK_LIBRARY umfpack REQUIRED)  # complex LU (frequency responses); same SuiteSparse package
 if(NOT TARGET cyclone_cholmod)
   add_library(cyclone_cholmod INTERFACE)
   target_include_directories(cyclone_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
-  target_link_libraries(cyclone_cholmod INTERFACE ${CHOLMOD_LIBRARY})
+  target_link_libraries(cyclone_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${UMFPACK_LIBRARY})
 endif()
 
 # CHOLMOD is 9-20x slower on Debian's reference BLAS: insist that the BLAS

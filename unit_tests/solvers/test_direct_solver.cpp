@@ -4,6 +4,9 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <complex>
+
 #include "BoxMesh.hpp"
 #include "cyclone/fe/Assembler.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
@@ -73,6 +76,46 @@ TEST(DirectSolver, ShiftedFactorizationSolvesKMinusSigmaM) {
   Eigen::VectorXd B(A.rows()), X(A.rows());
   for (int i = 0; i < A.rows(); ++i) B(i) = b.getData(0)[i], X(i) = x.getData(0)[i];
   EXPECT_LT((A * X - B).norm() / B.norm(), 1e-10);
+}
+
+TEST(DirectSolver, IndefiniteShiftBetweenEigenvalues) {
+  Cantilever c;
+  auto K = c.assembler->stiffness(c.steel);
+  auto M = c.assembler->mass(c.steel);
+  const Eigen::MatrixXd Kd = toDense(*K), Md = toDense(*M);
+  const Eigen::VectorXd lambda = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(Kd, Md).eigenvalues();
+  const double sigma = 0.5 * (lambda(2) + lambda(3));  // three negative pivots
+  EXPECT_THROW(solvers::DirectSolver(*K, M.get(), sigma), SolverError);
+  solvers::DirectSolver solver(*K, M.get(), sigma, solvers::DirectSolver::Definiteness::Indefinite);
+  linalg::MultiVector b(c.assembler->map(), 2), x(c.assembler->map(), 2);
+  b.randomize();
+  solver.solve(b, x);
+  const Eigen::MatrixXd A = Kd - sigma * Md;
+  Eigen::MatrixXd B(A.rows(), 2), X(A.rows(), 2);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < A.rows(); ++i) B(i, j) = b.getData(j)[i], X(i, j) = x.getData(j)[i];
+  const Eigen::MatrixXd reference = A.lu().solve(B);
+  EXPECT_LT((X - reference).norm() / reference.norm(), 1e-9);
+}
+
+TEST(ComplexDirectSolver, MatchesDenseComplexLu) {
+  Cantilever c;
+  auto K = c.assembler->stiffness(c.steel);
+  auto M = c.assembler->mass(c.steel);
+  const Eigen::MatrixXd Kd = toDense(*K), Md = toDense(*M);
+  const double lambda1 = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(Kd, Md).eigenvalues()(0);
+  const std::complex<double> a(1.0, 0.01), b(-1.001 * lambda1, 0.0);  // just above the first resonance
+  solvers::ComplexDirectSolver solver(*K, a, *M, b);
+  linalg::MultiVector f(c.assembler->map(), 3), xr(c.assembler->map(), 3), xi(c.assembler->map(), 3);
+  f.randomize();
+  solver.solve(f, xr, xi);
+  const Eigen::MatrixXcd A = a * Kd.cast<std::complex<double>>() + b * Md.cast<std::complex<double>>();
+  Eigen::MatrixXcd F(A.rows(), 3), X(A.rows(), 3);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < A.rows(); ++i)
+      F(i, j) = f.getData(j)[i], X(i, j) = {xr.getData(j)[i], xi.getData(j)[i]};
+  const Eigen::MatrixXcd reference = A.partialPivLu().solve(F);
+  EXPECT_LT((X - reference).norm() / reference.norm(), 1e-9);
 }
 
 TEST(DirectSolver, UnconstrainedStiffnessIsReportedNotPositiveDefinite) {

@@ -17,6 +17,36 @@
 
 namespace cyclone::cyclic {
 
+HarmonicOperators assembleHarmonicOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+                                            const fe::IsotropicElastic& material,
+                                            const std::vector<std::string>& fixedNodeSets,
+                                            const PrestressState* prestress, linalg::CommPtr comm) {
+  checkHarmonicIndex(sector.sectors, k);
+  HarmonicOperators op;
+  op.harmonic = k;
+  op.copies = copiesFor(sector.sectors, k);
+  op.assembler = std::make_unique<fe::Assembler>(mesh, cyclicTransform(mesh, sector, k, fixedNodeSets), comm);
+  op.K = tangentStiffness(*op.assembler, material, prestress);
+  op.M = op.assembler->mass(material);
+  return op;
+}
+
+solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int distinctModes, double shift,
+                                        solvers::EigenMethod method) {
+  const auto& assembler = *operators.assembler;
+  solvers::ModalOptions opt;
+  opt.numModes = int(std::min<long long>(distinctModes * operators.copies, assembler.transform().numEquations() - 1));
+  opt.shift = shift;
+  opt.blockSize = std::max(4, 2 * operators.copies);
+  opt.method = method;
+  if (opt.method == solvers::EigenMethod::Lobpcg) {
+    // The sector's unknowns are rigid-body-like per copy away from the side faces.
+    opt.nearNullSpace = assembler.rigidBodyModes();
+    opt.equationsPerNode = assembler.transform().blockedByNode() ? 3 * operators.copies : 1;
+  }
+  return solvers::solveModes(*operators.K, *operators.M, opt);
+}
+
 std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
@@ -29,40 +59,31 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   std::vector<HarmonicModes> out;
   for (int k : harmonics) {
     Timer timer;
+    const auto op = assembleHarmonicOperators(mesh, sector, k, problem.material, problem.fixedNodeSets,
+                                              problem.prestress, comm);
+    const auto& assembler = *op.assembler;
     HarmonicModes hm;
     hm.harmonic = k;
-    hm.copies = copiesFor(sector.sectors, k);
-    fe::Assembler assembler(mesh, cyclicTransform(mesh, sector, k, problem.fixedNodeSets), comm);
+    hm.copies = op.copies;
     hm.equations = assembler.transform().numEquations();
-    auto K = tangentStiffness(assembler, problem.material, problem.prestress);
-    auto M = assembler.mass(problem.material);
-    solvers::ModalOptions opt;
-    opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));
-    opt.shift = problem.shift;
-    opt.blockSize = std::max(4, 2 * hm.copies);
-    opt.method = problem.method;
-    if (opt.method == solvers::EigenMethod::Lobpcg) {
-      // The sector's unknowns are rigid-body-like per copy away from the side faces.
-      opt.nearNullSpace = assembler.rigidBodyModes();
-      opt.equationsPerNode = assembler.transform().blockedByNode() ? 3 * hm.copies : 1;
-    }
     const double assemblySeconds = timer.seconds();
-    const auto result = solvers::solveModes(*K, *M, opt);
+    const auto result = solveHarmonicModes(op, problem.modesPerHarmonic, problem.shift, problem.method);
+    const int numModes = int(result.frequenciesHz.size());
     hm.frequenciesHz = result.frequenciesHz;
-    for (int i = 0; i < opt.numModes; ++i) {
+    for (int i = 0; i < numModes; ++i) {
       hm.shapeReal.push_back(assembler.nodalField(*result.modes, i, 0));
       hm.shapeImag.push_back(hm.copies == 2 ? assembler.nodalField(*result.modes, i, 1)
                                             : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
     }
     hm.seconds = timer.seconds();
     std::ostringstream msg;
-    msg << "nodal diameter " << k << ": " << hm.equations << " equations, " << opt.numModes << " modes, "
+    msg << "nodal diameter " << k << ": " << hm.equations << " equations, " << numModes << " modes, "
         << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.front()) << " .. "
         << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.back()) << " Hz, " << hm.seconds
         << " s (assembly " << assemblySeconds << " s, "
-        << (opt.method == solvers::EigenMethod::Lobpcg ? "preconditioner " : "factorization ") << result.factorSeconds
-        << " s, eigen-solution " << result.solveSeconds << " s, " << result.operatorApplies
-        << (opt.method == solvers::EigenMethod::Lobpcg ? " LOBPCG iterations)" : " solves)");
+        << (problem.method == solvers::EigenMethod::Lobpcg ? "preconditioner " : "factorization ")
+        << result.factorSeconds << " s, eigen-solution " << result.solveSeconds << " s, " << result.operatorApplies
+        << (problem.method == solvers::EigenMethod::Lobpcg ? " LOBPCG iterations)" : " solves)");
     log::info(msg.str());
     out.push_back(std::move(hm));
   }

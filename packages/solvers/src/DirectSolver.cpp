@@ -2,6 +2,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
+#include <Eigen/UmfPackSupport>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Map.hpp>
@@ -49,88 +50,171 @@ SparseMatrix lowerTriangleOnRoot(const linalg::Matrix& A, const Teuchos::RCP<con
   return L;
 }
 
+// The rows of a distributed problem gathered on rank 0 (no exporter on one rank).
+struct RootGather {
+  Teuchos::RCP<const linalg::Map> rowMap, rootMap;
+  Teuchos::RCP<const Tpetra::Export<>> exporter;  // null on one rank
+  bool root = true;
+
+  explicit RootGather(const linalg::Matrix& A) : rowMap(A.getRowMap()) {
+    const auto comm = rowMap->getComm();
+    const GlobalIndex n = A.getGlobalNumRows();
+    root = comm->getRank() == 0;
+    if (comm->getSize() > 1) {
+      rootMap = Teuchos::rcp(new linalg::Map(n, root ? std::size_t(n) : 0, 0, comm));
+      exporter = Teuchos::rcp(new Tpetra::Export<>(rowMap, rootMap));
+    }
+  }
+  SparseMatrix lower(const linalg::Matrix& A) const { return lowerTriangleOnRoot(A, rootMap, exporter); }
+
+  /// The columns of b on rank 0 (n x nv; empty elsewhere).
+  Eigen::MatrixXd columns(const linalg::MultiVector& b) const {
+    const std::size_t nv = b.getNumVectors();
+    Teuchos::RCP<const linalg::MultiVector> bRoot = Teuchos::rcpFromRef(b);
+    if (exporter) {
+      auto gathered = Teuchos::rcp(new linalg::MultiVector(rootMap, nv));
+      gathered->doExport(b, *exporter, Tpetra::INSERT);
+      bRoot = gathered;
+    }
+    if (!root) return {};
+    const auto n = Eigen::Index(bRoot->getGlobalLength());
+    Eigen::MatrixXd out(n, nv);
+    for (std::size_t j = 0; j < nv; ++j) {
+      auto col = bRoot->getData(j);
+      for (Eigen::Index i = 0; i < n; ++i) out(i, j) = col[i];
+    }
+    return out;
+  }
+  /// Scatters columns held on rank 0 into x (x's row map).
+  void scatter(const Eigen::MatrixXd& values, linalg::MultiVector& x) const {
+    const std::size_t nv = x.getNumVectors();
+    Teuchos::RCP<linalg::MultiVector> xRoot = Teuchos::rcpFromRef(x);
+    if (exporter) xRoot = Teuchos::rcp(new linalg::MultiVector(rootMap, nv));
+    if (root)
+      for (std::size_t j = 0; j < nv; ++j) {
+        auto col = xRoot->getDataNonConst(j);
+        for (Eigen::Index i = 0; i < values.rows(); ++i) col[i] = values(i, j);
+      }
+    if (exporter) x.doImport(*xRoot, *exporter, Tpetra::INSERT);  // reverse mode: scatter back
+  }
+};
+
 }  // namespace
 
 // CHOLMOD's own estimate (min/max diagonal of L, squared): a singular matrix
 // can factor "successfully" with round-off pivots (e.g. a free body whose
 // rigid-body pivots come out 1e-16 positive), which the estimate exposes.
-struct CholmodWithConditionEstimate : Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+// For LDL^T it is min/max |D|, for LL^T (min/max diag L)^2.
+struct CholmodWithConditionEstimate : Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> {
   double rcond() { return m_cholmodFactor ? cholmod_rcond(m_cholmodFactor, &cholmod()) : 0.0; }
 };
 
 struct DirectSolver::Impl {
-  Teuchos::RCP<const linalg::Map> rowMap, rootMap;
-  Teuchos::RCP<const Tpetra::Export<>> exporter;  // null on one rank
+  explicit Impl(const linalg::Matrix& A) : gather(A) {}
+  RootGather gather;
   CholmodWithConditionEstimate cholmod;
   Statistics stats;
-  bool root = true;
+  double rcond = 0;
 };
 
-DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, double sigma)
-    : impl_(std::make_unique<Impl>()) {
+DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, double sigma,
+                           Definiteness definiteness)
+    : impl_(std::make_unique<Impl>(A)) {
   auto& I = *impl_;
   Timer timer;
-  I.rowMap = A.getRowMap();
-  const auto comm = I.rowMap->getComm();
+  const auto comm = I.gather.rowMap->getComm();
   const GlobalIndex n = A.getGlobalNumRows();
-  I.root = comm->getRank() == 0;
-  if (comm->getSize() > 1) {
-    I.rootMap = Teuchos::rcp(new linalg::Map(n, I.root ? std::size_t(n) : 0, 0, comm));
-    I.exporter = Teuchos::rcp(new Tpetra::Export<>(I.rowMap, I.rootMap));
-  }
-  SparseMatrix S = lowerTriangleOnRoot(A, I.rootMap, I.exporter);
-  if (B && sigma != 0.0) S -= sigma * lowerTriangleOnRoot(*B, I.rootMap, I.exporter);
+  SparseMatrix S = I.gather.lower(A);
+  if (B && sigma != 0.0) S -= sigma * I.gather.lower(*B);
   I.stats.rows = n;
   I.stats.nonzerosA = S.nonZeros();
   I.stats.gatherSeconds = timer.seconds();
 
   timer.restart();
+  const bool positive = definiteness == Definiteness::Positive;
   int ok = 1;
-  if (I.root) {
-    I.cholmod.cholmod().supernodal = CHOLMOD_SUPERNODAL;
+  if (I.gather.root) {
+    I.cholmod.setMode(positive ? Eigen::CholmodSupernodalLLt : Eigen::CholmodLDLt);
     I.cholmod.cholmod().print = 0;  // failures are reported by SolverError, not on stderr
     I.cholmod.compute(S);
-    ok = I.cholmod.info() == Eigen::Success && I.cholmod.rcond() > 1e-24;
+    I.rcond = I.cholmod.rcond();
+    // min/max pivot of D (LDL^T) or of diag(L)^2 (LL^T): the same measure.
+    ok = I.cholmod.info() == Eigen::Success && I.rcond > 1e-24;
     I.stats.nonzerosFactor = I.cholmod.cholmod().lnz;
     I.stats.flops = I.cholmod.cholmod().fl;
   }
   Teuchos::broadcast(*comm, 0, &ok);
+  Teuchos::broadcast(*comm, 0, &I.rcond);
   I.stats.factorSeconds = timer.seconds();
-  if (!ok)
+  if (!ok && positive)
     throw SolverError("CHOLMOD: the matrix (" + std::to_string(n) +
                       " equations) is not positive definite: a free body without enough constraints, "
                       "a shift above the lowest eigenvalue, or an inverted element");
+  if (!ok)
+    throw SolverError("CHOLMOD LDL^T: the matrix (" + std::to_string(n) +
+                      " equations) is singular: a shift on an eigenvalue or a free body at shift 0");
 }
 
 DirectSolver::~DirectSolver() = default;
 
 const DirectSolver::Statistics& DirectSolver::statistics() const { return impl_->stats; }
+double DirectSolver::reciprocalCondition() const { return impl_->rcond; }
 
 void DirectSolver::solve(const linalg::MultiVector& b, linalg::MultiVector& x) const {
   const auto& I = *impl_;
-  const std::size_t nv = b.getNumVectors();
-  Teuchos::RCP<const linalg::MultiVector> bRoot = Teuchos::rcpFromRef(b);
-  Teuchos::RCP<linalg::MultiVector> xRoot = Teuchos::rcpFromRef(x);
-  if (I.exporter) {
-    auto gathered = Teuchos::rcp(new linalg::MultiVector(I.rootMap, nv));
-    gathered->doExport(b, *I.exporter, Tpetra::INSERT);
-    bRoot = gathered;
-    xRoot = Teuchos::rcp(new linalg::MultiVector(I.rootMap, nv));
+  const Eigen::MatrixXd rhs = I.gather.columns(b);
+  I.gather.scatter(I.gather.root ? Eigen::MatrixXd(I.cholmod.solve(rhs)) : Eigen::MatrixXd(), x);
+}
+
+using ComplexSparse = Eigen::SparseMatrix<std::complex<double>, Eigen::ColMajor, int>;
+
+struct ComplexDirectSolver::Impl {
+  explicit Impl(const linalg::Matrix& A) : gather(A) {}
+  RootGather gather;
+  ComplexSparse matrix;  // UMFPACK's solve reads the matrix again: it must outlive lu
+  Eigen::UmfPackLU<ComplexSparse> lu;
+};
+
+ComplexDirectSolver::ComplexDirectSolver(const linalg::Matrix& A, std::complex<double> a, const linalg::Matrix& B,
+                                         std::complex<double> b)
+    : impl_(std::make_unique<Impl>(A)) {
+  auto& I = *impl_;
+  int ok = 1;
+  const SparseMatrix LA = I.gather.lower(A), LB = I.gather.lower(B);
+  if (I.gather.root) {
+    // Full symmetric matrices from their lower triangles, combined with complex weights.
+    const auto full = [](const SparseMatrix& L) -> ComplexSparse {
+      const SparseMatrix strictlyLower = L.triangularView<Eigen::StrictlyLower>();
+      const SparseMatrix F = L + SparseMatrix(strictlyLower.transpose());
+      return F.cast<std::complex<double>>();
+    };
+    I.matrix = a * full(LA) + b * full(LB);
+    // The pattern is symmetric: symmetric strategy with a METIS ordering of A + A^T.
+    I.lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+    I.lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
+    I.lu.umfpackControl()(UMFPACK_IRSTEP) = 0;  // the residual is checked by the caller if needed
+    I.lu.compute(I.matrix);
+    ok = I.lu.info() == Eigen::Success;
   }
-  if (I.root) {
-    const int n = int(I.stats.rows);
-    Eigen::MatrixXd rhs(n, nv);
-    for (std::size_t j = 0; j < nv; ++j) {
-      auto col = bRoot->getData(j);
-      for (int i = 0; i < n; ++i) rhs(i, j) = col[i];
-    }
-    const Eigen::MatrixXd sol = I.cholmod.solve(rhs);
-    for (std::size_t j = 0; j < nv; ++j) {
-      auto col = xRoot->getDataNonConst(j);
-      for (int i = 0; i < n; ++i) col[i] = sol(i, j);
-    }
+  Teuchos::broadcast(*I.gather.rowMap->getComm(), 0, &ok);
+  if (!ok)
+    throw SolverError("UMFPACK: the complex matrix (" + std::to_string(A.getGlobalNumRows()) +
+                      " equations) is singular");
+}
+
+ComplexDirectSolver::~ComplexDirectSolver() = default;
+
+void ComplexDirectSolver::solve(const linalg::MultiVector& rhs, linalg::MultiVector& xReal,
+                                linalg::MultiVector& xImag) const {
+  const auto& I = *impl_;
+  const Eigen::MatrixXd b = I.gather.columns(rhs);
+  Eigen::MatrixXcd x;
+  if (I.gather.root) {
+    const Eigen::MatrixXcd bc = b.cast<std::complex<double>>();
+    x = I.lu.solve(bc);
   }
-  if (I.exporter) x.doImport(*xRoot, *I.exporter, Tpetra::INSERT);  // reverse mode: scatter back
+  I.gather.scatter(x.real(), xReal);
+  I.gather.scatter(x.imag(), xImag);
 }
 
 }  // namespace cyclone::solvers

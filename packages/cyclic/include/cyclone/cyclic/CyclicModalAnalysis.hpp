@@ -5,11 +5,13 @@
 // mass-normalised over the sector in the real form: sum over the copies of
 // u_c^T M u_c = 1.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cyclone/cyclic/CyclicSector.hpp"
 #include "cyclone/cyclic/Prestress.hpp"
+#include "cyclone/fe/Assembler.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
@@ -38,6 +40,27 @@ struct HarmonicModes {
   /// Nodal shapes per mode: real part (copy a) and imaginary part (copy b; zero when single).
   std::vector<std::vector<std::array<double, 3>>> shapeReal, shapeImag;
 };
+
+/// The real-form sector operators at one harmonic index k: the assembler of the
+/// cyclic transform (its unknowns), the tangent K (K + K_sigma - K_Omega when a
+/// prestress is given) and M. What solveCyclicModes and the reduced models share.
+struct HarmonicOperators {
+  int harmonic = 0;
+  int copies = 1;
+  std::unique_ptr<fe::Assembler> assembler;
+  Teuchos::RCP<linalg::Matrix> K, M;
+};
+
+/// Checks k (InputError) and assembles K_k, M_k on the cyclic transform with `fixedNodeSets` held.
+HarmonicOperators assembleHarmonicOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+                                            const fe::IsotropicElastic& material,
+                                            const std::vector<std::string>& fixedNodeSets,
+                                            const PrestressState* prestress, linalg::CommPtr comm);
+
+/// The lowest `distinctModes` x copies modes of K_k, M_k (a pair counts once) by
+/// shift-invert at `shift` (ModalOptions::automaticShift() allowed) or LOBPCG + MueLu.
+solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int distinctModes, double shift,
+                                        solvers::EigenMethod method = solvers::EigenMethod::ShiftInvert);
 
 std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm);

@@ -1,11 +1,13 @@
 #pragma once
 // Sparse direct solve of (A - sigma B) x = b with CHOLMOD's supernodal
-// Cholesky (METIS ordering, OpenBLAS). Chosen by measurement (docs/solvers.md):
+// Cholesky (METIS ordering, OpenBLAS) or, for a shift inside the spectrum, its
+// simplicial LDL^T; complex symmetric systems by UMFPACK's LU. Chosen by measurement (docs/solvers.md):
 // Amesos2 in Debian's Trilinos 13.2 offers only KLU2 (slow in 3D, wrong on
 // several ranks) and Tacho (crashes). The matrix is gathered on rank 0, factored
 // once, and right-hand sides are gathered/scattered per solve, so results are
 // identical on any number of ranks. A - sigma B must be symmetric positive
 // definite (for eigenproblems: sigma below the lowest eigenvalue).
+#include <complex>
 #include <memory>
 
 #include "cyclone/fe/LinearAlgebra.hpp"
@@ -14,8 +16,15 @@ namespace cyclone::solvers {
 
 class DirectSolver {
 public:
-  /// Factors A - sigma*B (B may be null). Throws SolverError if not positive definite.
-  DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B = nullptr, double sigma = 0.0);
+  /// Positive definite: supernodal LL^T (the default). Indefinite: simplicial LDL^T
+  /// without pivoting, for A - sigma B with sigma between eigenvalues (a shift inside
+  /// the spectrum); rejected like LL^T when a pivot vanishes or the estimate is singular.
+  enum class Definiteness { Positive, Indefinite };
+
+  /// Factors A - sigma*B (B may be null). Throws SolverError if not positive definite
+  /// (Positive) or singular (Indefinite).
+  DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B = nullptr, double sigma = 0.0,
+               Definiteness definiteness = Definiteness::Positive);
   ~DirectSolver();
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;
@@ -31,6 +40,28 @@ public:
     double gatherSeconds = 0, factorSeconds = 0;
   };
   const Statistics& statistics() const;
+  /// CHOLMOD's reciprocal condition estimate of the factor (min/max pivot).
+  double reciprocalCondition() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Sparse LU (UMFPACK) of the complex symmetric a A + b B, e.g. (1 + i eta) K - omega^2 M:
+/// the full-FE frequency response with structural damping. The matrix is gathered on
+/// rank 0 like DirectSolver's.
+class ComplexDirectSolver {
+public:
+  /// Throws SolverError if the matrix is singular.
+  ComplexDirectSolver(const linalg::Matrix& A, std::complex<double> a, const linalg::Matrix& B,
+                      std::complex<double> b);
+  ~ComplexDirectSolver();
+  ComplexDirectSolver(const ComplexDirectSolver&) = delete;
+  ComplexDirectSolver& operator=(const ComplexDirectSolver&) = delete;
+
+  /// x = (a A + b B)^{-1} rhs for a real right-hand side: real and imaginary parts.
+  void solve(const linalg::MultiVector& rhs, linalg::MultiVector& xReal, linalg::MultiVector& xImag) const;
 
 private:
   struct Impl;

@@ -1,0 +1,23 @@
+#pragma once
+// What a reduced model hands to the harmonic balance: the dynamic compliance
+// at its retained DOFs for a frequency, whatever kind of model it is (the full
+// FE reference, the hybrid FRF model, modal truncation). Eigen only.
+//
+// Retained DOF order: index = (copy * retainedNodes + node) * 3 + direction,
+// copy 0 and 1 being the real and imaginary parts of the cyclic real form at
+// harmonic index k (one copy for k = 0 and N/2). The complex entries are the
+// time-harmonic amplitudes x = A(omega) f for f e^{i omega t}.
+#include <Eigen/Dense>
+
+namespace cyclone::rom {
+
+class ComplianceModel {
+public:
+  virtual ~ComplianceModel() = default;
+  /// Rows and columns of the compliance: 3 x retained nodes x copies.
+  virtual Eigen::Index size() const = 0;
+  /// A(omega) (complex symmetric), omega in rad/s.
+  virtual Eigen::MatrixXcd compliance(double omega) const = 0;
+};
+
+}  // namespace cyclone::rom

@@ -1,0 +1,69 @@
+#pragma once
+// The full FE model of a cyclic sector at one harmonic index k, seen at
+// retained DOFs (all 3 directions of the nodes of some node sets): the
+// real-form K_k (prestressed tangent when given) and M_k assembled as for the
+// modes (cyclic::assembleHarmonicOperators), and from them
+//   - the full-FE dynamic compliance G^T ((1 + i eta) K - w^2 M)^{-1} G by a
+//     sparse complex LU per frequency: the reference for every reduced model;
+//   - the modes at the retained DOFs (Anasazi shift-invert);
+//   - the exact static compliance G^T (K - sigma M)^{-1} G from one CHOLMOD
+//     factorization with all retained DOFs as right-hand sides.
+// G maps unknowns to the retained physical DOFs (a right-face node is a
+// combination of left-face unknowns; a fixed DOF has a zero column).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
+
+namespace cyclone::rom {
+
+struct HarmonicModelProblem {
+  fe::IsotropicElastic material;
+  int harmonic = 0;                             ///< k in 0..N/2
+  std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
+  std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
+  const cyclic::PrestressState* prestress = nullptr;  ///< tangent K + K_sigma - K_Omega; null: K
+  double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
+};
+
+class CyclicHarmonicModel final : public ComplianceModel {
+public:
+  /// Assembles K_k, M_k. InputError for k outside 0..N/2, missing or empty retained sets.
+  CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const HarmonicModelProblem& problem,
+                      linalg::CommPtr comm);
+  ~CyclicHarmonicModel() override;
+  CyclicHarmonicModel(const CyclicHarmonicModel&) = delete;
+  CyclicHarmonicModel& operator=(const CyclicHarmonicModel&) = delete;
+
+  int harmonic() const;
+  int copies() const;
+  long long equations() const;
+  double lossFactor() const;
+  const std::vector<mesh::Index>& retainedNodes() const;
+  Eigen::Index size() const override;
+
+  /// The full-FE compliance at the retained DOFs (one complex factorization).
+  Eigen::MatrixXcd compliance(double omega) const override;
+
+  /// The lowest `distinct` natural frequencies' modes (pairs twice) at the retained
+  /// DOFs; shift as in solvers::ModalOptions (automaticShift() for a free sector).
+  RetainedModes modes(int distinct, double shift = 0) const;
+
+  /// The exact compliance at sigma = omega0^2 for the hybrid model, checked against
+  /// `modes` (computed with this model): omega0^2 within 1e-3 (relative) of a natural
+  /// frequency's square, or at or above the highest computed one, is an InputError.
+  /// omega0 = 0 with rigid-body modes among `modes`: sigma moves automatically to half
+  /// the first elastic eigenvalue (reported in the note and the log).
+  StaticCompliance staticCompliance(double omega0, const RetainedModes& modes) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cyclone::rom

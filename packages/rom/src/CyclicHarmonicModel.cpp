@@ -1,0 +1,154 @@
+#include "cyclone/rom/CyclicHarmonicModel.hpp"
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/cyclic/CyclicModalAnalysis.hpp"
+#include "cyclone/solvers/DirectSolver.hpp"
+
+namespace cyclone::rom {
+
+struct CyclicHarmonicModel::Impl {
+  cyclic::HarmonicOperators op;
+  std::vector<mesh::Index> nodes;
+  double eta = 0;
+  Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
+
+  Eigen::Index size() const { return Eigen::Index(3 * nodes.size() * op.copies); }
+
+  // G^T X: every column of X seen at the retained DOFs.
+  Eigen::MatrixXd retained(const linalg::MultiVector& X) const {
+    const auto nn = Eigen::Index(nodes.size());
+    Eigen::MatrixXd out(size(), X.getNumVectors());
+    for (std::size_t j = 0; j < X.getNumVectors(); ++j)
+      for (int c = 0; c < op.copies; ++c) {
+        const auto field = op.assembler->nodalField(X, int(j), c);
+        for (Eigen::Index i = 0; i < nn; ++i)
+          for (int d = 0; d < 3; ++d) out((c * nn + i) * 3 + d, Eigen::Index(j)) = field[nodes[i]][d];
+      }
+    return out;
+  }
+};
+
+CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                         const HarmonicModelProblem& problem, linalg::CommPtr comm)
+    : impl_(std::make_unique<Impl>()) {
+  auto& I = *impl_;
+  problem.material.validate("material");
+  if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
+  if (problem.retainedNodeSets.empty()) throw InputError("retained", "no retained node sets given");
+  for (const auto& name : problem.retainedNodeSets)
+    for (mesh::Index n : mesh.nodeSet(name))  // InputError naming a missing or empty set
+      if (std::find(I.nodes.begin(), I.nodes.end(), n) == I.nodes.end()) I.nodes.push_back(n);
+  Timer timer;
+  I.op = cyclic::assembleHarmonicOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
+                                           problem.prestress, comm);
+  I.eta = problem.lossFactor;
+
+  const auto& T = I.op.assembler->transform();
+  const auto map = I.op.assembler->map();
+  I.G = Teuchos::rcp(new linalg::MultiVector(map, std::size_t(I.size())));
+  const auto nn = Eigen::Index(I.nodes.size());
+  for (int c = 0; c < I.op.copies; ++c)
+    for (Eigen::Index i = 0; i < nn; ++i)
+      for (int d = 0; d < 3; ++d)
+        for (const auto& term : T.terms(I.nodes[i], d, c))
+          if (map->isNodeGlobalElement(term.equation))
+            I.G->sumIntoGlobalValue(term.equation, std::size_t((c * nn + i) * 3 + d), term.coefficient);
+  std::ostringstream msg;
+  msg << "harmonic model k = " << problem.harmonic << ": " << T.numEquations() << " equations, " << I.size()
+      << " retained DOFs (" << nn << " nodes x 3 x " << I.op.copies << " copies), assembled in " << timer.seconds()
+      << " s";
+  log::info(msg.str());
+}
+
+CyclicHarmonicModel::~CyclicHarmonicModel() = default;
+
+int CyclicHarmonicModel::harmonic() const { return impl_->op.harmonic; }
+int CyclicHarmonicModel::copies() const { return impl_->op.copies; }
+long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
+double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
+const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->nodes; }
+Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
+
+Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
+  const auto& I = *impl_;
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega);
+  linalg::MultiVector xr(I.G->getMap(), I.G->getNumVectors()), xi(I.G->getMap(), I.G->getNumVectors());
+  solver.solve(*I.G, xr, xi);
+  Eigen::MatrixXcd A(I.size(), I.size());
+  A.real() = I.retained(xr);
+  A.imag() = I.retained(xi);
+  return A;
+}
+
+RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
+  const auto& I = *impl_;
+  if (distinct < 1) throw InputError("modes", "must be at least 1");
+  Timer timer;
+  const auto result = cyclic::solveHarmonicModes(I.op, distinct, shift);
+  RetainedModes out;
+  out.copies = I.op.copies;
+  out.eigenvalues = result.eigenvalues;
+  out.shapes = I.retained(*result.modes);
+  out.seconds = timer.seconds();
+  return out;
+}
+
+StaticCompliance CyclicHarmonicModel::staticCompliance(double omega0, const RetainedModes& modes) const {
+  const auto& I = *impl_;
+  if (modes.shapes.rows() != I.size() || modes.numModes() == 0)
+    throw InputError("modes", "not computed with this model (" + std::to_string(modes.shapes.rows()) +
+                                  " retained DOFs, the model has " + std::to_string(I.size()) + ")");
+  if (!(omega0 >= 0)) throw InputError("omega0", "must be >= 0");
+  Timer timer;
+  StaticCompliance out;
+  out.omega0 = omega0;
+  out.shift = omega0 * omega0;
+  const int rigid = modes.numRigidBodyModes();
+  const auto hz = [](double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); };
+  std::ostringstream note;
+  if (omega0 == 0 && rigid > 0) {
+    if (rigid == modes.numModes())
+      throw InputError("omega0", "0 with only rigid-body modes computed: compute elastic modes too");
+    out.shift = 0.5 * modes.eigenvalues[rigid];
+    note << "omega0 = 0 with " << rigid << " rigid-body mode(s): K is singular; shifted to sigma = "
+         << out.shift << " (rad/s)^2 (omega0 = " << std::sqrt(out.shift) << " rad/s, " << hz(out.shift)
+         << " Hz), half the first elastic eigenvalue";
+    log::info("static compliance: " + note.str());
+  } else {
+    if (out.shift >= modes.eigenvalues.back())
+      throw InputError("omega0", std::to_string(omega0) + " rad/s is not below the highest computed natural "
+                                 "frequency (" + std::to_string(hz(modes.eigenvalues.back())) +
+                                 " Hz): compute more modes or lower omega0");
+    for (int j = 0; j < modes.numModes(); ++j) {
+      const double l = modes.eigenvalues[j];
+      if (std::abs(l - out.shift) <= 1e-3 * std::abs(l))
+        throw InputError("omega0", std::to_string(omega0) + " rad/s (" + std::to_string(hz(out.shift)) +
+                                       " Hz) is on natural frequency " + std::to_string(j / modes.copies + 1) + " (" +
+                                       std::to_string(hz(l)) + " Hz): K - omega0^2 M is singular there; "
+                                       "choose omega0 away from the natural frequencies (0 for a held sector)");
+    }
+    note << "sigma = omega0^2 = " << out.shift << " (rad/s)^2";
+  }
+  const bool definite = out.shift < modes.eigenvalues.front();
+  const solvers::DirectSolver solver(*I.op.K, I.op.M.get(), out.shift,
+                                     definite ? solvers::DirectSolver::Definiteness::Positive
+                                              : solvers::DirectSolver::Definiteness::Indefinite);
+  linalg::MultiVector X(I.G->getMap(), I.G->getNumVectors());
+  solver.solve(*I.G, X);
+  out.matrix = I.retained(X);
+  out.matrix = 0.5 * (out.matrix + out.matrix.transpose()).eval();
+  out.note = note.str();
+  out.seconds = timer.seconds();
+  return out;
+}
+
+}  // namespace cyclone::rom

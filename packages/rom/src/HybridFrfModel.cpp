@@ -1,0 +1,66 @@
+#include "cyclone/rom/HybridFrfModel.hpp"
+
+#include <algorithm>
+#include <complex>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::rom {
+
+RetainedModes RetainedModes::first(int distinct) const {
+  const int m = distinct * copies;
+  if (distinct < 1 || m > numModes())
+    throw InputError("modes", "asked for " + std::to_string(distinct) + " natural frequencies, " +
+                                  std::to_string(numModes() / copies) + " computed");
+  RetainedModes out;
+  out.copies = copies;
+  out.eigenvalues.assign(eigenvalues.begin(), eigenvalues.begin() + m);
+  out.shapes = shapes.leftCols(m);
+  out.seconds = seconds;
+  return out;
+}
+
+int RetainedModes::numRigidBodyModes() const {
+  if (eigenvalues.empty()) return 0;
+  const double largest = *std::max_element(eigenvalues.begin(), eigenvalues.end());
+  return int(std::count_if(eigenvalues.begin(), eigenvalues.end(),
+                           [&](double l) { return std::abs(l) < 1e-6 * largest; }));
+}
+
+HybridFrfModel::HybridFrfModel(RetainedModes modes, double lossFactor) : modes_(std::move(modes)), eta_(lossFactor) {
+  if (modes_.numModes() == 0) throw InputError("modes", "a reduced model needs at least one mode");
+  if (modes_.shapes.cols() != modes_.numModes())
+    throw InputError("modes", "mode shapes and eigenvalues differ in number");
+  if (!(lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
+}
+
+HybridFrfModel::HybridFrfModel(RetainedModes modes, StaticCompliance staticCompliance, double lossFactor)
+    : HybridFrfModel(std::move(modes), lossFactor) {
+  if (staticCompliance.matrix.rows() != size() || staticCompliance.matrix.cols() != size())
+    throw InputError("static compliance", "is " + std::to_string(staticCompliance.matrix.rows()) + " x " +
+                                              std::to_string(staticCompliance.matrix.cols()) + ", the modes have " +
+                                              std::to_string(size()) + " retained DOFs");
+  static_ = std::move(staticCompliance);
+  hasStatic_ = true;
+}
+
+HybridFrfModel HybridFrfModel::modalTruncation(RetainedModes modes, double lossFactor) {
+  return HybridFrfModel(std::move(modes), lossFactor);
+}
+
+Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
+  const std::complex<double> damped(1.0, eta_);
+  const double w2 = omega * omega;
+  Eigen::VectorXcd weight(modes_.numModes());
+  for (int j = 0; j < modes_.numModes(); ++j) {
+    const double l = modes_.eigenvalues[j];
+    weight(j) = 1.0 / (damped * l - w2);
+    if (hasStatic_) weight(j) -= 1.0 / (damped * (l - static_.shift));
+  }
+  const Eigen::MatrixXcd phi = modes_.shapes.cast<std::complex<double>>();
+  Eigen::MatrixXcd A = phi * weight.asDiagonal() * phi.transpose();
+  if (hasStatic_) A += static_.matrix.cast<std::complex<double>>() / damped;
+  return A;
+}
+
+}  // namespace cyclone::rom
