@@ -2,42 +2,14 @@
 
 #include <H5Cpp.h>
 
+#include "Hdf5Datasets.hpp"
+
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::post {
 
-namespace {
-
-template <class T>
-void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, const H5::PredType& type) {
-  const hsize_t dims[1] = {v.size()};
-  H5::DataSpace space(1, dims);
-  file.createDataSet(name, type, space).write(v.data(), type);
-}
-
-template <class T>
-std::vector<T> readVector(H5::H5File& file, const char* name, const H5::PredType& type) {
-  auto set = file.openDataSet(name);
-  hsize_t dims[1];
-  set.getSpace().getSimpleExtentDims(dims);
-  std::vector<T> v(dims[0]);
-  if (!v.empty()) set.read(v.data(), type);
-  return v;
-}
-
-void writeIntAttribute(H5::H5File& file, const char* name, int value) {
-  file.createAttribute(name, H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
-      .write(H5::PredType::NATIVE_INT, &value);
-}
-
-int readIntAttribute(H5::H5File& file, const char* name) {
-  int value = 0;
-  file.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
-
-}  // namespace
+using namespace hdf5;
 
 void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
   const std::size_t P = c.omega.size(), m = std::size_t(c.numDofs) * c.numCoefficients;

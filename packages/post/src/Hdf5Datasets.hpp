@@ -1,0 +1,49 @@
+#pragma once
+// Small HDF5 helpers shared by the package's file formats (private header).
+#include <H5Cpp.h>
+
+#include <string>
+#include <vector>
+
+namespace cyclone::post::hdf5 {
+
+template <class T>
+void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, const H5::PredType& type) {
+  const hsize_t dims[1] = {v.size()};
+  H5::DataSpace space(1, dims);
+  file.createDataSet(name, type, space).write(v.data(), type);
+}
+
+template <class T>
+std::vector<T> readVector(H5::H5File& file, const char* name, const H5::PredType& type) {
+  auto set = file.openDataSet(name);
+  hsize_t dims[1];
+  set.getSpace().getSimpleExtentDims(dims);
+  std::vector<T> v(dims[0]);
+  if (!v.empty()) set.read(v.data(), type);
+  return v;
+}
+
+// Scalar attributes on the file's root group.
+template <class T>
+void writeAttribute(H5::H5File& file, const char* name, T value, const H5::PredType& type) {
+  file.createAttribute(name, type, H5::DataSpace(H5S_SCALAR)).write(type, &value);
+}
+
+template <class T>
+T readAttribute(H5::H5File& file, const char* name, const H5::PredType& type) {
+  T value{};
+  file.openAttribute(name).read(type, &value);
+  return value;
+}
+
+inline void writeIntAttribute(H5::H5File& f, const char* n, int v) { writeAttribute(f, n, v, H5::PredType::NATIVE_INT); }
+inline int readIntAttribute(H5::H5File& f, const char* n) { return readAttribute<int>(f, n, H5::PredType::NATIVE_INT); }
+inline void writeDoubleAttribute(H5::H5File& f, const char* n, double v) {
+  writeAttribute(f, n, v, H5::PredType::NATIVE_DOUBLE);
+}
+inline double readDoubleAttribute(H5::H5File& f, const char* n) {
+  return readAttribute<double>(f, n, H5::PredType::NATIVE_DOUBLE);
+}
+
+}  // namespace cyclone::post::hdf5
