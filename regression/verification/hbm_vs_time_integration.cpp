@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
@@ -19,22 +20,17 @@ namespace {
 
 // Newton at a fixed frequency from the linear solution (the solution is unique there).
 Eigen::VectorXd solveAt(const hbm::HarmonicBalanceSystem& sys, double omega) {
-  Eigen::VectorXd X = sys.linearSolution(omega), R;
-  Eigen::MatrixXd J;
-  for (int it = 0; it < 100; ++it) {
-    sys.residual(X, omega, R, &J);
-    if (R.norm() < 1e-12) return X;
-    Eigen::VectorXd dX = J.partialPivLu().solve(-R);
-    double step = 1.0, r0 = R.norm();
-    for (int k = 0; k < 30; ++k, step *= 0.5) {  // backtracking
-      Eigen::VectorXd Rt;
-      sys.residual(X + step * dX, omega, Rt, nullptr);
-      if (Rt.norm() < r0) break;
-    }
-    X += step * dX;
-  }
-  sys.residual(X, omega, R, nullptr);
-  EXPECT_LT(R.norm(), 1e-9) << "harmonic balance did not converge at omega " << omega;
+  continuation::ContinuationProblem problem;
+  problem.size = sys.numUnknowns();
+  problem.residual = [&](const Eigen::VectorXd& X, double w, Eigen::VectorXd& R) { sys.residual(X, w, R, nullptr); };
+  problem.jacobian = [&](const Eigen::VectorXd& X, double w, Eigen::MatrixXd& J) {
+    Eigen::VectorXd R;
+    sys.residual(X, w, R, &J);
+  };
+  Eigen::VectorXd X = sys.linearSolution(omega);
+  const auto newton = continuation::solveNewton(problem, X, omega, 1e-12, 100);
+  EXPECT_TRUE(newton.converged) << "harmonic balance did not converge at omega " << omega << " (residual "
+                                << newton.residualNorm << ")";
   return X;
 }
 

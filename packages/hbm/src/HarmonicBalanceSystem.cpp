@@ -40,7 +40,7 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
   const long N = cyclic_.sectors;
   for (int h : H.harmonics()) {
     if (h == 0) continue;
-    const long k = ((long(h) * cyclic_.engineOrder) % N + N) % N;  // exact phase index before the trig
+    const long k = phaseIndex(h);  // exact integer phase before the trig
     const double a = 2 * M_PI * double(k) / double(N), c = std::cos(a), s = std::sin(a);
     const int i = H.cosIndex(h);
     next_(i, i) = c, next_(i, i + 1) = -s;
@@ -48,10 +48,14 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
   }
 }
 
+long HarmonicBalanceSystem::phaseIndex(int harmonic) const {
+  const long N = cyclic_.sectors;
+  return ((long(harmonic) * cyclic_.engineOrder) % N + N) % N;
+}
+
 int HarmonicBalanceSystem::nodalDiameter(int harmonic) const {
   if (!isCyclic()) return 0;
-  const long N = cyclic_.sectors;
-  const long k = ((long(harmonic) * cyclic_.engineOrder) % N + N) % N;
+  const long N = cyclic_.sectors, k = phaseIndex(harmonic);
   return int(k > N / 2 ? N - k : k);
 }
 

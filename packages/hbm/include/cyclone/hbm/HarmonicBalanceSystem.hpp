@@ -108,6 +108,7 @@ public:
   double amplitude(const Eigen::VectorXd& X, int dof, int harmonic) const;
 
 private:
+  long phaseIndex(int harmonic) const;  ///< h EO mod N in 0..N-1
   Eigen::MatrixXd M_, C_, K_;
   Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale
   double dampingScale_ = 1.0;
