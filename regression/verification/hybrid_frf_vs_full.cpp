@@ -134,6 +134,16 @@ TEST(HybridFrf, ConvergesToFullFeCompliance) {
   }
   EXPECT_LT(best, 1e-3);
 
+  // Zero frequency without damping (what the mean harmonic of a harmonic balance sees):
+  // with A0 at sigma = 0 the hybrid model is exact there whatever the modes kept.
+  const Eigen::MatrixXd Az = full.zeroFrequencyCompliance();
+  const double ez = (rom::HybridFrfModel(allModes.first(5), A0, kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
+  const double ezt =
+      (rom::HybridFrfModel::modalTruncation(allModes.first(5), kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
+  std::printf("zero frequency, 5 modes: hybrid %.3e, truncation %.3e\n", ez, ezt);
+  EXPECT_LT(ez, 1e-10);
+  EXPECT_GT(ezt, 1e-3);
+
   // Expansion point inside the band (between families 2 and 3): an indefinite factorization.
   const double w0 = 0.5 * (std::sqrt(allModes.eigenvalues[2]) + std::sqrt(allModes.eigenvalues[4]));
   const auto A0mid = full.staticCompliance(w0, allModes);

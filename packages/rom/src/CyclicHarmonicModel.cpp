@@ -89,6 +89,21 @@ Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   return A;
 }
 
+Eigen::MatrixXd CyclicHarmonicModel::zeroFrequencyCompliance() const {
+  const auto& I = *impl_;
+  std::unique_ptr<solvers::DirectSolver> solver;
+  try {
+    solver = std::make_unique<solvers::DirectSolver>(*I.op.K, I.op.M.get(), 0.0);
+  } catch (const std::exception& e) {
+    throw InputError("reduced model", std::string("K does not factor at zero frequency (a free sector has no static "
+                                                  "compliance): ") + e.what());
+  }
+  linalg::MultiVector X(I.G->getMap(), I.G->getNumVectors());
+  solver->solve(*I.G, X);
+  Eigen::MatrixXd A = I.retained(X);
+  return 0.5 * (A + A.transpose());
+}
+
 RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
   const auto& I = *impl_;
   if (distinct < 1) throw InputError("modes", "must be at least 1");

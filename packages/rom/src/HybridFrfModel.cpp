@@ -63,4 +63,17 @@ Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
   return A;
 }
 
+Eigen::MatrixXd HybridFrfModel::zeroFrequencyCompliance() const {
+  if (modes_.numRigidBodyModes() > 0)
+    throw InputError("reduced model", "has rigid-body modes: no compliance at zero frequency (hold the sector)");
+  Eigen::VectorXd weight(modes_.numModes());
+  for (int j = 0; j < modes_.numModes(); ++j) {
+    const double l = modes_.eigenvalues[j];
+    weight(j) = 1.0 / l - (hasStatic_ ? 1.0 / (l - static_.shift) : 0.0);
+  }
+  Eigen::MatrixXd A = modes_.shapes * weight.asDiagonal() * modes_.shapes.transpose();
+  if (hasStatic_) A += static_.matrix;
+  return A;
+}
+
 }  // namespace cyclone::rom

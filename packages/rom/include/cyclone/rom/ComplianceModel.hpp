@@ -18,6 +18,10 @@ public:
   virtual Eigen::Index size() const = 0;
   /// A(omega) (complex symmetric), omega in rad/s.
   virtual Eigen::MatrixXcd compliance(double omega) const = 0;
+  /// The undamped compliance at omega = 0 (real): what the mean (harmonic 0) of a
+  /// harmonic balance solution sees. Structural damping has no meaning at zero
+  /// frequency, so this is not compliance(0). InputError for a model with rigid-body modes.
+  virtual Eigen::MatrixXd zeroFrequencyCompliance() const = 0;
 };
 
 }  // namespace cyclone::rom

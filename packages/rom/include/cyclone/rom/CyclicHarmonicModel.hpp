@@ -49,6 +49,8 @@ public:
 
   /// The full-FE compliance at the retained DOFs (one complex factorization).
   Eigen::MatrixXcd compliance(double omega) const override;
+  /// G^T K^{-1} G (CHOLMOD); InputError when K is singular (a free sector).
+  Eigen::MatrixXd zeroFrequencyCompliance() const override;
 
   /// The lowest `distinct` natural frequencies' modes (pairs twice) at the retained
   /// DOFs; shift as in solvers::ModalOptions (automaticShift() for a free sector).

@@ -55,6 +55,7 @@ public:
 
   Eigen::Index size() const override { return modes_.shapes.rows(); }
   Eigen::MatrixXcd compliance(double omega) const override;
+  Eigen::MatrixXd zeroFrequencyCompliance() const override;
 
   bool hasStaticCorrection() const { return hasStatic_; }
   const RetainedModes& modes() const { return modes_; }
