@@ -21,10 +21,46 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(Eigen::MatrixXd M, Eigen::MatrixXd 
   C0_ = C_;
 }
 
+HarmonicBalanceSystem::HarmonicBalanceSystem(std::shared_ptr<const ReceptanceModel> receptance,
+                                             HarmonicSet harmonics, int samples)
+    : receptance_(std::move(receptance)) {
+  if (!receptance_) throw InputError("system", "no receptance model given");
+  if (receptance_->numDofs() < 1) throw InputError("system", "the receptance model has no DOFs");
+  aft_ = std::make_unique<Aft>(std::move(harmonics), samples);
+  excitation_ = Eigen::VectorXd::Zero(numUnknowns());
+  static_ = Eigen::VectorXd::Zero(numUnknowns());
+  next_ = Eigen::MatrixXd::Identity(numCoefficients(), numCoefficients());
+  mean_ = receptance_->meanCompliance();
+  if (mean_.rows() != numDofs() || mean_.cols() != numDofs() || !mean_.allFinite())
+    throw InputError("system", "the receptance model's mean compliance is not a finite " + std::to_string(numDofs()) +
+                                   " square matrix");
+  const double largest = mean_.diagonal().cwiseAbs().maxCoeff();
+  if (!(largest > 0)) throw InputError("system", "the receptance model's mean compliance is zero");
+  kappa_ = 1.0 / largest;
+}
+
+const Eigen::MatrixXd& HarmonicBalanceSystem::M() const { return requireMatrixForm("M"), M_; }
+const Eigen::MatrixXd& HarmonicBalanceSystem::C() const { return requireMatrixForm("C"), C_; }
+const Eigen::MatrixXd& HarmonicBalanceSystem::K() const { return requireMatrixForm("K"), K_; }
+
+void HarmonicBalanceSystem::requireMatrixForm(const char* what) const {
+  if (receptance_)
+    throw InputError("system", std::string(what) + " needs the matrix form (M, C, K); this system is given by a "
+                                                   "receptance (reduced) model");
+}
+
 void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
   const int n = numDofs();
   if (coupling.sectors < 2)
     throw InputError("system", "a cyclic system needs at least 2 sectors, got " + std::to_string(coupling.sectors));
+  if (receptance_) {
+    if (coupling.sectors != receptance_->sectors())
+      throw InputError("system", "the receptance model is a sector of " + std::to_string(receptance_->sectors()) +
+                                     ", the cyclic coupling says " + std::to_string(coupling.sectors) + " sectors");
+    for (auto* A : {&coupling.Mnext, &coupling.Cnext, &coupling.Knext})
+      if (A->size() != 0 && A->norm() != 0)
+        throw InputError("system", "a receptance model holds its coupling to the next sector itself: no M/C/K_next");
+  }
   for (auto* A : {&coupling.Mnext, &coupling.Cnext, &coupling.Knext}) {
     if (A->size() == 0) *A = Eigen::MatrixXd::Zero(n, n);
     if (A->rows() != n || A->cols() != n)
@@ -87,6 +123,9 @@ void HarmonicBalanceSystem::replaceElement(std::size_t i, std::shared_ptr<const 
 }
 
 void HarmonicBalanceSystem::setDampingScale(double s) {
+  if (receptance_)
+    throw InputError("damping scale", "the damping of a receptance (reduced) model is inside the model: rebuild it "
+                                      "with another loss factor");
   if (!(std::isfinite(s) && s >= 0)) throw InputError("damping scale", "must be >= 0, got " + std::to_string(s));
   dampingScale_ = s;
   C_ = s * C0_;
@@ -153,7 +192,36 @@ Eigen::MatrixXd HarmonicBalanceSystem::coefficientOperator(const Eigen::MatrixXd
   return L;
 }
 
+Eigen::MatrixXd HarmonicBalanceSystem::complianceOperator(double omega) const {
+  if (!receptance_) throw InputError("system", "complianceOperator needs the receptance form");
+  const int n = numDofs(), nc = numCoefficients();
+  const auto& H = aft_->harmonics();
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n * nc, n * nc);
+  for (int h : H.harmonics()) {
+    if (h == 0) {
+      const int i = H.cosIndex(0);
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) B(a * nc + i, b * nc + i) = mean_(a, b);
+      continue;
+    }
+    // X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s.
+    const Eigen::MatrixXcd A = receptance_->compliance(h * omega, phaseIndex(h));
+    if (A.rows() != n || A.cols() != n || !A.allFinite())
+      throw Error("receptance model: compliance at harmonic " + std::to_string(h) + " is not a finite " +
+                  std::to_string(n) + " square matrix");
+    const int c = H.cosIndex(h), s = H.sinIndex(h);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        const double re = A(a, b).real(), im = A(a, b).imag();
+        B(a * nc + c, b * nc + c) = re, B(a * nc + c, b * nc + s) = im;
+        B(a * nc + s, b * nc + c) = -im, B(a * nc + s, b * nc + s) = re;
+      }
+  }
+  return B;
+}
+
 Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
+  requireMatrixForm("the dynamic stiffness");
   // Z = L(K) + omega L(C) D + omega^2 L(M) D^2, D the per-DOF derivative in
   // coefficient space (it commutes with the next-sector rotation). Per harmonic
   // h on (cos, sin): [K - (h w)^2 M,  h w C; -h w C,  K - (h w)^2 M] for a lone sector.
@@ -188,6 +256,22 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
                                      Eigen::MatrixXd* jacobian, double excitationScale) const {
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
+  if (receptance_) {
+    // kappa (X - B (s F + F_static - F_nl)), J = kappa (I + B dF_nl/dX).
+    R = Eigen::VectorXd::Zero(n * nc);
+    if (jacobian) jacobian->setZero(n * nc, n * nc);
+    addElementForces(X, omega, R, jacobian);
+    const Eigen::MatrixXd B = complianceOperator(omega);
+    const Eigen::VectorXd load = excitationScale * excitation_ + static_ - R;
+    R.noalias() = kappa_ * X;
+    R.noalias() -= kappa_ * (B * load);
+    if (jacobian) {
+      Eigen::MatrixXd BJ = B * *jacobian;
+      *jacobian = kappa_ * BJ;
+      jacobian->diagonal().array() += kappa_;
+    }
+    return;
+  }
   if (jacobian) {  // the linear operator straight into the Jacobian: no copy of the dense matrix
     *jacobian = linearOperator(omega);
     R.noalias() = *jacobian * X;
@@ -195,6 +279,12 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
     R.noalias() = linearOperator(omega) * X;
   }
   R -= excitationScale * excitation_ + static_;
+  addElementForces(X, omega, R, jacobian);
+}
+
+void HarmonicBalanceSystem::addElementForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
+                                             Eigen::MatrixXd* jacobian) const {
+  const int n = numDofs(), nc = numCoefficients();
   const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, n);  // column a: coefficients of DOF a
   Eigen::Map<Eigen::MatrixXd> Rm(R.data(), nc, n);
   const Eigen::MatrixXd& S = next_;
@@ -243,6 +333,7 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
 }
 
 Eigen::VectorXd HarmonicBalanceSystem::linearSolution(double omega, double excitationScale) const {
+  if (receptance_) return complianceOperator(omega) * (excitationScale * excitation_ + static_);
   return linearOperator(omega).partialPivLu().solve(Eigen::VectorXd(excitationScale * excitation_ + static_));
 }
 

@@ -33,7 +33,8 @@ std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem
                                           ", which the new harmonic set lacks");
     }
   }
-  auto out = std::make_unique<HarmonicBalanceSystem>(s.M(), s.C(), s.K(), harmonics, samples);
+  auto out = s.isReceptance() ? std::make_unique<HarmonicBalanceSystem>(s.receptance(), harmonics, samples)
+                              : std::make_unique<HarmonicBalanceSystem>(s.M(), s.C(), s.K(), harmonics, samples);
   if (s.isCyclic()) out->setCyclic(s.cyclic());
   for (const auto& c : s.elements()) out->addElement(c.element, c.W, c.Wnext);
   const HarmonicSet& to = out->aft().harmonics();

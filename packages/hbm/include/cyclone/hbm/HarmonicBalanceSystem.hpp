@@ -14,11 +14,19 @@
 // eqs. 7.9-7.15). Only sector 0 is solved; an element joining sector j to
 // j+1 (W_next) is evaluated exactly, and its reaction on sector j+1 comes back
 // to sector 0 from the element joining sector N-1 to 0.
+//
+// Receptance form: the linear part may instead be a model's dynamic compliance
+// A at the DOFs the elements and the excitation use (ReceptanceModel: a reduced
+// model of an FE sector). The residual is then, per harmonic,
+//   R = kappa (X - A(h w) (s F_ex + F_static - F_nl(X))),
+// kappa a fixed stiffness (1 / the largest diagonal entry of the mean
+// compliance) that keeps the rows in force units like the matrix form's.
 #include <memory>
 #include <vector>
 
 #include "cyclone/hbm/Aft.hpp"
 #include "cyclone/hbm/NonlinearElement.hpp"
+#include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/hbm/ScalarElement.hpp"
 
 namespace cyclone::hbm {
@@ -33,6 +41,15 @@ struct CyclicCoupling {
 class HarmonicBalanceSystem {
 public:
   HarmonicBalanceSystem(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, HarmonicSet harmonics, int samples);
+  /// The receptance form (see the file comment). A cyclic model still needs setCyclic
+  /// (N equal to the model's, EO, no coupling matrices). M, C and K do not exist in this
+  /// form: time integration, Hill stability, the damping scale and the full-ring
+  /// expansion need the matrix form and say so.
+  HarmonicBalanceSystem(std::shared_ptr<const ReceptanceModel> receptance, HarmonicSet harmonics, int samples);
+  bool isReceptance() const { return receptance_ != nullptr; }
+  const std::shared_ptr<const ReceptanceModel>& receptance() const { return receptance_; }
+  /// The stiffness kappa of the receptance form's rows (1 in the matrix form).
+  double receptanceStiffness() const { return kappa_; }
 
   /// Makes the system one sector of a ring (see the file comment). Call before
   /// adding elements that use W_next.
@@ -69,7 +86,7 @@ public:
   void addExcitationCoefficients(const Eigen::VectorXd& F);
   void addStaticLoadCoefficients(const Eigen::VectorXd& L);
 
-  int numDofs() const { return int(K_.rows()); }
+  int numDofs() const { return receptance_ ? receptance_->numDofs() : int(K_.rows()); }
   int numCoefficients() const { return aft_->numCoefficients(); }
   int numUnknowns() const { return numDofs() * numCoefficients(); }
   const Aft& aft() const { return *aft_; }
@@ -85,15 +102,19 @@ public:
   /// stiffness. The start for continuation (the linear solution without the
   /// elements can be far from a stuck contact's response).
   Eigen::VectorXd linearizedSolution(double omega, double excitationScale = 1.0) const;
-  /// The dynamic stiffness Z(omega) of the linear part (numUnknowns square).
+  /// The dynamic stiffness Z(omega) of the linear part (numUnknowns square); matrix form only.
   Eigen::MatrixXd linearOperator(double omega) const;
+  /// The compliance A(omega) in coefficient space (numUnknowns square, 2 x 2 blocks
+  /// [Re A, Im A; -Im A, Re A] per harmonic on (cos, sin)); receptance form only.
+  Eigen::MatrixXd complianceOperator(double omega) const;
   /// A (x) I + A_next (x) S + A_next^T (x) S^T in coefficient space, S the next-sector
   /// map: how a sector matrix acts on the coefficients of a cyclic solution.
   Eigen::MatrixXd coefficientOperator(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext) const;
 
-  const Eigen::MatrixXd& M() const { return M_; }
-  const Eigen::MatrixXd& C() const { return C_; }
-  const Eigen::MatrixXd& K() const { return K_; }
+  /// The matrices of the matrix form (InputError in the receptance form).
+  const Eigen::MatrixXd& M() const;
+  const Eigen::MatrixXd& C() const;
+  const Eigen::MatrixXd& K() const;
   struct Connection {
     std::shared_ptr<const NonlinearElement> element;
     Eigen::MatrixXd W, Wnext;  ///< Wnext empty unless the element joins to the next sector
@@ -109,6 +130,12 @@ public:
 
 private:
   long phaseIndex(int harmonic) const;  ///< h EO mod N in 0..N-1
+  void requireMatrixForm(const char* what) const;
+  /// Adds the elements' force coefficients to R and their Jacobian to *jacobian.
+  void addElementForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian) const;
+  std::shared_ptr<const ReceptanceModel> receptance_;
+  Eigen::MatrixXd mean_;  // receptance form: the mean compliance
+  double kappa_ = 1.0;
   Eigen::MatrixXd M_, C_, K_;
   Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale
   double dampingScale_ = 1.0;

@@ -1,0 +1,46 @@
+#include <cmath>
+#include <complex>
+#include <string>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/ReceptanceModel.hpp"
+
+namespace cyclone::hbm {
+
+MatrixReceptance::MatrixReceptance(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, int sectors,
+                                   Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext, Eigen::MatrixXd Knext)
+    : M_(std::move(M)), C_(std::move(C)), K_(std::move(K)), sectors_(sectors) {
+  const auto n = K_.rows();
+  if (sectors < 1) throw InputError("receptance", "sectors must be >= 1, got " + std::to_string(sectors));
+  for (auto* A : {&M_, &C_, &K_, &Mnext, &Cnext, &Knext}) {
+    if (A->size() == 0) *A = Eigen::MatrixXd::Zero(n, n);
+    if (A->rows() != n || A->cols() != n) throw InputError("receptance", "all matrices must be " + std::to_string(n) + " square");
+  }
+  if (sectors == 1 && (Mnext.norm() > 0 || Cnext.norm() > 0 || Knext.norm() > 0))
+    throw InputError("receptance", "coupling to the next sector needs sectors >= 2");
+  Mnext_ = std::move(Mnext), Cnext_ = std::move(Cnext), Knext_ = std::move(Knext);
+}
+
+Eigen::MatrixXcd MatrixReceptance::phased(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext,
+                                          long phaseIndex) const {
+  // Sector j's equation holds A x_j + A_next x_{j+1} + A_next^T x_{j-1}, x_{j+1} = e^{-i a} x_j.
+  const double a = 2 * M_PI * double(phaseIndex % sectors_) / double(sectors_);
+  const std::complex<double> e(std::cos(a), -std::sin(a));
+  return A.cast<std::complex<double>>() + e * Anext.cast<std::complex<double>>() +
+         std::conj(e) * Anext.transpose().cast<std::complex<double>>();
+}
+
+Eigen::MatrixXcd MatrixReceptance::compliance(double f, long p) const {
+  const Eigen::MatrixXcd Z = phased(K_, Knext_, p) + std::complex<double>(0, f) * phased(C_, Cnext_, p) -
+                             f * f * phased(M_, Mnext_, p);
+  return Z.partialPivLu().inverse();
+}
+
+Eigen::MatrixXd MatrixReceptance::meanCompliance() const {
+  const Eigen::MatrixXd K0 = K_ + Knext_ + Knext_.transpose();
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(K0);
+  if (!lu.isInvertible()) throw InputError("receptance", "K is singular: no static compliance for the mean");
+  return lu.inverse();
+}
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,60 @@
+#include "cyclone/rom/SectorReceptance.hpp"
+
+#include <complex>
+#include <string>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::rom {
+
+namespace {
+int copies(int sectors, int k) { return (k == 0 || 2 * k == sectors) ? 1 : 2; }
+}  // namespace
+
+SectorReceptance::SectorReceptance(int sectors, std::map<int, std::shared_ptr<const ComplianceModel>> models)
+    : sectors_(sectors), models_(std::move(models)) {
+  if (sectors < 2) throw InputError("reduced model", "a cyclic sector needs N >= 2, got " + std::to_string(sectors));
+  if (models_.empty()) throw InputError("reduced model", "no nodal diameter's model given");
+  for (const auto& [k, m] : models_) {
+    if (k < 0 || 2 * k > sectors)
+      throw InputError("reduced model", "nodal diameter " + std::to_string(k) + " is outside 0.." +
+                                            std::to_string(sectors / 2));
+    if (!m) throw InputError("reduced model", "nodal diameter " + std::to_string(k) + " has no model");
+    const int c = copies(sectors, k);
+    if (m->size() % (3 * c) != 0)
+      throw InputError("reduced model", "nodal diameter " + std::to_string(k) + ": size " + std::to_string(m->size()) +
+                                            " is not 3 x nodes x " + std::to_string(c) + " copies");
+    const int n = int(m->size()) / c;
+    if (dofs_ != 0 && n != dofs_)
+      throw InputError("reduced model", "nodal diameters retain different DOFs (" + std::to_string(dofs_) + " and " +
+                                            std::to_string(n) + ")");
+    dofs_ = n;
+  }
+}
+
+std::pair<int, int> SectorReceptance::nodalDiameter(int sectors, long phaseIndex) {
+  const long p = ((phaseIndex % sectors) + sectors) % sectors;
+  const long k = (sectors - p) % sectors;  // the FE phase: neighbour = e^{+j 2 pi k / N} this sector
+  if (2 * k <= sectors) return {int(k), +1};
+  return {int(p), -1};
+}
+
+const ComplianceModel& SectorReceptance::model(int k) const {
+  const auto it = models_.find(k);
+  if (it == models_.end())
+    throw InputError("reduced model", "no model for nodal diameter " + std::to_string(k) +
+                                          ", which the engine order and harmonics need");
+  return *it->second;
+}
+
+Eigen::MatrixXcd SectorReceptance::compliance(double frequency, long phaseIndex) const {
+  const auto [k, sign] = nodalDiameter(sectors_, phaseIndex);
+  const Eigen::MatrixXcd A = model(k).compliance(frequency);
+  if (copies(sectors_, k) == 1) return A;
+  const int n = dofs_;
+  return A.topLeftCorner(n, n) + std::complex<double>(0, sign) * A.bottomLeftCorner(n, n);
+}
+
+Eigen::MatrixXd SectorReceptance::meanCompliance() const { return model(0).zeroFrequencyCompliance(); }
+
+}  // namespace cyclone::rom

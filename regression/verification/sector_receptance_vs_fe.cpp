@@ -1,0 +1,154 @@
+// Verification: the receptance the harmonic balance gets from a cyclic
+// sector's per-nodal-diameter models (rom::SectorReceptance over the full FE
+// compliance of CyclicHarmonicModel, real form) against the sector equations
+// the harmonic balance's matrix form states: the sector's own physical K and M,
+// split into x_j (every free DOF but the disc's right face) and the neighbour's
+// left face, A x_j + A_next x_{j+1} + A_next^T x_{j-1}, with x_{j+1} = e^{-i 2 pi p/N} x_j
+// (the convention hbm's unit tests prove for the matrix form). Solved by a
+// sparse complex LU. This fixes the mapping of every phase index p to a nodal
+// diameter and to the sign of the travelling direction; a wrong sign gives the
+// complex conjugate and an error of order one.
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseLU>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <map>
+
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/fe/Assembler.hpp"
+#include "cyclone/fe/DofMap.hpp"
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/SectorReceptance.hpp"
+
+using namespace cyclone;
+using Sparse = Eigen::SparseMatrix<double>;
+using SparseC = Eigen::SparseMatrix<std::complex<double>>;
+
+namespace {
+
+Sparse toSparse(const linalg::Matrix& A) {
+  const auto n = Eigen::Index(A.getGlobalNumRows());
+  std::vector<Eigen::Triplet<double>> t;
+  for (Eigen::Index r = 0; r < n; ++r) {
+    std::size_t len = A.getNumEntriesInGlobalRow(r);
+    linalg::Matrix::nonconst_global_inds_host_view_type c("c", len);
+    linalg::Matrix::nonconst_values_host_view_type v("v", len);
+    A.getGlobalRowCopy(r, c, v, len);
+    for (std::size_t k = 0; k < len; ++k) t.emplace_back(r, Eigen::Index(c(k)), v(k));
+  }
+  Sparse S(n, n);
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+}  // namespace
+
+TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
+  const auto comm = Tpetra::getDefaultComm();
+  mesh::ShroudedSectorParameters p;
+  p.sectors = 8;
+  p.meshSize = 14.0;
+  p.boreRadius = 70.0;
+  auto mesh = mesh::generateShroudedSector(p);
+  const auto& left = mesh.nodeSet("shroud_contact_left");
+  const auto& right = mesh.nodeSet("shroud_contact_right");
+  mesh.nodeSets["rom_contact"] = {left.front(), left[left.size() / 2], right.front(), right[right.size() / 2]};
+  const auto sector = cyclic::makeCyclicSector(mesh, p.sectors, {}, {"disc_left"}, {"disc_right"});  // cantilever
+  const int N = p.sectors;
+
+  // The physical sector: bore fixed, no cyclic constraint.
+  fe::DofMap dofs(mesh.numNodes());
+  dofs.constrain(mesh.nodeSet("bore"));
+  dofs.finalize();
+  const fe::Assembler assembler(mesh, dofs, comm);
+  rom::HarmonicModelProblem problem;
+  const Sparse K = toSparse(*assembler.stiffness(problem.material)), M = toSparse(*assembler.mass(problem.material));
+
+  // x_j: every free DOF of the nodes off the disc's right face; the right face is the
+  // neighbour's left face rotated by Q: u = P0 x_j + P1 x_{j+1}.
+  std::vector<char> onRight(mesh.numNodes(), 0);
+  for (auto n : sector.right) onRight[n] = 1;
+  std::vector<long> xIndex(dofs.numFree(), -1);
+  long nx = 0;
+  for (mesh::Index node = 0; node < mesh.numNodes(); ++node)
+    for (int c = 0; c < 3; ++c)
+      if (dofs.equation(node, c) >= 0 && !onRight[node]) xIndex[dofs.equation(node, c)] = nx++;
+  std::vector<Eigen::Triplet<double>> t0, t1;
+  for (long e = 0; e < dofs.numFree(); ++e)
+    if (xIndex[e] >= 0) t0.emplace_back(e, xIndex[e], 1.0);
+  const Eigen::Matrix3d Q = sector.rotation();
+  for (std::size_t i = 0; i < sector.left.size(); ++i)
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        const long er = dofs.equation(sector.right[i], r), ec = dofs.equation(sector.left[i], c);
+        if (er >= 0 && ec >= 0 && Q(r, c) != 0) t1.emplace_back(er, xIndex[ec], Q(r, c));
+      }
+  Sparse P0(dofs.numFree(), nx), P1(dofs.numFree(), nx);
+  P0.setFromTriplets(t0.begin(), t0.end());
+  P1.setFromTriplets(t1.begin(), t1.end());
+  const Sparse A = Sparse(P0.transpose() * K * P0) + Sparse(P1.transpose() * K * P1), An = P0.transpose() * K * P1;
+  const Sparse B = Sparse(P0.transpose() * M * P0) + Sparse(P1.transpose() * M * P1), Bn = P0.transpose() * M * P1;
+  std::printf("sector: %ld unknowns x_j (%lld free physical DOFs)\n", nx, (long long)dofs.numFree());
+
+  // The reduced side: the full FE compliance per nodal diameter, undamped.
+  problem.retainedNodeSets = {"rom_contact", "mid_blade"};
+  problem.fixedNodeSets = {"bore"};
+  std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;
+  for (int k = 0; 2 * k <= N; ++k) {
+    problem.harmonic = k;
+    models[k] = std::make_shared<rom::CyclicHarmonicModel>(mesh, sector, problem, comm);
+  }
+  const rom::SectorReceptance receptance(N, models);
+  const auto& nodes = static_cast<const rom::CyclicHarmonicModel&>(*models[0]).retainedNodes();
+  ASSERT_EQ(receptance.numDofs(), int(3 * nodes.size()));
+  std::vector<long> retained;
+  for (auto n : nodes)
+    for (int c = 0; c < 3; ++c) retained.push_back(xIndex[dofs.equation(n, c)]);
+
+  const double omega = 2 * M_PI * 300.0;  // below the first natural frequency of most diameters, not on any
+  double worst = 0, conjugateGap = 1e300;
+  for (long phase = 0; phase < N; ++phase) {
+    Timer timer;
+    const double a = 2 * M_PI * double(phase) / N;
+    const std::complex<double> e(std::cos(a), -std::sin(a));
+    const SparseC Z = A.cast<std::complex<double>>() + e * An.cast<std::complex<double>>() +
+                      std::conj(e) * Sparse(An.transpose()).cast<std::complex<double>>() -
+                      omega * omega * (B.cast<std::complex<double>>() + e * Bn.cast<std::complex<double>>() +
+                                       std::conj(e) * Sparse(Bn.transpose()).cast<std::complex<double>>());
+    Eigen::SparseLU<SparseC> lu(Z);
+    ASSERT_EQ(lu.info(), Eigen::Success);
+    const int n = int(retained.size());
+    Eigen::MatrixXcd rhs = Eigen::MatrixXcd::Zero(nx, n);
+    for (int j = 0; j < n; ++j) rhs(retained[j], j) = 1.0;
+    const Eigen::MatrixXcd X = lu.solve(rhs);
+    Eigen::MatrixXcd reference(n, n);
+    for (int i = 0; i < n; ++i) reference.row(i) = X.row(retained[i]);
+    const Eigen::MatrixXcd got = receptance.compliance(omega, phase);
+    const double err = (got - reference).norm() / reference.norm();
+    const double conj = (got.conjugate() - reference).norm() / reference.norm();
+    const auto [k, sign] = rom::SectorReceptance::nodalDiameter(N, phase);
+    std::printf("phase index %ld -> ND %d (%+d): error %.2e (the other direction: %.2e), %.2f s\n", phase, k, sign, err,
+                conj, timer.seconds());
+    worst = std::max(worst, err);
+    if (k != 0 && 2 * k != N) conjugateGap = std::min(conjugateGap, conj);
+  }
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_GT(conjugateGap, 1e4 * worst);  // the travelling direction matters: the test tells them apart
+
+  // The mean: nodal diameter 0 at zero frequency.
+  const Sparse K0 = A + An + Sparse(An.transpose());
+  Eigen::SparseLU<Sparse> lu0(K0);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nx, long(retained.size()));
+  for (std::size_t j = 0; j < retained.size(); ++j) rhs(retained[j], long(j)) = 1.0;
+  const Eigen::MatrixXd X0 = lu0.solve(rhs);
+  Eigen::MatrixXd ref0(retained.size(), retained.size());
+  for (std::size_t i = 0; i < retained.size(); ++i) ref0.row(long(i)) = X0.row(retained[i]);
+  const double meanErr = (receptance.meanCompliance() - ref0).norm() / ref0.norm();
+  std::printf("mean compliance: error %.2e\n", meanErr);
+  EXPECT_LT(meanErr, 1e-8);
+}

@@ -1,0 +1,159 @@
+// The receptance form of the harmonic balance against the matrix form it
+// stands for: with A = Z^{-1} per harmonic (MatrixReceptance of the same M, C,
+// K and cyclic coupling), R_receptance = kappa A R_matrix for any X, so both
+// have the same solutions; the analytic Jacobian against finite differences.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/CubicSpring.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/JenkinsElement.hpp"
+#include "cyclone/hbm/ReceptanceModel.hpp"
+
+using namespace cyclone;
+using namespace cyclone::hbm;
+
+namespace {
+
+struct Matrices {
+  Eigen::MatrixXd M, C, K, Mn, Cn, Kn;
+};
+
+Matrices ringMatrices() {
+  Matrices m;
+  m.M = Eigen::Vector3d(1.2, 0.4, 0.4).asDiagonal();
+  m.K.resize(3, 3);
+  m.K << 13.0, -1.0, -0.5, -1.0, 3.0, 0.2, -0.5, 0.2, 4.0;
+  m.Kn = Eigen::MatrixXd::Zero(3, 3);
+  m.Kn(0, 0) = -2.0, m.Kn(1, 0) = -0.3;  // not symmetric: A_next^T couples the other way
+  m.C = 0.01 * m.K, m.Cn = 0.01 * m.Kn;
+  m.Mn = Eigen::MatrixXd::Zero(3, 3);
+  m.Mn(0, 0) = 0.05;
+  return m;
+}
+
+// Elements and loads shared by both forms: a 3D friction contact between
+// neighbouring tips, a Jenkins element to ground, a cubic spring, a preload.
+void addElementsAndLoads(HarmonicBalanceSystem& s) {
+  FrictionContactParameters p;
+  p.tangentialDirections = 2, p.kt = 5.0, p.kn = 6.0, p.mu = 0.3, p.preload = 0.5;
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 3), Wn = Eigen::MatrixXd::Zero(3, 3);
+  W(1, 0) = 1, W(0, 1) = 0.3, W(2, 2) = 1;
+  Wn(1, 0) = -1, Wn(0, 1) = -0.3, Wn(2, 2) = -1;
+  s.addElement(std::make_shared<FrictionContact>(p), W, Wn);
+  s.addElement(std::make_shared<JenkinsElement>(3.0, 0.2), Eigen::Vector3d(1, 0, 0));
+  s.addElement(std::make_shared<CubicSpring>(0.5), Eigen::Vector3d(0, 1, -1));
+  s.addExcitation(1, 1, 0.8, 0.1);
+  s.addExcitation(2, 1, 0.2);
+  s.addStaticLoad(2, 0.3);
+}
+
+std::pair<std::unique_ptr<HarmonicBalanceSystem>, std::unique_ptr<HarmonicBalanceSystem>> bothForms(int N, int eo) {
+  const auto m = ringMatrices();
+  const int samples = 96;
+  auto matrix = std::make_unique<HarmonicBalanceSystem>(m.M, m.C, m.K, HarmonicSet::upTo(3), samples);
+  auto model = std::make_shared<MatrixReceptance>(m.M, m.C, m.K, N, m.Mn, m.Cn, m.Kn);
+  auto receptance = std::make_unique<HarmonicBalanceSystem>(model, HarmonicSet::upTo(3), samples);
+  CyclicCoupling c;
+  c.sectors = N, c.engineOrder = eo;
+  receptance->setCyclic(c);
+  c.Knext = m.Kn, c.Cnext = m.Cn, c.Mnext = m.Mn;
+  matrix->setCyclic(c);
+  addElementsAndLoads(*matrix);
+  addElementsAndLoads(*receptance);
+  return {std::move(matrix), std::move(receptance)};
+}
+
+Eigen::VectorXd randomVector(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd x(n);
+  for (int i = 0; i < n; ++i) x(i) = u(rng);
+  return x;
+}
+
+}  // namespace
+
+TEST(ReceptanceForm, ResidualIsComplianceTimesMatrixResidual) {
+  const int N = 6;
+  for (int eo : {0, 1, 2, 3, 5, -1}) {
+    auto [matrix, receptance] = bothForms(N, eo);
+    const Eigen::VectorXd X = 0.8 * randomVector(matrix->numUnknowns(), 7 + eo);
+    const double w = 1.3;
+    Eigen::VectorXd Rm, Rr;
+    Eigen::MatrixXd Jm, Jr;
+    matrix->residual(X, w, Rm, &Jm);
+    receptance->residual(X, w, Rr, &Jr);
+    const Eigen::MatrixXd B = receptance->complianceOperator(w);
+    const double kappa = receptance->receptanceStiffness();
+    // Independent: B is the inverse of the matrix form's dynamic stiffness.
+    const double inverseErr = (B * matrix->linearOperator(w) - Eigen::MatrixXd::Identity(B.rows(), B.cols())).norm();
+    const double resErr = (Rr - kappa * B * Rm).norm() / Rr.norm();
+    const double jacErr = (Jr - kappa * B * Jm).norm() / Jr.norm();
+    std::printf("EO %2d: |B Z - I| %.1e, residual %.1e, Jacobian %.1e\n", eo, inverseErr, resErr, jacErr);
+    EXPECT_LT(inverseErr, 1e-10) << eo;
+    EXPECT_LT(resErr, 1e-12) << eo;
+    EXPECT_LT(jacErr, 1e-12) << eo;
+  }
+}
+
+TEST(ReceptanceForm, JacobianMatchesFiniteDifferences) {
+  auto [matrix, receptance] = bothForms(6, 2);
+  const Eigen::VectorXd X = 0.5 * randomVector(receptance->numUnknowns(), 3);
+  Eigen::VectorXd R0, R1, R2;
+  Eigen::MatrixXd J;
+  receptance->residual(X, 1.1, R0, &J);
+  const double h = 1e-6;
+  double worst = 0;
+  for (int j = 0; j < receptance->numUnknowns(); ++j) {
+    Eigen::VectorXd Xp = X, Xm = X;
+    Xp(j) += h, Xm(j) -= h;
+    receptance->residual(Xp, 1.1, R1, nullptr);
+    receptance->residual(Xm, 1.1, R2, nullptr);
+    worst = std::max(worst, ((R1 - R2) / (2 * h) - J.col(j)).norm() / J.norm());
+  }
+  std::printf("receptance Jacobian vs central differences: %.1e\n", worst);
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(ReceptanceForm, SameSolutionAsMatrixForm) {
+  auto [matrix, receptance] = bothForms(6, 2);
+  const double w = 1.9;
+  // Newton on each form from its own linearised start.
+  auto solve = [w](const HarmonicBalanceSystem& s) {
+    Eigen::VectorXd X = s.linearizedSolution(w), R;
+    Eigen::MatrixXd J;
+    for (int it = 0; it < 50; ++it) {
+      s.residual(X, w, R, &J);
+      if (R.norm() < 1e-13) break;
+      X -= J.partialPivLu().solve(R);
+    }
+    return X;
+  };
+  const Eigen::VectorXd Xm = solve(*matrix), Xr = solve(*receptance);
+  Eigen::VectorXd R;
+  matrix->residual(Xr, w, R, nullptr);
+  const double err = (Xm - Xr).norm() / Xm.norm();
+  std::printf("solutions differ by %.1e, matrix residual at the receptance solution %.1e\n", err, R.norm());
+  EXPECT_LT(err, 1e-10);
+  EXPECT_LT(R.norm(), 1e-10);
+}
+
+TEST(ReceptanceForm, MatrixOnlyFeaturesSayWhy) {
+  auto [matrix, receptance] = bothForms(6, 2);
+  EXPECT_THROW(receptance->K(), InputError);
+  EXPECT_THROW(receptance->setDampingScale(2.0), InputError);
+  EXPECT_THROW(receptance->linearOperator(1.0), InputError);
+  CyclicCoupling wrong;
+  wrong.sectors = 5, wrong.engineOrder = 1;
+  const auto m = ringMatrices();
+  HarmonicBalanceSystem other(std::make_shared<MatrixReceptance>(m.M, m.C, m.K, 6, m.Mn, m.Cn, m.Kn),
+                              HarmonicSet::upTo(1), 16);
+  EXPECT_THROW(other.setCyclic(wrong), InputError);
+}
