@@ -43,11 +43,23 @@
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
+#include "SceneStages.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
 namespace cyclone::scenes {
 
 const char* demoScene() { return demoSceneYaml(); }
+
+fe::IsotropicElastic readMaterial(SceneSection m) {
+  fe::IsotropicElastic material;
+  material.name = m.getString("name", material.name);
+  material.E = m.getDouble("E", material.E);
+  material.nu = m.getDouble("nu", material.nu);
+  material.rho = m.getDouble("rho", material.rho);
+  m.rejectUnknownKeys();
+  material.validate(m.location());
+  return material;
+}
 
 namespace {
 
@@ -113,16 +125,6 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
   return mesh;
 }
 
-fe::IsotropicElastic readMaterial(SceneSection m) {
-  fe::IsotropicElastic material;
-  material.name = m.getString("name", material.name);
-  material.E = m.getDouble("E", material.E);
-  material.nu = m.getDouble("nu", material.nu);
-  material.rho = m.getDouble("rho", material.rho);
-  m.rejectUnknownKeys();
-  material.validate(m.location());
-  return material;
-}
 
 std::string rpmTag(double rpm) {
   std::ostringstream s;
@@ -532,13 +534,8 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     setup.parameter = ForcedResponseSetup::Parameter::ElementParameter;
     const std::string element = parameter.substr(0, parameter.find('/'));
     setup.elementParameter = parameter.substr(parameter.find('/') + 1);
-    const auto it = std::find(setup.elementNames.begin(), setup.elementNames.end(), element);
-    if (it == setup.elementNames.end())
-      throw InputError(cs.where("parameter"), "no nonlinear element named '" + element + "'");
-    setup.parameterElement = int(it - setup.elementNames.begin());
-    setup.baseElement = hb.elements()[setup.parameterElement].element;
     try {
-      setup.baseElement->withParameter(setup.elementParameter, cs.requireDouble("from"));
+      selectElementParameter(setup, element, setup.elementParameter, cs.requireDouble("from"));
     } catch (const InputError& e) {
       throw InputError(cs.where("parameter"), e.what());
     }
@@ -626,23 +623,39 @@ continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalance
   return problem;
 }
 
+void selectElementParameter(ForcedResponseSetup& setup, const std::string& element, const std::string& parameter,
+                            double probe) {
+  setup.parameter = ForcedResponseSetup::Parameter::ElementParameter;
+  setup.elementParameter = parameter;
+  setup.parameterElements.clear();
+  setup.baseElements.clear();
+  for (std::size_t i = 0; i < setup.elementNames.size(); ++i)
+    if (setup.elementNames[i] == element) {
+      setup.parameterElements.push_back(int(i));
+      setup.baseElements.push_back(setup.system->elements()[i].element);
+      setup.baseElements.back()->withParameter(parameter, probe);  // InputError for an unknown parameter
+    }
+  if (setup.parameterElements.empty()) throw InputError("continuation", "no nonlinear element named '" + element + "'");
+}
+
 std::string ForcedResponseSetup::parameterName() const {
   switch (parameter) {
     case Parameter::Omega: return "omega";
     case Parameter::ForceScale: return "force_scale";
     case Parameter::DampingScale: return "damping_scale";
-    case Parameter::ElementParameter: return elementNames.at(parameterElement) + "/" + elementParameter;
+    case Parameter::ElementParameter: return elementNames.at(parameterElements.at(0)) + "/" + elementParameter;
   }
   return "";
 }
 
 std::pair<double, double> ForcedResponseSetup::apply(double p) {
   switch (parameter) {
-    case Parameter::Omega: return {p, excitationScale};
+    case Parameter::Omega: return {p * omegaUnit, excitationScale};
     case Parameter::ForceScale: return {omega, p};
     case Parameter::DampingScale: system->setDampingScale(p); break;
     case Parameter::ElementParameter:
-      system->replaceElement(parameterElement, baseElement->withParameter(elementParameter, p));
+      for (std::size_t i = 0; i < parameterElements.size(); ++i)
+        system->replaceElement(parameterElements[i], baseElements[i]->withParameter(elementParameter, p));
       break;
   }
   return {omega, excitationScale};
@@ -685,188 +698,10 @@ ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
 
 namespace {
 
-// The AFT sample count is checked by doubling it: the largest-response point
-// is solved again with 2N samples and the change of its peak reported (friction
-// and gaps place their events only to within a sample).
-std::string samplesCheck(ForcedResponseSetup& setup, const continuation::Branch& branch,
-                         const std::vector<double>& peaks) {
-  const std::size_t ip = std::max_element(peaks.begin(), peaks.end()) - peaks.begin();
-  const auto& pt = branch.points[ip];
-  const auto [w, scale] = setup.apply(pt.parameter);
-  const auto& hb = *setup.system;
-  const int N = hb.aft().numSamples(), dof = setup.outputDofs.front(), nc = hb.numCoefficients();
-  const auto doubled = hbm::withHarmonics(hb, hb.aft().harmonics(), 2 * N);
-  // The force-scale form at this frequency: the same row scaling as the trace.
-  const auto problem = continuationProblem(*doubled, ForcedResponseSetup::Parameter::ForceScale, w);
-  Eigen::VectorXd X = pt.x;
-  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
-  std::ostringstream out;
-  if (!newton.converged) {
-    out << "samples check: no solution with " << 2 * N << " samples at the peak (residual " << newton.residualNorm
-        << "); the sample count " << N << " may be too small";
-    log::warn(out.str());
-    return out.str();
-  }
-  const double before = peaks[ip];
-  const double after = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(X.segment(dof * nc, nc)));
-  const double change = std::abs(after / before - 1);
-  out << "samples check: " << N << " -> " << 2 * N << " samples changes the peak max|x| of DOF " << dof << " by "
-      << change << " (relative)";
-  if (change > 1e-2) log::warn(out.str() + ": raise `samples`");
-  return out.str();
-}
-
 void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
                          SceneSummary& summary) {
   auto setup = readForcedResponseSetup(scene);
-  auto& hb = *setup.system;
-  const auto& opt = setup.continuation;
-  const auto& dofs = setup.outputDofs;
-  const auto& harmonics = hb.aft().harmonics();
-  const int samples = hb.aft().numSamples();
-  const int n = hb.numDofs();
-  Timer timer;
-  const bool byOmega = setup.parameter == ForcedResponseSetup::Parameter::Omega;
-  const std::string parameterName = setup.parameterName();
-  auto frequency = [&](double p) { return setup.apply(p).first; };
-  {
-    std::ostringstream msg;
-    msg << "forced response: " << n << " DOFs, harmonics up to " << harmonics.maxHarmonic() << ", " << samples
-        << " samples, " << parameterName << " " << opt.from << " -> " << opt.to;
-    if (!byOmega) msg << " at omega " << setup.omega;
-    if (hb.isCyclic()) {
-      msg << "; cyclic: " << hb.cyclic().sectors << " sectors, engine order " << hb.cyclic().engineOrder
-          << ", harmonic -> nodal diameter:";
-      for (int h : harmonics.harmonics()) msg << " " << h << "->" << hb.nodalDiameter(h);
-    }
-    log::info(msg.str());
-  }
-  const StartingPoint start = findStartingPoint(setup);
-  if (start.x.size() > 0) {
-    std::ostringstream msg;
-    msg << "forced response: first point by " << start.method << " (" << start.seconds << " s)";
-    log::info(msg.str());
-  }
-  const auto branch = traceForcedResponse(setup, start);
-
-  // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
-  const std::string csvPath = outDir + "/frc.csv";
-  std::vector<double> plotW, plotMax;
-  std::vector<int> plotStable;
-  bool hill = setup.stability != "false";
-  for (const auto& c : hb.elements()) hill = hill && !c.element->usesVelocity();
-  if (!hill && setup.stability != "false")
-    log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
-  // Hill's eigenproblem is dense of size 2 n nc: about a second per point at
-  // 1200, so larger systems skip it unless the scene insists.
-  if (hill && setup.stability == "auto" && 2 * hb.numUnknowns() > 1200) {
-    hill = false;
-    log::warn("stability not computed: Hill's eigenproblem has " + std::to_string(2 * hb.numUnknowns()) +
-              " unknowns per point (set output: stability: true to compute it anyway)");
-  }
-  int unstablePoints = 0;
-  std::map<std::string, int> special;  // fold, branch_point, period_doubling, neimark_sacker
-  if (comm->getRank() == 0) {
-    // Stability of every point first: the flags need the neighbours.
-    std::vector<hbm::CurvePointStability> stability;
-    for (const auto& pt : branch.points) {
-      hbm::CurvePointStability st;
-      st.parameter = pt.parameter;
-      st.omega = frequency(pt.parameter);
-      if (hill) {
-        const auto fl = hbm::hillStability(hb, pt.x, st.omega);
-        st.stable = fl.stable ? 1 : 0;
-        st.leading = fl.exponents(0);
-      }
-      stability.push_back(st);
-    }
-    const auto flags = hbm::bifurcationFlags(stability);
-    AtomicFile file(csvPath);
-    std::ofstream csv(file.tempPath());
-    csv.precision(12);
-    csv << "point,omega_rad_s,freq_hz" << (byOmega ? "" : "," + parameterName);
-    for (int d : dofs) {
-      const std::string& name = setup.dofNames[d];
-      csv << "," << name << "_h0";
-      for (int h : harmonics.harmonics())
-        if (h > 0) csv << "," << name << "_amp_h" << h;
-      csv << "," << name << "_max";
-    }
-    csv << ",stable,max_floquet_real,bifurcation\n";
-    const int nc = hb.numCoefficients();
-    for (std::size_t i = 0; i < branch.points.size(); ++i) {
-      const auto& pt = branch.points[i];
-      const double w = frequency(pt.parameter);
-      csv << i << "," << w << "," << w / (2 * M_PI);
-      if (!byOmega) csv << "," << pt.parameter;
-      for (int d : dofs) {
-        csv << "," << (harmonics.contains(0) ? pt.x(d * nc + harmonics.cosIndex(0)) : 0.0);
-        for (int h : harmonics.harmonics())
-          if (h > 0) csv << "," << hb.amplitude(pt.x, d, h);
-        const double peak = hbm::peakMagnitude(harmonics, Eigen::VectorXd(pt.x.segment(d * nc, nc)));
-        csv << "," << peak;
-        if (d == dofs.front()) plotW.push_back(pt.parameter), plotMax.push_back(peak);  // x: the parameter
-      }
-      if (hill) {
-        const auto& st = stability[i];
-        csv << "," << st.stable << "," << st.leading.real();
-        plotStable.push_back(st.stable);
-        unstablePoints += st.stable ? 0 : 1;
-      } else {
-        csv << ",,";
-        plotStable.push_back(1);
-      }
-      csv << "," << flags[i] << "\n";
-      if (!flags[i].empty()) ++special[flags[i]];
-    }
-    csv.close();
-    if (!csv) throw Error("cannot write " + csvPath);
-    file.commit();
-    post::SvgPlot plot("Forced response (harmonic balance, arclength continuation)",
-                       byOmega ? "omega (rad/s)" : parameterName,
-                       "max |x(t)| of DOF " + std::to_string(dofs.front()));
-    // Stable stretches solid, unstable ones dashed (each stretch shares its end points).
-    bool labelled[2] = {false, false};
-    for (std::size_t i = 0; i + 1 < plotW.size();) {
-      std::size_t j = i + 1;
-      while (j + 1 < plotW.size() && plotStable[j] == plotStable[i]) ++j;
-      const bool stablePart = plotStable[i] == 1;
-      std::string label;
-      if (!labelled[stablePart]) {
-        label = std::string(stablePart ? "stable" : "unstable") + ", H = " + std::to_string(harmonics.maxHarmonic());
-        labelled[stablePart] = true;
-      }
-      plot.addLine(std::vector<double>(plotW.begin() + i, plotW.begin() + j + 1),
-                   std::vector<double>(plotMax.begin() + i, plotMax.begin() + j + 1), post::SvgPlot::palette(0), label,
-                   !stablePart);
-      i = j;
-    }
-    plot.write(outDir + "/frc.svg");
-    // The full coefficient vectors, for post-processing and restarts.
-    post::ResponseCurve curve;
-    curve.numDofs = n;
-    curve.numCoefficients = hb.numCoefficients();
-    curve.samples = samples;
-    curve.harmonics = harmonics.harmonics();
-    for (std::size_t i = 0; i < branch.points.size(); ++i) {
-      curve.omega.push_back(frequency(branch.points[i].parameter));
-      curve.parameter.push_back(branch.points[i].parameter);
-      curve.coefficients.push_back(branch.points[i].x);
-      curve.stable.push_back(hill ? plotStable[i] : -1);
-    }
-    post::writeResponseCurveHdf5(outDir + "/frc.h5", curve);
-  }
-  summary.written.push_back(outDir + "/frc.h5");
-  summary.written.push_back(csvPath);
-  summary.written.push_back(outDir + "/frc.svg");
-  std::ostringstream line;
-  line << "forced response: " << branch.points.size() << " points (" << unstablePoints
-       << " unstable by Hill's method) in " << timer.seconds() << " s, " << branch.stopReason;
-  for (const auto& [kind, count] : special) line << "; " << count << " " << kind;
-  summary.computed.push_back(line.str());
-  if (!branch.finished)
-    log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");
-  if (!plotMax.empty()) summary.computed.push_back(samplesCheck(setup, branch, plotMax));  // rank 0
+  traceAndWriteForcedResponse(setup, outDir, "frc", comm, summary);
 }
 
 void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
@@ -952,14 +787,17 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   SceneSummary summary;
   const auto analyses = scene.getStringList("analysis", {"static"});
   for (const auto& a : analyses)
-    if (a != "static" && a != "mesh" && a != "modal" && a != "forced_response")
+    if (a != "static" && a != "mesh" && a != "modal" && a != "forced_response" && a != "reduced_model" &&
+        a != "disc_response")
       throw InputError(scene.where("analysis"),
-                       "unknown analysis '" + a + "' (use static, modal, mesh or forced_response, or a list)");
+                       "unknown analysis '" + a +
+                           "' (use static, modal, mesh, reduced_model, disc_response or forced_response, or a list)");
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   // Top-level keys are checked before anything runs, so a typo costs no computation.
   scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
                              "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
-                             "samples", "continuation", "output", "static_loads"});
+                             "samples", "continuation", "output", "static_loads", "reduced_model",
+                             "disc_response"});
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");
@@ -975,6 +813,8 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
   if (wants("static")) staticStage(scene, mesh, outDir, comm, summary);
   if (wants("modal")) modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
+  if (wants("disc_response") || wants("reduced_model"))
+    discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, comm, summary);
   return summary;
 }
 

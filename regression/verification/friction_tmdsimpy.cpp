@@ -151,9 +151,9 @@ TEST(TmdsimpyFriction2D, FrictionCoefficientStudyReachesStuckAndFreeLimits) {
     setup.excitationScale = s;
     setup.omega = w;
     setup.parameter = scenes::ForcedResponseSetup::Parameter::ElementParameter;
-    setup.parameterElement = 0;
+    setup.parameterElements = {0};
     setup.elementParameter = "mu";
-    setup.baseElement = setup.system->elements()[0].element;
+    setup.baseElements = {setup.system->elements()[0].element};
     setup.continuation.from = 0.85, setup.continuation.to = to;
     setup.continuation.maxStep = 0.5;
     const auto problem = scenes::continuationProblem(setup);

@@ -23,6 +23,7 @@
 #include "cyclone/fe/DofMap.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
 #include "cyclone/rom/SectorReceptance.hpp"
 
 using namespace cyclone;
@@ -151,4 +152,32 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
   const double meanErr = (receptance.meanCompliance() - ref0).norm() / ref0.norm();
   std::printf("mean compliance: error %.2e\n", meanErr);
   EXPECT_LT(meanErr, 1e-8);
+
+  // Hybrid models of the same sector: the Woodbury dynamic stiffness against the inverse
+  // of their compliance, for every phase, near and away from a resonance.
+  std::map<int, std::shared_ptr<const rom::ComplianceModel>> hybrids;
+  for (const auto& [k, m] : models) {
+    const auto& full = static_cast<const rom::CyclicHarmonicModel&>(*m);
+    const auto modes = full.modes(12);
+    hybrids[k] = std::make_shared<rom::HybridFrfModel>(modes, full.staticCompliance(0.0, modes), 0.01);
+  }
+  const rom::SectorReceptance hybrid(N, hybrids);
+  double worstZ = 0;
+  for (long phase = 0; phase < N; ++phase) {
+    const auto [k, sign] = rom::SectorReceptance::nodalDiameter(N, phase);
+    const auto& hm = static_cast<const rom::HybridFrfModel&>(*hybrids[k]);
+    for (double f : {omega, std::sqrt(hm.modes().eigenvalues[0]), 1.5 * std::sqrt(hm.modes().eigenvalues[0])}) {
+      Timer t;
+      const Eigen::MatrixXcd Z = hybrid.dynamicStiffness(f, phase);
+      const double woodburySeconds = t.seconds();
+      t.restart();
+      const Eigen::MatrixXcd Zref = hybrid.compliance(f, phase).inverse();
+      const double inverseSeconds = t.seconds();
+      const double e = (Z - Zref).norm() / Zref.norm();
+      worstZ = std::max(worstZ, e);
+      std::printf("phase %ld, %.1f Hz: Woodbury vs inverse %.2e (%.1e s against %.1e s)\n", phase, f / (2 * M_PI), e,
+                  woodburySeconds, inverseSeconds);
+    }
+  }
+  EXPECT_LT(worstZ, 1e-8);
 }

@@ -103,6 +103,22 @@ TEST(ReceptanceForm, ResidualIsComplianceTimesMatrixResidual) {
   }
 }
 
+TEST(ReceptanceForm, DynamicStiffnessStatementEqualsMatrixForm) {
+  for (int eo : {0, 2, 3}) {
+    auto [matrix, receptance] = bothForms(6, eo);
+    receptance->useDynamicStiffness(true);
+    const Eigen::VectorXd X = 0.8 * randomVector(matrix->numUnknowns(), 21 + eo);
+    Eigen::VectorXd Rm, Rr;
+    Eigen::MatrixXd Jm, Jr;
+    matrix->residual(X, 1.3, Rm, &Jm);
+    receptance->residual(X, 1.3, Rr, &Jr);
+    const double resErr = (Rr - Rm).norm() / Rm.norm(), jacErr = (Jr - Jm).norm() / Jm.norm();
+    std::printf("EO %d, Z = A^-1: residual %.1e, Jacobian %.1e\n", eo, resErr, jacErr);
+    EXPECT_LT(resErr, 1e-12);
+    EXPECT_LT(jacErr, 1e-12);
+  }
+}
+
 TEST(ReceptanceForm, JacobianMatchesFiniteDifferences) {
   auto [matrix, receptance] = bothForms(6, 2);
   const Eigen::VectorXd X = 0.5 * randomVector(receptance->numUnknowns(), 3);

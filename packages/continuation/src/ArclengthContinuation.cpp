@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
 
 #include <LOCA.H>
 #include <LOCA_LAPACK.H>
@@ -47,6 +49,14 @@ public:
   void setParams(const LOCA::ParameterVector& p) override { p_ = p.getValue("p"); }
   void printSolution(const NOX::LAPACK::Vector& x, const double conParam) override {
     branch_.points.push_back({conParam, toEigen(x)});
+    // Progress for long curves: a line every 10 s.
+    if (sinceLog_.seconds() > 10) {
+      std::ostringstream msg;
+      msg << "continuation: " << branch_.points.size() << " points, parameter " << conParam << ", "
+          << total_.seconds() << " s";
+      log::info(msg.str());
+      sinceLog_.restart();
+    }
   }
 
 private:
@@ -59,6 +69,7 @@ private:
   NOX::LAPACK::Vector guess_;
   double p_;
   Branch& branch_;
+  Timer sinceLog_, total_;
 };
 
 }  // namespace

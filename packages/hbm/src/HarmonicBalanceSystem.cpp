@@ -68,6 +68,7 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
                                      std::to_string(n));
   }
   cyclic_ = std::move(coupling);
+  cachedOmega_ = -1;  // the phases changed
   Cnext0_ = cyclic_.Cnext;
   cyclic_.Cnext *= dampingScale_;
   // Sector j+1 is sector j delayed by phi = 2 pi EO / N: harmonic h rotates by h phi.
@@ -194,21 +195,44 @@ Eigen::MatrixXd HarmonicBalanceSystem::coefficientOperator(const Eigen::MatrixXd
 
 Eigen::MatrixXd HarmonicBalanceSystem::complianceOperator(double omega) const {
   if (!receptance_) throw InputError("system", "complianceOperator needs the receptance form");
+  return harmonicOperator(omega, false);
+}
+
+Eigen::MatrixXd HarmonicBalanceSystem::dynamicStiffnessOperator(double omega) const {
+  if (!receptance_) throw InputError("system", "dynamicStiffnessOperator needs the receptance form");
+  return harmonicOperator(omega, true);
+}
+
+void HarmonicBalanceSystem::useDynamicStiffness(bool on) {
+  if (!receptance_) throw InputError("system", "the dynamic-stiffness statement is for receptance models");
+  if (on && meanStiffness_.size() == 0) {
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(mean_);
+    if (!lu.isInvertible()) throw InputError("system", "the mean compliance is singular: keep the compliance form");
+    meanStiffness_ = lu.inverse();
+  }
+  stiffnessForm_ = on;
+  cachedOmega_ = -1;
+}
+
+Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inverse) const {
+  if (omega == cachedOmega_ && inverse == cachedInverse_) return cachedOperator_;
   const int n = numDofs(), nc = numCoefficients();
   const auto& H = aft_->harmonics();
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n * nc, n * nc);
   for (int h : H.harmonics()) {
     if (h == 0) {
       const int i = H.cosIndex(0);
+      const Eigen::MatrixXd& A0 = inverse ? meanStiffness_ : mean_;
       for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) B(a * nc + i, b * nc + i) = mean_(a, b);
+        for (int b = 0; b < n; ++b) B(a * nc + i, b * nc + i) = A0(a, b);
       continue;
     }
-    // X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s.
-    const Eigen::MatrixXcd A = receptance_->compliance(h * omega, phaseIndex(h));
+    // X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s (the same for Z = A^-1).
+    const Eigen::MatrixXcd A = inverse ? receptance_->dynamicStiffness(h * omega, phaseIndex(h))
+                                       : receptance_->compliance(h * omega, phaseIndex(h));
     if (A.rows() != n || A.cols() != n || !A.allFinite())
-      throw Error("receptance model: compliance at harmonic " + std::to_string(h) + " is not a finite " +
-                  std::to_string(n) + " square matrix");
+      throw Error(std::string("receptance model: ") + (inverse ? "dynamic stiffness" : "compliance") +
+                  " at harmonic " + std::to_string(h) + " is not a finite " + std::to_string(n) + " square matrix");
     const int c = H.cosIndex(h), s = H.sinIndex(h);
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) {
@@ -217,6 +241,7 @@ Eigen::MatrixXd HarmonicBalanceSystem::complianceOperator(double omega) const {
         B(a * nc + s, b * nc + c) = -im, B(a * nc + s, b * nc + s) = re;
       }
   }
+  cachedOmega_ = omega, cachedInverse_ = inverse, cachedOperator_ = B;
   return B;
 }
 
@@ -256,6 +281,17 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
                                      Eigen::MatrixXd* jacobian, double excitationScale) const {
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
+  if (receptance_ && stiffnessForm_) {
+    if (jacobian) {
+      *jacobian = dynamicStiffnessOperator(omega);
+      R.noalias() = *jacobian * X;
+    } else {
+      R.noalias() = dynamicStiffnessOperator(omega) * X;
+    }
+    R -= excitationScale * excitation_ + static_;
+    addElementForces(X, omega, R, jacobian);
+    return;
+  }
   if (receptance_) {
     // kappa (X - B (s F + F_static - F_nl)), J = kappa (I + B dF_nl/dX).
     R = Eigen::VectorXd::Zero(n * nc);

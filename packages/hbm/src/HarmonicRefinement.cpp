@@ -36,6 +36,7 @@ std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem
   auto out = s.isReceptance() ? std::make_unique<HarmonicBalanceSystem>(s.receptance(), harmonics, samples)
                               : std::make_unique<HarmonicBalanceSystem>(s.M(), s.C(), s.K(), harmonics, samples);
   if (s.isCyclic()) out->setCyclic(s.cyclic());
+  if (s.isReceptance()) out->useDynamicStiffness(s.usesDynamicStiffness());
   for (const auto& c : s.elements()) out->addElement(c.element, c.W, c.Wnext);
   const HarmonicSet& to = out->aft().harmonics();
   out->addExcitationCoefficients(transferCoefficients(s.excitation(), n, from, to));

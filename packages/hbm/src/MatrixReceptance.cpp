@@ -7,6 +7,15 @@
 
 namespace cyclone::hbm {
 
+Eigen::MatrixXcd ReceptanceModel::dynamicStiffness(double frequency, long phaseIndex) const {
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(compliance(frequency, phaseIndex));
+  Eigen::MatrixXcd Z = lu.inverse();
+  if (!Z.allFinite() || lu.rcond() < 1e-14)
+    throw Error("receptance model: the compliance at " + std::to_string(frequency) +
+                " rad/s is singular (a modal truncation with fewer modes than DOFs?): use the compliance form");
+  return Z;
+}
+
 MatrixReceptance::MatrixReceptance(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, int sectors,
                                    Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext, Eigen::MatrixXd Knext)
     : M_(std::move(M)), C_(std::move(C)), K_(std::move(K)), sectors_(sectors) {

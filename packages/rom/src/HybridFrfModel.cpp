@@ -48,6 +48,23 @@ HybridFrfModel HybridFrfModel::modalTruncation(RetainedModes modes, double lossF
   return HybridFrfModel(std::move(modes), lossFactor);
 }
 
+Eigen::VectorXcd HybridFrfModel::modalWeights(double omega) const {
+  const std::complex<double> damped(1.0, eta_);
+  Eigen::VectorXcd d(modes_.numModes());
+  for (int j = 0; j < modes_.numModes(); ++j) d(j) = 1.0 / (damped * modes_.eigenvalues[j] - omega * omega);
+  return d;
+}
+
+Eigen::MatrixXcd HybridFrfModel::residualCompliance() const {
+  const auto n = size();
+  if (!hasStatic_) return Eigen::MatrixXcd::Zero(n, n);
+  const std::complex<double> damped(1.0, eta_);
+  Eigen::VectorXcd w(modes_.numModes());
+  for (int j = 0; j < modes_.numModes(); ++j) w(j) = -1.0 / (damped * (modes_.eigenvalues[j] - static_.shift));
+  const Eigen::MatrixXcd phi = modes_.shapes.cast<std::complex<double>>();
+  return static_.matrix.cast<std::complex<double>>() / damped + phi * w.asDiagonal() * phi.transpose();
+}
+
 Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
   const std::complex<double> damped(1.0, eta_);
   const double w2 = omega * omega;

@@ -21,11 +21,15 @@ struct ForcedResponseSetup {
   /// frequency `omega`.
   enum class Parameter { Omega, ForceScale, ElementParameter, DampingScale } parameter = Parameter::Omega;
   double omega = 0;            ///< the fixed excitation frequency unless the parameter is Omega
+  /// Omega: omega = p x omegaUnit, so the continuation runs on a parameter of order one
+  /// (e.g. the frequency over a reference frequency for an FE disc, whose omega is ~1e4 rad/s).
+  double omegaUnit = 1;
   double excitationScale = 1;  ///< the scale s of f = s f_ex (excitation: scale) unless the parameter is ForceScale
   std::vector<std::string> elementNames;  ///< the scene's names of system->elements(), in order
-  int parameterElement = -1;              ///< ElementParameter: which element
-  std::string elementParameter;           ///< ElementParameter: which of its parameters
-  std::shared_ptr<const hbm::NonlinearElement> baseElement;  ///< ElementParameter: the element as the scene gives it
+  /// ElementParameter: which elements (all elements of one name, e.g. every shroud contact)
+  std::vector<int> parameterElements;
+  std::string elementParameter;  ///< ElementParameter: which of their parameters
+  std::vector<std::shared_ptr<const hbm::NonlinearElement>> baseElements;  ///< ElementParameter: as the scene gives them
   continuation::ContinuationOptions continuation;
   std::vector<int> outputDofs;
   std::vector<std::string> dofNames;  ///< system: dof_names, or dof0, dof1, ...
@@ -37,6 +41,11 @@ struct ForcedResponseSetup {
   /// scale) and returns the frequency and excitation scale that go with it.
   std::pair<double, double> apply(double p);
 };
+
+/// Makes the continuation parameter `parameter` (e.g. preload) of every element named
+/// `element` (InputError if none, or if `probe` is not a valid value of it).
+void selectElementParameter(ForcedResponseSetup& setup, const std::string& element, const std::string& parameter,
+                            double probe);
 
 /// The continuation problem of a scene's system in its parameter (the closures
 /// keep a reference to `setup` and call setup.apply(p)).

@@ -47,6 +47,13 @@ public:
   /// expansion need the matrix form and say so.
   HarmonicBalanceSystem(std::shared_ptr<const ReceptanceModel> receptance, HarmonicSet harmonics, int samples);
   bool isReceptance() const { return receptance_ != nullptr; }
+  /// Receptance form only: state the equations with the dynamic stiffness Z_h = A_h^{-1}
+  /// per harmonic instead (R = Z X + F_nl - s F_ex - F_static, as the matrix form). The
+  /// Jacobian is then Z + dF_nl/dX, without the dense product A dF_nl/dX: several times
+  /// cheaper per Newton step. Needs every A_h invertible (a hybrid or full model; not a
+  /// modal truncation with fewer modes than DOFs: Error when a harmonic's A is singular).
+  void useDynamicStiffness(bool on);
+  bool usesDynamicStiffness() const { return stiffnessForm_; }
   const std::shared_ptr<const ReceptanceModel>& receptance() const { return receptance_; }
   /// The stiffness kappa of the receptance form's rows (1 in the matrix form).
   double receptanceStiffness() const { return kappa_; }
@@ -107,6 +114,8 @@ public:
   /// The compliance A(omega) in coefficient space (numUnknowns square, 2 x 2 blocks
   /// [Re A, Im A; -Im A, Re A] per harmonic on (cos, sin)); receptance form only.
   Eigen::MatrixXd complianceOperator(double omega) const;
+  /// Its inverse, harmonic by harmonic (receptance form only).
+  Eigen::MatrixXd dynamicStiffnessOperator(double omega) const;
   /// A (x) I + A_next (x) S + A_next^T (x) S^T in coefficient space, S the next-sector
   /// map: how a sector matrix acts on the coefficients of a cyclic solution.
   Eigen::MatrixXd coefficientOperator(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext) const;
@@ -136,6 +145,14 @@ private:
   std::shared_ptr<const ReceptanceModel> receptance_;
   Eigen::MatrixXd mean_;  // receptance form: the mean compliance
   double kappa_ = 1.0;
+  bool stiffnessForm_ = false;
+  Eigen::MatrixXd meanStiffness_;
+  // The last frequency's operator: residual and Jacobian come at the same frequency.
+  mutable double cachedOmega_ = -1;
+  mutable bool cachedInverse_ = false;
+  mutable Eigen::MatrixXd cachedOperator_;
+  /// The per-harmonic operator from complex n x n blocks (mean block real).
+  Eigen::MatrixXd harmonicOperator(double omega, bool inverse) const;
   Eigen::MatrixXd M_, C_, K_;
   Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale
   double dampingScale_ = 1.0;

@@ -23,6 +23,9 @@ public:
   virtual int sectors() const = 0;
   /// A at frequency `frequency` > 0 (rad/s) for the inter-sector phase index p in 0..N-1.
   virtual Eigen::MatrixXcd compliance(double frequency, long phaseIndex) const = 0;
+  /// Its inverse, the dynamic stiffness; models with structure (a constant plus a
+  /// low-rank modal part) override this with something cheaper than an LU inverse.
+  virtual Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const;
   /// The undamped static compliance of the phase-0 (nodal diameter 0) motion: harmonic 0.
   virtual Eigen::MatrixXd meanCompliance() const = 0;
 };

@@ -58,6 +58,10 @@ public:
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
 
   bool hasStaticCorrection() const { return hasStatic_; }
+  /// The split A(w) = R + Phi diag(d(w)) Phi^T: R = A0 / (1 + i eta) - Phi diag(1 / ((1 + i eta)(l_j - sigma))) Phi^T
+  /// is the part of the modes not kept (constant in w; zero for a truncation), d_j(w) = 1 / ((1 + i eta) l_j - w^2).
+  Eigen::MatrixXcd residualCompliance() const;
+  Eigen::VectorXcd modalWeights(double omega) const;
   const RetainedModes& modes() const { return modes_; }
   const StaticCompliance& staticCompliance() const { return static_; }
   double lossFactor() const { return eta_; }

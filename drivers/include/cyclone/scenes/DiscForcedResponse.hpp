@@ -1,0 +1,63 @@
+#pragma once
+// The nonlinear half of the chain on a bladed disc: the harmonic balance system
+// of one sector given by its reduced models (receptance form), with 3D friction
+// contacts between each right-face shroud contact node and its partner on the
+// neighbouring sector's left face (the engine-order cyclic constraint carries
+// the neighbour), a force at a blade node travelling with engine order EO.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "cyclone/scenes/DiscReducedModels.hpp"
+#include "cyclone/scenes/ForcedResponseScene.hpp"
+
+namespace cyclone::scenes {
+
+/// Per contact node pair (seed Table 8.4: kn = kt = 1e4 N/mm, mu = 0.4).
+struct ShroudContactSpec {
+  std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";  ///< pair order: right[i] = R left[i]
+  double kn = 1e4, kt = 1e4, mu = 0.4;
+  double preload = 0;  ///< N0: normal force at zero relative displacement (N)
+  /// The contact frame, unit and orthogonal: the normal points from this sector into the
+  /// next; zero vectors: the cyclic plane's normal at the right face and the radial direction.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero(), tangent = Eigen::Vector3d::Zero();
+};
+
+struct DiscExcitationSpec {
+  std::string nodeSet = "mid_blade";
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< sector 0's frame; normalised
+  double amplitude = 1.0;                                ///< per node (N)
+};
+
+struct DiscResponseSpec {
+  int engineOrder = 0;
+  std::vector<int> harmonics{0, 1, 2, 3};
+  int samples = 0;  ///< 0: what the friction elements recommend
+  ShroudContactSpec contact;
+  DiscExcitationSpec excitation;
+  std::vector<std::string> responseNodeSets{"mid_blade"};
+};
+
+/// The contact frame [t1, t2, n] (columns) of the spec; InputError if the given one is not orthonormal.
+Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                   const ShroudContactSpec& contact);
+
+/// The system: receptance form over `models`, one friction3d element named "contact" per
+/// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), the
+/// excitation on harmonic 1, output DOFs the response nodes' x, y, z. Continuation in
+/// omega by default, p = f / referenceHz.
+ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, double referenceHz = 1.0);
+
+/// Where the engine order's resonance lies (Hz): the first natural frequency of its nodal
+/// diameter with the shroud free (`family` counted from 1) and the peak of the response
+/// linearised at rest (contacts stuck, the shroud coupled), found on a fine scan.
+struct ResonanceEstimate {
+  int nodalDiameter = 0;
+  double freeHz = 0, stuckHz = 0;
+};
+ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReducedModels& models, int family = 1);
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,55 @@
+#pragma once
+// The FE half of the chain on a bladed disc: from the mesh of one sector to one
+// reduced model per nodal diameter at the retained DOFs (shroud contact nodes
+// and the excitation/response nodes), on the prestressed tangent at one speed,
+// cantilever configuration (only the disc faces cyclic; the shroud faces free
+// for the contact elements). Models are written to HDF5 under a name holding
+// the content hash of everything they depend on, and reused when it matches.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/rom/ComplianceModel.hpp"
+
+namespace cyclone::scenes {
+
+struct DiscModelSpec {
+  fe::IsotropicElastic material;
+  std::vector<std::string> fixedNodeSets{"bore"};
+  int sectors = 0;
+  mesh::RotationAxis axis;
+  std::vector<std::string> leftSets{"disc_left"}, rightSets{"disc_right"};  ///< cantilever: disc faces only
+  std::vector<std::string> retainedNodeSets{"shroud_contact_left", "shroud_contact_right", "mid_blade"};
+  double rpm = 0;
+  std::string prestress = "nonlinear";  ///< linear | nonlinear | none
+  std::string kind = "hybrid";          ///< hybrid | truncation | full_fe (the reference: a complex solve per frequency)
+  int modes = 20;                       ///< natural frequencies per nodal diameter (a pair counts once)
+  double omega0 = 0;                    ///< expansion frequency of the hybrid model's static compliance (rad/s)
+  double lossFactor = 0.006;            ///< structural damping (1 + i eta) K; 2 x the modal damping ratio at resonance
+};
+
+struct DiscReducedModels {
+  int sectors = 0;
+  cyclic::CyclicSector sector;
+  std::vector<mesh::Index> retainedNodes;  ///< retained DOF 3 i + d is direction d of node retainedNodes[i]
+  std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;  ///< by nodal diameter
+  std::map<int, std::vector<double>> naturalHz;  ///< by nodal diameter: the distinct natural frequencies (cantilever)
+  std::map<int, std::string> files;              ///< by nodal diameter: the HDF5 file (none for full_fe)
+  int reused = 0, built = 0;
+  double seconds = 0;
+};
+
+/// The nodal diameters harmonics `harmonics` of engine order `engineOrder` live on (h EO mod N folded to 0..N/2).
+std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics);
+
+/// Builds (or reads from `cacheDirectory` when its inputs match) the models of the
+/// nodal diameters asked for. An empty cacheDirectory writes and reuses nothing.
+DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
+                                         const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
+                                         linalg::CommPtr comm);
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,203 @@
+#include "cyclone/scenes/DiscForcedResponse.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/mesh/Mesh.hpp"
+#include "cyclone/rom/SectorReceptance.hpp"
+
+namespace cyclone::scenes {
+
+namespace {
+
+Eigen::Vector3d vec(const mesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+int retainedIndex(const DiscReducedModels& models, mesh::Index node, const std::string& set) {
+  const auto it = std::find(models.retainedNodes.begin(), models.retainedNodes.end(), node);
+  if (it == models.retainedNodes.end())
+    throw InputError("reduced_model/retained_node_sets", "does not retain node set '" + set +
+                                                             "', which the forced response uses: add it");
+  return int(it - models.retainedNodes.begin());
+}
+
+}  // namespace
+
+Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                   const ShroudContactSpec& contact) {
+  const auto& right = mesh.nodeSet(contact.rightSet);
+  const Eigen::Vector3d a = vec(models.sector.axis.direction).normalized(), p0 = vec(models.sector.axis.point);
+  Eigen::Vector3d n = contact.normal, t = contact.tangent;
+  if (n.norm() == 0 && t.norm() == 0) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (auto i : right) c += vec(mesh.coords[i]);
+    c /= double(right.size());
+    Eigen::Vector3d r = (c - p0) - (c - p0).dot(a) * a;
+    if (r.norm() == 0) throw InputError("contact", "the right contact face lies on the axis: give normal and tangent");
+    r.normalize();
+    n = a.cross(r);  // towards increasing angle: into the next sector
+    t = r;
+  } else {
+    const double tol = 1e-6;
+    if (std::abs(n.norm() - 1) > tol || std::abs(t.norm() - 1) > tol || std::abs(n.dot(t)) > tol) {
+      std::ostringstream msg;
+      msg << "contact frame not orthonormal: |normal| = " << n.norm() << ", |tangent| = " << t.norm()
+          << ", normal . tangent = " << n.dot(t) << " (give unit vectors at right angles)";
+      throw InputError("contact/normal, contact/tangent", msg.str());
+    }
+  }
+  Eigen::Matrix3d E;
+  E.col(0) = t, E.col(1) = n.cross(t), E.col(2) = n;
+  return E;
+}
+
+ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, double referenceHz) {
+  const int N = models.sectors;
+  if (spec.engineOrder < 1)
+    throw InputError("disc_response/engine_order", "must be >= 1 (engine order " + std::to_string(spec.engineOrder) +
+                                                       " is no travelling excitation; 0 is a static load)");
+  if (spec.engineOrder > N)
+    throw InputError("disc_response/engine_order",
+                     std::to_string(spec.engineOrder) + " on " + std::to_string(N) +
+                         " sectors: the blades see it exactly as engine order " +
+                         std::to_string(spec.engineOrder % N) + " (EO mod N; the excitation exists only at the " +
+                         "sectors, so higher orders fold back); give " + std::to_string(spec.engineOrder % N));
+  if (spec.engineOrder == N)
+    throw InputError("disc_response/engine_order", std::to_string(N) + " on " + std::to_string(N) +
+                                                       " sectors folds to 0: every sector in phase (nodal diameter 0); "
+                                                       "not a travelling wave, use the nodal-diameter-0 response");
+  auto receptance = std::make_shared<rom::SectorReceptance>(N, models.models);
+  const hbm::HarmonicSet harmonics(spec.harmonics);
+  for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
+
+  // Contact pairs: right[i] of this sector against left[i] of the next, seen in this sector's frame.
+  const auto& left = mesh.nodeSet(spec.contact.leftSet);
+  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+  if (left.size() != right.size())
+    throw InputError("contact", "node sets '" + spec.contact.leftSet + "' (" + std::to_string(left.size()) +
+                                    " nodes) and '" + spec.contact.rightSet + "' (" + std::to_string(right.size()) +
+                                    ") do not pair");
+  const Eigen::Matrix3d Q = models.sector.rotation();
+  const Eigen::Vector3d p0 = vec(models.sector.axis.point);
+  double size = 0;
+  for (const auto& c : mesh.coords) size = std::max(size, (vec(c) - p0).norm());
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    const double gap = (Q * (vec(mesh.coords[left[i]]) - p0) + p0 - vec(mesh.coords[right[i]])).norm();
+    if (gap > 1e-6 * size) {
+      std::ostringstream msg;
+      msg << "contact node pairs do not match: right node " << mesh.nodeIds[right[i]] << " is " << gap
+          << " away from the rotated left node " << mesh.nodeIds[left[i]]
+          << " (pair i: right[i] = R(2 pi/N) left[i], in set order)";
+      throw InputError("contact", msg.str());
+    }
+  }
+  const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
+  hbm::FrictionContactParameters p;
+  p.tangentialDirections = 2, p.kn = spec.contact.kn, p.kt = spec.contact.kt, p.mu = spec.contact.mu;
+  p.preload = spec.contact.preload;
+  std::shared_ptr<const hbm::NonlinearElement> element;
+  try {
+    element = std::make_shared<hbm::FrictionContact>(p);
+  } catch (const InputError& e) {
+    throw InputError("contact", e.what());
+  }
+  const int samples = spec.samples > 0 ? spec.samples
+                                       : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
+
+  ForcedResponseSetup setup;
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
+  auto& hb = *setup.system;
+  hbm::CyclicCoupling coupling;
+  coupling.sectors = N, coupling.engineOrder = spec.engineOrder;
+  hb.setCyclic(coupling);
+  // Z = A^-1 per harmonic when every model has the full rank (hybrid, full FE): a
+  // cheaper Newton step than the compliance statement a modal truncation needs.
+  bool invertible = true;
+  for (const auto& [k, m] : models.models) {
+    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
+    if (h && !h->hasStaticCorrection()) invertible = false;
+  }
+  hb.useDynamicStiffness(invertible);
+  const int n = hb.numDofs();
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    const int r = retainedIndex(models, right[i], spec.contact.rightSet);
+    const int l = retainedIndex(models, left[i], spec.contact.leftSet);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, 3), Wnext = Eigen::MatrixXd::Zero(n, 3);
+    W.middleRows(3 * r, 3) = -E;                    // - this sector's right node
+    Wnext.middleRows(3 * l, 3) = Q.transpose() * E;  // + the next sector's left node, rotated into this frame
+    hb.addElement(element, W, Wnext);
+    setup.elementNames.push_back("contact");
+  }
+  // Excitation on harmonic 1 (cos), travelling with the engine order.
+  const Eigen::Vector3d d = spec.excitation.direction.normalized();
+  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  for (auto node : mesh.nodeSet(spec.excitation.nodeSet)) {
+    const int i = retainedIndex(models, node, spec.excitation.nodeSet);
+    for (int c = 0; c < 3; ++c)
+      if (d(c) != 0) hb.addExcitation(3 * i + c, 1, spec.excitation.amplitude * d(c));
+  }
+  setup.dofNames.resize(n);
+  for (int i = 0; i < n / 3; ++i)
+    for (int c = 0; c < 3; ++c)
+      setup.dofNames[3 * i + c] = "node" + std::to_string(mesh.nodeIds[models.retainedNodes[i]]) + "_" + "xyz"[c];
+  for (const auto& set : spec.responseNodeSets)
+    for (auto node : mesh.nodeSet(set)) {
+      const int i = retainedIndex(models, node, set);
+      // The output DOF: the direction of the excitation's largest component first.
+      int c0 = 0;
+      d.cwiseAbs().maxCoeff(&c0);
+      setup.outputDofs.push_back(3 * i + c0);
+      for (int c = 0; c < 3; ++c)
+        if (c != c0) setup.outputDofs.push_back(3 * i + c);
+    }
+  setup.parameter = ForcedResponseSetup::Parameter::Omega;
+  setup.omegaUnit = 2 * M_PI * referenceHz;
+  setup.stability = "false";
+  return setup;
+}
+
+ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReducedModels& models, int family) {
+  auto& hb = *setup.system;
+  ResonanceEstimate out;
+  out.nodalDiameter = hb.nodalDiameter(1);
+  const auto& hz = models.naturalHz.at(out.nodalDiameter);
+  if (family < 1 || family > int(hz.size()))
+    throw InputError("disc_response/family", "must lie in 1.." + std::to_string(hz.size()) +
+                                                 " (the natural frequencies computed per nodal diameter)");
+  out.freeHz = hz[family - 1];
+  // The stuck system's peak: the response linearised at rest on a log scan up to 3x the
+  // free frequency, harmonic 1 alone (the linearised harmonics do not couple).
+  const auto first = hbm::withHarmonics(hb, hbm::HarmonicSet({1}), hb.aft().numSamples());
+  const int dof = setup.outputDofs.front(), nc = first->numCoefficients();
+  const int c = first->aft().harmonics().cosIndex(1);
+  double best = -1;
+  auto amplitude = [&](double f) {
+    const Eigen::VectorXd X = first->linearizedSolution(2 * M_PI * f, setup.excitationScale);
+    return std::hypot(X(dof * nc + c), X(dof * nc + c + 1));
+  };
+  const double lo = (family > 1 ? hz[family - 2] * 1.02 : 0.8 * out.freeHz), hi = 3.0 * out.freeHz;
+  const int steps = 150;
+  for (int i = 0; i <= steps; ++i) {
+    const double f = lo * std::pow(hi / lo, double(i) / steps);
+    const double a = amplitude(f);
+    if (a > best) best = a, out.stuckHz = f;
+  }
+  // Golden-section polish on the bracketing scan interval.
+  double a = out.stuckHz * std::pow(hi / lo, -1.0 / steps), b = out.stuckHz * std::pow(hi / lo, 1.0 / steps);
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  for (int it = 0; it < 40; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (amplitude(x1) > amplitude(x2)) b = x2;
+    else a = x1;
+  }
+  out.stuckHz = 0.5 * (a + b);
+  return out;
+}
+
+}  // namespace cyclone::scenes

@@ -1,0 +1,160 @@
+#include "cyclone/scenes/DiscReducedModels.hpp"
+
+#include <Teuchos_Comm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "cyclone/core/ContentHash.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
+#include "cyclone/post/ReducedModelFile.hpp"
+#include "cyclone/rom/CyclicHarmonicModel.hpp"
+
+namespace cyclone::scenes {
+
+std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics) {
+  std::set<int> nds;
+  for (int h : harmonics) {
+    const long k = ((long(h) * engineOrder) % sectors + sectors) % sectors;
+    nds.insert(int(2 * k > sectors ? sectors - k : k));
+  }
+  return {nds.begin(), nds.end()};
+}
+
+namespace {
+
+// Everything a model of one nodal diameter depends on, mesh included.
+std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
+  ContentHash h;
+  h.add(std::string("cyclone reduced model v1"));
+  for (const auto& p : mesh.coords) h.add(p.data(), sizeof(double) * 3);
+  for (const auto& b : mesh.blocks) {
+    h.add(int(b.type));
+    h.addAll(std::vector<long long>(b.connectivity.begin(), b.connectivity.end()));
+  }
+  for (const auto& sets : {s.fixedNodeSets, s.leftSets, s.rightSets, s.retainedNodeSets}) {
+    h.addAll(sets);
+    for (const auto& name : sets) h.addAll(std::vector<long long>(mesh.nodeSet(name).begin(), mesh.nodeSet(name).end()));
+  }
+  h.add(s.material.E).add(s.material.nu).add(s.material.rho);
+  h.add(s.sectors).add(s.axis.point.data(), sizeof(double) * 3).add(s.axis.direction.data(), sizeof(double) * 3);
+  h.add(s.rpm).add(s.prestress).add(s.kind).add(s.modes).add(s.omega0).add(s.lossFactor).add(nd);
+  return h.hex();
+}
+
+std::vector<double> distinctHz(const rom::RetainedModes& m) {
+  std::vector<double> hz;
+  for (int j = 0; j < m.numModes(); j += m.copies) hz.push_back(std::sqrt(std::max(m.eigenvalues[j], 0.0)) / (2 * M_PI));
+  return hz;
+}
+
+}  // namespace
+
+DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
+                                         const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
+                                         linalg::CommPtr comm) {
+  if (spec.kind != "hybrid" && spec.kind != "truncation" && spec.kind != "full_fe")
+    throw InputError("reduced_model/kind", "unknown kind '" + spec.kind +
+                                               "' (hybrid: modes + exact static correction; truncation: modes only; "
+                                               "full_fe: the FE compliance itself, the reference)");
+  if (spec.prestress != "linear" && spec.prestress != "nonlinear" && spec.prestress != "none")
+    throw InputError("reduced_model/prestress", "unknown prestress '" + spec.prestress + "' (linear, nonlinear, none)");
+  if (spec.modes < 1) throw InputError("reduced_model/modes", "must be at least 1");
+  if (nodalDiameters.empty()) throw InputError("reduced_model", "no nodal diameters asked for");
+  Timer timer;
+  DiscReducedModels out;
+  out.sectors = spec.sectors;
+  out.sector = cyclic::makeCyclicSector(mesh, spec.sectors, spec.axis, spec.leftSets, spec.rightSets);
+  for (int k : nodalDiameters) cyclic::checkHarmonicIndex(spec.sectors, k);
+  for (const auto& name : spec.retainedNodeSets)
+    for (mesh::Index n : mesh.nodeSet(name))
+      if (std::find(out.retainedNodes.begin(), out.retainedNodes.end(), n) == out.retainedNodes.end())
+        out.retainedNodes.push_back(n);
+
+  rom::HarmonicModelProblem problem;
+  problem.material = spec.material;
+  problem.fixedNodeSets = spec.fixedNodeSets;
+  problem.retainedNodeSets = spec.retainedNodeSets;
+  problem.lossFactor = spec.lossFactor;
+  cyclic::PrestressState prestress;
+  bool prestressed = false;
+  auto ensurePrestress = [&] {
+    if (prestressed || spec.prestress == "none" || spec.rpm == 0) return;
+    fe::Axis axis;
+    axis.point = Eigen::Vector3d(spec.axis.point[0], spec.axis.point[1], spec.axis.point[2]);
+    axis.direction = Eigen::Vector3d(spec.axis.direction[0], spec.axis.direction[1], spec.axis.direction[2]);
+    const auto k0 = cyclic::cyclicTransform(mesh, out.sector, 0, spec.fixedNodeSets);
+    prestress = spec.prestress == "linear" ? cyclic::solveLinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm)
+                                           : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
+    prestressed = true;
+    problem.prestress = &prestress;
+  };
+
+  const bool cache = !cacheDirectory.empty() && spec.kind != "full_fe";
+  if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
+  for (int k : nodalDiameters) {
+    const std::string path =
+        cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
+              : std::string();
+    if (cache && std::filesystem::exists(path)) {
+      auto record = post::readReducedModelHdf5(path);
+      auto model = std::make_shared<rom::HybridFrfModel>(record.model());
+      out.naturalHz[k] = distinctHz(model->modes());
+      out.models[k] = model;
+      out.files[k] = path;
+      ++out.reused;
+      log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
+      continue;
+    }
+    ensurePrestress();
+    problem.harmonic = k;
+    Timer build;
+    auto full = std::make_shared<rom::CyclicHarmonicModel>(mesh, out.sector, problem, comm);
+    const auto modes = full->modes(spec.modes);
+    if (modes.numRigidBodyModes() > 0)
+      throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +
+                                                          ": a disc response needs the disc held (e.g. the bore)");
+    out.naturalHz[k] = distinctHz(modes);
+    std::shared_ptr<const rom::ComplianceModel> model;
+    std::shared_ptr<const rom::HybridFrfModel> hybrid;
+    if (spec.kind == "full_fe") {
+      model = full;
+    } else {
+      hybrid = spec.kind == "hybrid"
+                   ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes),
+                                                           spec.lossFactor)
+                   : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
+      model = hybrid;
+    }
+    out.models[k] = model;
+    ++out.built;
+    std::ostringstream msg;
+    msg << "reduced model ND " << k << " (" << spec.kind << ", " << spec.modes << " natural frequencies, "
+        << full->size() << " retained DOFs): built in " << build.seconds() << " s; first " << out.naturalHz[k].front()
+        << " Hz";
+    log::info(msg.str());
+    if (cache && hybrid) {
+      std::vector<int> nodes, directions, copies;
+      const int nn = int(out.retainedNodes.size());
+      for (int c = 0; c < full->copies(); ++c)
+        for (int i = 0; i < nn; ++i)
+          for (int d = 0; d < 3; ++d)
+            nodes.push_back(int(out.retainedNodes[i])), directions.push_back(d), copies.push_back(c);
+      const auto record = post::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies);
+      if (comm->getRank() == 0) post::writeReducedModelHdf5(path, record);
+      out.files[k] = path;
+    }
+  }
+  comm->barrier();
+  out.seconds = timer.seconds();
+  return out;
+}
+
+}  // namespace cyclone::scenes

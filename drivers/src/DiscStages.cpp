@@ -1,0 +1,298 @@
+// The scene stages of the disc chain: reduced models per nodal diameter
+// (`analysis: reduced_model`), and the forced response with friction at the
+// shroud with its parameter studies (`analysis: disc_response`). Keys in docs/scenes.md.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "SceneStages.hpp"
+
+#include <Teuchos_Comm.hpp>
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
+#include "cyclone/mesh/Mesh.hpp"
+#include "cyclone/post/SvgPlot.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/scenes/DiscForcedResponse.hpp"
+#include "cyclone/scenes/DiscReducedModels.hpp"
+#include "cyclone/scenes/SceneSection.hpp"
+
+namespace cyclone::scenes {
+
+namespace {
+
+Eigen::Vector3d toEigen(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSectors, std::string& cache) {
+  DiscModelSpec spec;
+  spec.material = readMaterial(scene.section("material"));
+  {
+    auto c = scene.section("constraints");
+    spec.fixedNodeSets = c.getStringList("fixed_node_sets", {});
+    c.rejectUnknownKeys();
+    if (spec.fixedNodeSets.empty())
+      throw InputError(scene.where("constraints/fixed_node_sets"), "a disc response needs the disc held (e.g. [bore])");
+  }
+  {
+    auto cy = scene.section("cyclic");
+    spec.sectors = cy.getInt("sectors", builtInSectors);
+    if (spec.sectors < 2) throw InputError(cy.where("sectors"), "is required (>= 2) for a mesh read from a file");
+    spec.axis.point = cy.getVector3("axis_point", {0, 0, 0});
+    spec.axis.direction = cy.getVector3("axis_direction", {0, 0, 1});
+    cy.getString("configuration", "");  // the modal stage's; the reduced model is always cantilever
+    cy.getStringList("left_node_sets", {}), cy.getStringList("right_node_sets", {});
+    cy.rejectUnknownKeys();
+  }
+  double loadsRpm = 0;
+  {
+    auto l = scene.section("loads");
+    loadsRpm = l.getDouble("speed_rpm", 0.0);
+  }
+  spec.kind = r.getString("kind", spec.kind);
+  spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
+  spec.leftSets = r.getStringList("disc_left_node_sets", spec.leftSets);
+  spec.rightSets = r.getStringList("disc_right_node_sets", spec.rightSets);
+  spec.modes = r.getInt("modes", spec.modes);
+  spec.omega0 = r.getDouble("omega0", spec.omega0);
+  spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
+  if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
+  spec.rpm = r.getDouble("speed_rpm", loadsRpm);
+  if (!(spec.rpm >= 0)) throw InputError(r.where("speed_rpm"), "must be >= 0");
+  spec.prestress = r.getString("prestress", spec.prestress);
+  cache = r.getString("cache", "reuse");
+  if (cache != "reuse" && cache != "rebuild" && cache != "off")
+    throw InputError(r.where("cache"), "use reuse (read a model whose inputs match), rebuild or off");
+  return spec;
+}
+
+std::vector<int> readHarmonics(SceneSection& s) {
+  auto list = s.getIntList("harmonics", {3});
+  if (list.size() == 1) {
+    const int H = list[0];
+    if (H < 1) throw InputError(s.where("harmonics"), "needs at least harmonic 1");
+    list.clear();
+    for (int h = 0; h <= H; ++h) list.push_back(h);
+  }
+  return list;
+}
+
+DiscResponseSpec readResponseSpec(SceneSection& d) {
+  DiscResponseSpec spec;
+  spec.engineOrder = d.getInt("engine_order", 0);
+  if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
+  spec.harmonics = readHarmonics(d);
+  spec.samples = d.getInt("samples", 0);
+  auto c = d.section("contact");
+  auto& ct = spec.contact;
+  ct.leftSet = c.getString("left_node_set", ct.leftSet);
+  ct.rightSet = c.getString("right_node_set", ct.rightSet);
+  ct.kn = c.getDouble("kn", ct.kn);
+  ct.kt = c.getDouble("kt", ct.kt);
+  ct.mu = c.getDouble("mu", ct.mu);
+  ct.preload = c.getDouble("preload", ct.preload);
+  if (c.has("normal") != c.has("tangent"))
+    throw InputError(c.location(), "give both normal and tangent (the contact frame), or neither");
+  if (c.has("normal")) ct.normal = toEigen(c.getVector3("normal", {0, 0, 0}));
+  if (c.has("tangent")) ct.tangent = toEigen(c.getVector3("tangent", {0, 0, 0}));
+  c.rejectUnknownKeys();
+  auto e = d.section("excitation");
+  spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
+  spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));
+  spec.excitation.amplitude = e.getDouble("amplitude", spec.excitation.amplitude);
+  e.rejectUnknownKeys();
+  spec.responseNodeSets = d.getStringList("response_node_sets", spec.responseNodeSets);
+  return spec;
+}
+
+// One curve of a study: frequency (Hz) and max |x(t)| of the first output DOF per point.
+struct Curve {
+  std::vector<double> hz, peak;
+};
+
+Curve curveOf(ForcedResponseSetup& setup, const continuation::Branch& branch) {
+  Curve c;
+  const auto& hb = *setup.system;
+  const int nc = hb.numCoefficients(), dof = setup.outputDofs.front();
+  for (const auto& pt : branch.points) {
+    c.hz.push_back(setup.apply(pt.parameter).first / (2 * M_PI));
+    c.peak.push_back(hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(dof * nc, nc))));
+  }
+  return c;
+}
+
+// The models with another loss factor or fewer modes (hybrid and truncation models only).
+DiscReducedModels variedModels(const DiscReducedModels& base, double lossFactor, int modes) {
+  DiscReducedModels out = base;
+  for (auto& [k, m] : out.models) {
+    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
+    if (!h) throw InputError("disc_response/studies", "loss_factor and modes studies need hybrid or truncation models");
+    const double eta = lossFactor >= 0 ? lossFactor : h->lossFactor();
+    const auto kept = modes > 0 ? h->modes().first(std::min(modes, h->modes().numModes() / h->modes().copies))
+                                : h->modes();
+    m = h->hasStaticCorrection() ? std::make_shared<rom::HybridFrfModel>(kept, h->staticCompliance(), eta)
+                                 : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(kept, eta));
+  }
+  return out;
+}
+
+}  // namespace
+
+void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
+                const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+  std::string cache;
+  auto r = scene.section("reduced_model");
+  auto d = scene.section("disc_response");
+  const DiscModelSpec modelSpec = readModelSpec(scene, r, builtInSectors, cache);
+  std::vector<int> nds;
+  DiscResponseSpec spec;
+  if (forcedResponse) {
+    spec = readResponseSpec(d);
+    if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors)
+      nds = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, spec.harmonics);
+    if (r.has("nodal_diameters"))
+      throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
+  } else {
+    nds = r.getIntList("nodal_diameters", {});
+    if (nds.empty())
+      throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
+  }
+  r.rejectUnknownKeys();
+  const std::string cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
+  if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(cacheDir);
+  // Engine-order errors before any FE work.
+  if (forcedResponse && (spec.engineOrder < 1 || spec.engineOrder >= modelSpec.sectors)) {
+    DiscReducedModels none;
+    none.sectors = modelSpec.sectors;
+    makeDiscForcedResponse(mesh, none, spec);  // throws the explained InputError
+  }
+  const auto models = buildDiscReducedModels(mesh, modelSpec, nds, cacheDir, comm);
+  {
+    std::ostringstream line;
+    line << "reduced models (" << modelSpec.kind << ", " << modelSpec.modes << " natural frequencies per ND, "
+         << models.retainedNodes.size() << " retained nodes) for ND";
+    for (const auto& [k, m] : models.models) line << " " << k;
+    line << " at " << modelSpec.rpm << " rpm: " << models.built << " built, " << models.reused << " reused, "
+         << models.seconds << " s";
+    summary.computed.push_back(line.str());
+    for (const auto& [k, f] : models.files) summary.written.push_back(f);
+  }
+  if (!forcedResponse) return;
+
+  const int family = d.getInt("family", 1);
+  const auto range = d.getDoubleList("frequency_range_hz", {});
+  if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
+    throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
+  auto cs = d.section("continuation");
+  continuation::ContinuationOptions opt;
+  opt.initialStep = cs.getDouble("initial_step", 0.002);
+  opt.maxStep = cs.getDouble("max_step", 0.05);
+  opt.minStep = cs.getDouble("min_step", 1e-7);
+  opt.maxSteps = cs.getInt("max_points", 2000);
+  opt.tolerance = cs.getDouble("tolerance", 1e-8);
+  cs.rejectUnknownKeys();
+
+  // The reference system: the range from its resonance estimate unless given.
+  auto setup = makeDiscForcedResponse(mesh, models, spec);
+  const auto estimate = estimateResonance(setup, models, family);
+  double fromHz = 0, toHz = 0;
+  if (range.empty()) {
+    fromHz = 0.9 * std::min(estimate.freeHz, estimate.stuckHz);
+    toHz = 1.1 * std::max(estimate.freeHz, estimate.stuckHz);
+  } else {
+    fromHz = range[0], toHz = range[1];
+  }
+  {
+    std::ostringstream line;
+    line << "engine order " << spec.engineOrder << " on ND " << estimate.nodalDiameter << ": family " << family
+         << " at " << estimate.freeHz << " Hz with the shroud free, " << estimate.stuckHz
+         << " Hz with the contacts stuck; sweep " << fromHz << " -> " << toHz << " Hz";
+    summary.computed.push_back(line.str());
+    log::info(line.str());
+  }
+  auto traceOne = [&](ForcedResponseSetup& s, const std::string& name) {
+    s.omegaUnit = 2 * M_PI * fromHz;
+    s.continuation = opt;
+    s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
+    const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);
+    if (!result.branch.points.empty()) {
+      const double peakHz = result.peakOmega / (2 * M_PI);
+      const double span = toHz - fromHz;
+      if (peakHz < fromHz + 1e-3 * span || peakHz > toHz - 1e-3 * span) {
+        std::ostringstream msg;
+        msg << name << ": the largest response is at the end of the sweep (" << peakHz << " Hz): the resonance lies "
+            << "outside " << fromHz << ".." << toHz << " Hz (the estimate says " << estimate.freeHz << " Hz free, "
+            << estimate.stuckHz << " Hz stuck); widen disc_response/frequency_range_hz";
+        log::warn(msg.str());
+        summary.computed.push_back("warning: " + msg.str());
+      }
+    }
+    return result;
+  };
+  auto reference = traceOne(setup, "disc_frc");
+  (void)reference;
+
+  // Parameter studies: one curve per value, one plot per study, peaks in a table.
+  auto studies = d.section("studies");
+  const std::vector<std::string> known{"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics",
+                                       "modes"};
+  for (const auto& name : known) {
+    if (!studies.has(name)) continue;
+    const auto values = studies.getDoubleList(name, {});
+    if (values.empty()) throw InputError(studies.where(name), "needs a list of values");
+    post::SvgPlot plot("Study: " + name + " (engine order " + std::to_string(spec.engineOrder) + ")", "frequency (Hz)",
+                       "max |x(t)| of " + setup.dofNames[setup.outputDofs.front()]);
+    std::ostringstream table;
+    table.precision(10);
+    table << name << ",peak_hz,peak_max_abs,points,finished,seconds\n";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const double v = values[i];
+      DiscResponseSpec sv = spec;
+      const DiscReducedModels* m = &models;
+      DiscReducedModels varied;
+      if (name == "preload") sv.contact.preload = v;
+      else if (name == "mu") sv.contact.mu = v;
+      else if (name == "contact_stiffness") sv.contact.kn = v, sv.contact.kt = v;
+      else if (name == "force") sv.excitation.amplitude = spec.excitation.amplitude * v;
+      else if (name == "harmonics") {
+        sv.harmonics.clear();
+        for (int h = 0; h <= int(v); ++h) sv.harmonics.push_back(h);
+        for (int k : nodalDiametersFor(modelSpec.sectors, spec.engineOrder, sv.harmonics))
+          if (!models.models.count(k))
+            throw InputError(studies.where(name), "harmonic " + std::to_string(int(v)) + " needs nodal diameter " +
+                                                      std::to_string(k) + ": raise disc_response/harmonics to the "
+                                                      "study's largest value");
+      } else if (name == "loss_factor") varied = variedModels(models, v, 0), m = &varied;
+      else if (name == "modes") varied = variedModels(models, -1, int(v)), m = &varied;
+      auto s = makeDiscForcedResponse(mesh, *m, sv);
+      std::ostringstream tag;
+      tag << "study_" << name << "_" << i;
+      Timer t;
+      const auto result = traceOne(s, tag.str());
+      const Curve c = curveOf(s, result.branch);
+      std::ostringstream label;
+      label << name << " = " << v;
+      plot.addLine(c.hz, c.peak, post::SvgPlot::palette(int(i)), label.str());
+      table << v << "," << result.peakOmega / (2 * M_PI) << "," << result.peak << "," << result.branch.points.size()
+            << "," << (result.branch.finished ? 1 : 0) << "," << t.seconds() << "\n";
+    }
+    if (comm->getRank() == 0) {
+      plot.write(outDir + "/study_" + name + ".svg");
+      AtomicFile file(outDir + "/study_" + name + ".csv");
+      std::ofstream out(file.tempPath());
+      out << table.str();
+      out.close();
+      file.commit();
+    }
+    summary.written.push_back(outDir + "/study_" + name + ".svg");
+    summary.written.push_back(outDir + "/study_" + name + ".csv");
+  }
+  studies.rejectUnknownKeys();
+  d.rejectUnknownKeys();
+}
+
+}  // namespace cyclone::scenes

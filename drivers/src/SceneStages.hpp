@@ -1,0 +1,41 @@
+#pragma once
+// What the scene runner's stages share (private to the scenes library).
+#include <string>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/scenes/ForcedResponseScene.hpp"
+#include "cyclone/scenes/SceneRunner.hpp"
+
+namespace cyclone::mesh {
+class Mesh;
+}
+
+namespace cyclone::scenes {
+
+class SceneSection;
+
+struct ForcedResponseResult {
+  continuation::Branch branch;
+  double peak = 0;           ///< largest max |x(t)| of the first output DOF
+  double peakParameter = 0;  ///< the continuation parameter there
+  double peakOmega = 0;      ///< the frequency there (rad/s)
+  double seconds = 0;
+  std::string startMethod, samplesCheck;
+};
+
+/// Finds the first point, traces the curve and writes <name>.csv, <name>.svg and
+/// <name>.h5 (rank 0), with stability (matrix systems), bifurcation flags and the
+/// sample-count check; lines for the summary.
+ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, const std::string& outDir,
+                                                 const std::string& name, linalg::CommPtr comm, SceneSummary& summary);
+
+fe::IsotropicElastic readMaterial(SceneSection section);
+
+/// The disc chain's stages: reduced models per nodal diameter (cached), then the
+/// forced response with friction at the shroud and its parameter studies.
+void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
+                const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
+
+}  // namespace cyclone::scenes
