@@ -4,7 +4,7 @@
 // Craig-Bampton models are made of:
 //   constraint modes  Psi = [I; -K_ii^{-1} K_ib]  (one factorization of K_ii,
 //                     all boundary DOFs as right-hand sides at once),
-//   K_g = Psi^T K Psi (= K_bb - K_bi K_ii^{-1} K_ib),  M_g = Psi^T M Psi;
+//   K_g = Psi^T K Psi = (K Psi)_b = K_bb - K_bi K_ii^{-1} K_ib,  M_g = Psi^T M Psi;
 //   fixed-interface modes Phi = [0; phi_j] of (K_ii, M_ii), mass-normalised,
 //   lambda_j = their eigenvalues, and the coupling M_bm = Psi^T M Phi.
 // Psi^T K Phi = 0 because K Psi vanishes on the interior, so the reduced

@@ -2,7 +2,10 @@
 // Guyan's model (static condensation) of one harmonic index at the retained
 // DOFs: K_g = K_bb - K_bi K_ii^{-1} K_ib and M_g = Psi^T M Psi from a
 // BoundaryReduction, and
-//   A(w) = ((1 + i eta) K_g - w^2 M_g)^{-1}.
+//   A(w) = ((1 + i eta) K_g - w^2 M_g)^{-1},
+// evaluated in its own modal form: (K_g, M_g) diagonalised once, and the damping
+// (1 + i eta) K_g being proportional, A(w) = sum over all its modes of
+// phi phi^T / ((1 + i eta) l - w^2) exactly (two real products per frequency, not an LU).
 // Exact at w = 0 (K_g^{-1} is the boundary block of K^{-1}); above it the
 // interior inertia is only carried along statically, so its natural frequencies
 // lie above the full model's (Rayleigh-Ritz) and its resonances come too high.
@@ -22,15 +25,14 @@ public:
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
 
   /// The eigenpairs of (K_g, M_g): one per retained DOF, mass-normalised.
-  RetainedModes modes() const;
+  const RetainedModes& modes() const { return modal_.modes(); }
   const Eigen::MatrixXd& stiffness() const { return stiffness_; }
   const Eigen::MatrixXd& mass() const { return mass_; }
-  double lossFactor() const { return eta_; }
+  double lossFactor() const { return modal_.lossFactor(); }
 
 private:
   Eigen::MatrixXd stiffness_, mass_;
-  int copies_ = 1;
-  double eta_ = 0;
+  HybridFrfModel modal_;  // all the model's modes, no static term: its exact modal form
 };
 
 }  // namespace cyclone::rom
