@@ -14,8 +14,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
-#include "cyclone/cyclic/CyclicTransform.hpp"
-#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "ShroudedSectorCase.hpp"
 #include "cyclone/rom/CyclicHarmonicModel.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
@@ -25,50 +24,16 @@ namespace {
 
 constexpr int kHarmonic = 2;
 constexpr double kEta = 0.005;
-constexpr double kRpm = 10000;
+constexpr double kRpm = regression::ShroudedSectorCase::kRpm;
+using regression::relativeError;
 
-double relativeError(const Eigen::MatrixXcd& A, const Eigen::MatrixXcd& ref) { return (A - ref).norm() / ref.norm(); }
-
-struct SectorCase {
-  mesh::Mesh mesh;
-  cyclic::CyclicSector sector;
-  cyclic::PrestressState prestress;
-  rom::HarmonicModelProblem problem;
-
-  explicit SectorCase(std::vector<std::string> fixedSets) {
-    mesh::ShroudedSectorParameters p;
-    p.sectors = 8;
-    p.meshSize = 14.0;
-    p.boreRadius = 70.0;  // a thin disc ring: fewer equations for the complex reference solves
-    mesh = mesh::generateShroudedSector(p);
-    // A few retained nodes: two on each shroud contact face and the mid-blade node.
-    const auto& left = mesh.nodeSet("shroud_contact_left");
-    const auto& right = mesh.nodeSet("shroud_contact_right");
-    mesh.nodeSets["rom_contact"] = {left.front(), left[left.size() / 2], right.front(), right[right.size() / 2]};
-    sector = cyclic::makeCyclicSector(mesh, p.sectors, {}, {"disc_left"}, {"disc_right"});  // cantilever
-    problem.harmonic = kHarmonic;
-    problem.fixedNodeSets = fixedSets;
-    problem.retainedNodeSets = {"rom_contact", "mid_blade"};
-    problem.lossFactor = kEta;
-    if (!fixedSets.empty()) {
-      const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, fixedSets);
-      prestress = cyclic::solveLinearPrestress(mesh, k0, problem.material, kRpm, fe::Axis{}, Tpetra::getDefaultComm());
-      problem.prestress = &prestress;
-    }
-  }
+struct SectorCase : regression::ShroudedSectorCase {
+  explicit SectorCase(std::vector<std::string> fixedSets)
+      : ShroudedSectorCase(std::move(fixedSets), kHarmonic, kEta) {}
 };
 
-// Frequencies (rad/s) over the first `families` natural frequencies: below the first,
-// on each, 0.2 % below it, and half way to the next.
 std::vector<double> band(const rom::RetainedModes& modes, int families) {
-  std::vector<double> w;
-  const auto natural = [&](int j) { return std::sqrt(modes.eigenvalues[std::size_t(j * modes.copies)]); };
-  w.push_back(0.5 * natural(0));
-  for (int j = 0; j < families; ++j) {
-    for (double f : {0.998, 1.0}) w.push_back(f * natural(j));
-    w.push_back(0.5 * (natural(j) + natural(j + 1)));
-  }
-  return w;
+  return regression::frequencyBand(modes, families);
 }
 
 }  // namespace
@@ -181,11 +146,7 @@ TEST(HybridFrf, RigidBodyModesShiftW0) {
   EXPECT_LT(A0.shift, modes.eigenvalues[2]);
   EXPECT_NE(A0.note.find("rigid-body"), std::string::npos);
   const rom::HybridFrfModel hybrid(modes, A0, kEta);
-  double worst = 0;
-  for (double f : {0.5, 1.5, 2.5}) {
-    const double omega = f * std::sqrt(modes.eigenvalues[2]);
-    worst = std::max(worst, relativeError(hybrid.compliance(omega), full.compliance(omega)));
-  }
+  const double worst = regression::worstErrorAround(hybrid, full, std::sqrt(modes.eigenvalues[2]));
   std::printf("free sector k = 0, 40 modes, shifted w0: max relative error %.3e\n", worst);
   EXPECT_LT(worst, 1e-3);
 }

@@ -77,6 +77,8 @@ long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->t
 double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
 const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->nodes; }
 Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
+const cyclic::HarmonicOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
+const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *impl_->G; }
 
 Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   const auto& I = *impl_;

@@ -20,6 +20,10 @@
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 
+namespace cyclone::cyclic {
+struct HarmonicOperators;
+}
+
 namespace cyclone::rom {
 
 struct HarmonicModelProblem {
@@ -62,6 +66,13 @@ public:
   /// omega0 = 0 with rigid-body modes among `modes`: sigma moves automatically to half
   /// the first elastic eigenvalue (reported in the note and the log).
   StaticCompliance staticCompliance(double omega0, const RetainedModes& modes) const;
+
+  /// The real-form K_k, M_k and their unknowns: what reductions onto the retained
+  /// DOFs (Guyan, Craig-Bampton: BoundaryReduction) work on.
+  const cyclic::HarmonicOperators& operators() const;
+  /// G: unit loads at the retained DOFs as right-hand sides on the unknowns, one
+  /// column per retained DOF (order as in ComplianceModel).
+  const linalg::MultiVector& retainedLoads() const;
 
 private:
   struct Impl;
