@@ -158,6 +158,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     }
   setup.parameter = ForcedResponseSetup::Parameter::Omega;
   setup.omegaUnit = 2 * M_PI * referenceHz;
+  setup.unknownScale = 0;  // displacements of ~1e-3 mm: scaled to order one for the arclength
   setup.stability = "false";
   return setup;
 }
@@ -171,25 +172,33 @@ ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReduce
     throw InputError("disc_response/family", "must lie in 1.." + std::to_string(hz.size()) +
                                                  " (the natural frequencies computed per nodal diameter)");
   out.freeHz = hz[family - 1];
-  // The stuck system's peak: the response linearised at rest on a log scan up to 3x the
-  // free frequency, harmonic 1 alone (the linearised harmonics do not couple).
+  // The stuck system's peak: the response linearised at rest on a log scan from below
+  // the family up to 8x its free frequency (stuck shroud contacts stiffen it a lot),
+  // harmonic 1 alone (the linearised harmonics do not couple).
   const auto first = hbm::withHarmonics(hb, hbm::HarmonicSet({1}), hb.aft().numSamples());
   const int dof = setup.outputDofs.front(), nc = first->numCoefficients();
   const int c = first->aft().harmonics().cosIndex(1);
-  double best = -1;
   auto amplitude = [&](double f) {
     const Eigen::VectorXd X = first->linearizedSolution(2 * M_PI * f, setup.excitationScale);
     return std::hypot(X(dof * nc + c), X(dof * nc + c + 1));
   };
-  const double lo = (family > 1 ? hz[family - 2] * 1.02 : 0.8 * out.freeHz), hi = 3.0 * out.freeHz;
-  const int steps = 150;
-  for (int i = 0; i <= steps; ++i) {
-    const double f = lo * std::pow(hi / lo, double(i) / steps);
-    const double a = amplitude(f);
-    if (a > best) best = a, out.stuckHz = f;
-  }
+  const double lo = (family > 1 ? hz[family - 2] * 1.02 : 0.8 * out.freeHz), hi = 8.0 * out.freeHz;
+  const int steps = 300;
+  std::vector<double> f(steps + 1), amp(steps + 1);
+  for (int i = 0; i <= steps; ++i) f[i] = lo * std::pow(hi / lo, double(i) / steps), amp[i] = amplitude(f[i]);
+  // The first interior local maximum that stands out (a resonance, not a flat rise).
+  int at = -1;
+  for (int i = 1; i < steps; ++i)
+    if (amp[i] > amp[i - 1] && amp[i] >= amp[i + 1] && amp[i] > 2 * std::min(amp[0], amp[steps])) {
+      at = i;
+      break;
+    }
+  if (at < 0)
+    throw InputError("disc_response", "no resonance of the stuck system between " + std::to_string(lo) + " and " +
+                                          std::to_string(hi) + " Hz: give frequency_range_hz");
+  out.stuckHz = f[at];
   // Golden-section polish on the bracketing scan interval.
-  double a = out.stuckHz * std::pow(hi / lo, -1.0 / steps), b = out.stuckHz * std::pow(hi / lo, 1.0 / steps);
+  double a = f[at - 1], b = f[at + 1];
   const double g = 0.5 * (std::sqrt(5.0) - 1);
   for (int it = 0; it < 40; ++it) {
     const double x1 = b - g * (b - a), x2 = a + g * (b - a);

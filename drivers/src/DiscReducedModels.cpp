@@ -15,7 +15,10 @@
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/cyclic/Prestress.hpp"
 #include "cyclone/post/ReducedModelFile.hpp"
+#include "cyclone/rom/BoundaryReduction.hpp"
+#include "cyclone/rom/CraigBamptonModel.hpp"
 #include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/GuyanModel.hpp"
 
 namespace cyclone::scenes {
 
@@ -60,10 +63,12 @@ std::vector<double> distinctHz(const rom::RetainedModes& m) {
 DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
                                          const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
                                          linalg::CommPtr comm) {
-  if (spec.kind != "hybrid" && spec.kind != "truncation" && spec.kind != "full_fe")
+  if (spec.kind != "hybrid" && spec.kind != "truncation" && spec.kind != "full_fe" && spec.kind != "guyan" &&
+      spec.kind != "craig_bampton")
     throw InputError("reduced_model/kind", "unknown kind '" + spec.kind +
                                                "' (hybrid: modes + exact static correction; truncation: modes only; "
-                                               "full_fe: the FE compliance itself, the reference)");
+                                               "guyan; craig_bampton: `modes` fixed-interface modes; full_fe: the FE "
+                                               "compliance itself, the reference)");
   if (spec.prestress != "linear" && spec.prestress != "nonlinear" && spec.prestress != "none")
     throw InputError("reduced_model/prestress", "unknown prestress '" + spec.prestress + "' (linear, nonlinear, none)");
   if (spec.modes < 1) throw InputError("reduced_model/modes", "must be at least 1");
@@ -97,7 +102,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     problem.prestress = &prestress;
   };
 
-  const bool cache = !cacheDirectory.empty() && spec.kind != "full_fe";
+  // The HDF5 form holds modal models (hybrid, truncation); the others are rebuilt.
+  const bool cache = !cacheDirectory.empty() && (spec.kind == "hybrid" || spec.kind == "truncation");
   if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
   for (int k : nodalDiameters) {
     const std::string path =
@@ -126,6 +132,10 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     std::shared_ptr<const rom::HybridFrfModel> hybrid;
     if (spec.kind == "full_fe") {
       model = full;
+    } else if (spec.kind == "guyan" || spec.kind == "craig_bampton") {
+      const auto reduction = rom::reduceOntoRetainedDofs(*full, spec.kind == "guyan" ? 0 : spec.modes);
+      if (spec.kind == "guyan") model = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
+      else model = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
     } else {
       hybrid = spec.kind == "hybrid"
                    ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes),

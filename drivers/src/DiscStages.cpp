@@ -190,7 +190,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto cs = d.section("continuation");
   continuation::ContinuationOptions opt;
   opt.initialStep = cs.getDouble("initial_step", 0.002);
-  opt.maxStep = cs.getDouble("max_step", 0.05);
+  opt.maxStep = cs.getDouble("max_step", 0.02);
+  opt.arcLengthScaling = false;  // the unknowns are scaled to order one (makeDiscForcedResponse)
   opt.minStep = cs.getDouble("min_step", 1e-7);
   opt.maxSteps = cs.getInt("max_points", 2000);
   opt.tolerance = cs.getDouble("tolerance", 1e-8);

@@ -60,7 +60,23 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
     branch.stopReason = start.method;
     return branch;
   }
-  return continuation::traceBranch(continuationProblem(setup), start.x, setup.continuation);
+  double scale = setup.unknownScale;
+  if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
+  if (!(scale > 0) || scale == 1) return continuation::traceBranch(continuationProblem(setup), start.x, setup.continuation);
+  // LOCA's arclength mixes the unknowns with the parameter: unknowns of order one keep
+  // its steps in proportion (X = scale Y).
+  const auto base = continuationProblem(setup);
+  continuation::ContinuationProblem scaled = base;
+  scaled.residual = [base, scale](const Eigen::VectorXd& Y, double p, Eigen::VectorXd& R) {
+    base.residual(scale * Y, p, R);
+  };
+  scaled.jacobian = [base, scale](const Eigen::VectorXd& Y, double p, Eigen::MatrixXd& J) {
+    base.jacobian(scale * Y, p, J);
+    J *= scale;
+  };
+  auto branch = continuation::traceBranch(scaled, start.x / scale, setup.continuation);
+  for (auto& point : branch.points) point.x *= scale;
+  return branch;
 }
 
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup) {

@@ -24,6 +24,7 @@ public:
   }
   const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
   bool computeF(NOX::LAPACK::Vector& f, const NOX::LAPACK::Vector& x) override {
+    ++residuals_;
     try {
       Eigen::VectorXd F(problem_.size);
       problem_.residual(toEigen(x), p_, F);
@@ -35,6 +36,7 @@ public:
     }
   }
   bool computeJacobian(NOX::LAPACK::Matrix<double>& J, const NOX::LAPACK::Vector& x) override {
+    ++jacobians_;
     try {
       Eigen::MatrixXd Je(problem_.size, problem_.size);
       problem_.jacobian(toEigen(x), p_, Je);
@@ -53,7 +55,11 @@ public:
     if (sinceLog_.seconds() > 10) {
       std::ostringstream msg;
       msg << "continuation: " << branch_.points.size() << " points, parameter " << conParam << ", "
-          << total_.seconds() << " s";
+          << total_.seconds() << " s; " << double(residuals_) / double(branch_.points.size() - pointsAtLog_)
+          << " residuals and " << double(jacobians_) / double(branch_.points.size() - pointsAtLog_)
+          << " Jacobians per point";
+      residuals_ = jacobians_ = 0;
+      pointsAtLog_ = branch_.points.size();
       log::info(msg.str());
       sinceLog_.restart();
     }
@@ -70,6 +76,8 @@ private:
   double p_;
   Branch& branch_;
   Timer sinceLog_, total_;
+  long residuals_ = 0, jacobians_ = 0;
+  std::size_t pointsAtLog_ = 0;
 };
 
 }  // namespace
@@ -94,6 +102,7 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   stepper.set("Max Nonlinear Iterations", o.maxNewtonIterations);
   stepper.set("Compute Eigenvalues", false);
   params->sublist("LOCA").sublist("Predictor").set("Method", "Tangent");
+  params->sublist("LOCA").sublist("Stepper").set("Enable Arc Length Scaling", o.arcLengthScaling);
   auto& step = params->sublist("LOCA").sublist("Step Size");
   step.set("Method", "Adaptive");
   step.set("Initial Step Size", initialStep);

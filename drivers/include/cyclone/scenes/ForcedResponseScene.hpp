@@ -24,6 +24,9 @@ struct ForcedResponseSetup {
   /// Omega: omega = p x omegaUnit, so the continuation runs on a parameter of order one
   /// (e.g. the frequency over a reference frequency for an FE disc, whose omega is ~1e4 rad/s).
   double omegaUnit = 1;
+  /// The continuation works on X / unknownScale (0: the first point's largest coefficient),
+  /// so that unknowns of order one meet a parameter of order one in LOCA's arclength.
+  double unknownScale = 1;
   double excitationScale = 1;  ///< the scale s of f = s f_ex (excitation: scale) unless the parameter is ForceScale
   std::vector<std::string> elementNames;  ///< the scene's names of system->elements(), in order
   /// ElementParameter: which elements (all elements of one name, e.g. every shroud contact)

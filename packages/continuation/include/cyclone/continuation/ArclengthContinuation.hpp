@@ -26,6 +26,10 @@ struct ContinuationOptions {
   int maxSteps = 5000;
   double tolerance = 1e-10;         ///< Newton: ||F||_2
   int maxNewtonIterations = 15;
+  /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
+  /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
+  /// shrank the steps near a resonance to a creep (2000 points short of the peak).
+  bool arcLengthScaling = true;
 };
 
 struct BranchPoint {
