@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
+#include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/ContentHash.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -58,7 +60,40 @@ std::vector<double> distinctHz(const rom::RetainedModes& m) {
   return hz;
 }
 
+void writeCheck(const std::string& path, const ReducedModelCheck& c) {
+  AtomicFile file(path);
+  std::ofstream out(file.tempPath());
+  out.precision(12);
+  out << "freq_hz,reduced_abs,full_abs,relative_error\n";
+  for (std::size_t i = 0; i < c.hz.size(); ++i)
+    out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
+  out.close();
+  file.commit();
+}
+
+ReducedModelCheck readCheck(const std::string& path, int nd) {
+  ReducedModelCheck c;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) return c;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string v[4];
+    for (auto& x : v) std::getline(cells, x, ',');
+    c.hz.push_back(std::stod(v[0])), c.reduced.push_back(std::stod(v[1]));
+    c.full.push_back(std::stod(v[2])), c.error.push_back(std::stod(v[3]));
+  }
+  c.nodalDiameter = nd;
+  return c;
+}
+
 }  // namespace
+
+double ReducedModelCheck::maxError() const {
+  double e = 0;
+  for (double x : error) e = std::max(e, x);
+  return e;
+}
 
 DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
                                          const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
@@ -110,6 +145,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
         cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
               : std::string();
     if (cache && std::filesystem::exists(path)) {
+      if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
+        out.check = readCheck(path + ".check.csv", k);
       auto record = post::readReducedModelHdf5(path);
       auto model = std::make_shared<rom::HybridFrfModel>(record.model());
       out.naturalHz[k] = distinctHz(model->modes());
@@ -145,6 +182,28 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     }
     out.models[k] = model;
     ++out.built;
+    if (k == spec.checkNodalDiameter && spec.kind != "full_fe" && spec.checkFrequencies > 0) {
+      // From half the first natural frequency to the fifth's (or the last computed), log-spaced.
+      Timer check;
+      const auto& hz = out.naturalHz[k];
+      const double lo = 0.5 * hz.front(), hi = 1.05 * hz[std::min<std::size_t>(4, hz.size() - 1)];
+      auto& c = out.check;
+      c.nodalDiameter = k;
+      for (int i = 0; i < spec.checkFrequencies; ++i) {
+        const double f = lo * std::pow(hi / lo, double(i) / std::max(1, spec.checkFrequencies - 1));
+        const Eigen::MatrixXcd Ar = model->compliance(2 * M_PI * f), Af = full->compliance(2 * M_PI * f);
+        c.hz.push_back(f);
+        c.reduced.push_back(std::abs(Ar(Ar.rows() - 1, Ar.rows() - 1)));  // the last retained node's last direction
+        c.full.push_back(std::abs(Af(Af.rows() - 1, Af.rows() - 1)));
+        c.error.push_back((Ar - Af).norm() / Af.norm());
+      }
+      c.seconds = check.seconds();
+      std::ostringstream line;
+      line << "reduced model check at ND " << k << ": largest relative error " << c.maxError() << " over "
+           << spec.checkFrequencies << " frequencies " << lo << ".." << hi << " Hz (" << c.seconds << " s)";
+      log::info(line.str());
+      if (cache && comm->getRank() == 0) writeCheck(path + ".check.csv", c);
+    }
     std::ostringstream msg;
     msg << "reduced model ND " << k << " (" << spec.kind << ", " << spec.modes << " natural frequencies, "
         << full->size() << " retained DOFs): built in " << build.seconds() << " s; first " << out.naturalHz[k].front()

@@ -14,6 +14,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/mesh/Mesh.hpp"
 #include "cyclone/post/SvgPlot.hpp"
@@ -140,6 +141,50 @@ DiscReducedModels variedModels(const DiscReducedModels& base, double lossFactor,
   return out;
 }
 
+std::string shortNumber(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Per contact at the largest response: the energy friction dissipates per cycle,
+// E = sum_h pi h (F_ch . W_sh - F_sh . W_ch) from the coefficients of the relative
+// motion w and of the contact force f (exact for the harmonics kept), and the mean normal force.
+void writeContactEnergies(ForcedResponseSetup& setup, const ForcedResponseResult& result, const std::string& path) {
+  const auto& hb = *setup.system;
+  const auto& H = hb.aft().harmonics();
+  const int nc = hb.numCoefficients();
+  const auto& pt = result.branch.points[std::size_t(std::max_element(result.branch.points.begin(), result.branch.points.end(),
+                                                                     [&](const auto& a, const auto& b) {
+                                                                       return a.x.norm() < b.x.norm();
+                                                                     }) -
+                                                    result.branch.points.begin())];
+  const double omega = setup.apply(pt.parameter).first;
+  const Eigen::Map<const Eigen::MatrixXd> Xm(pt.x.data(), nc, hb.numDofs());
+  AtomicFile file(path);
+  std::ofstream csv(file.tempPath());
+  csv.precision(10);
+  csv << "contact,freq_hz,dissipated_energy_per_cycle,mean_normal_force,slip_amplitude\n";
+  Eigen::MatrixXd F;
+  for (std::size_t e = 0; e < hb.elements().size(); ++e) {
+    const auto& c = hb.elements()[e];
+    Eigen::MatrixXd W = Xm * c.W;
+    if (c.Wnext.size() != 0) W += hb.nextSectorMap() * (Xm * c.Wnext);
+    c.element->harmonicForce(hb.aft(), W, omega, F, nullptr);
+    double energy = 0, slip = 0;
+    for (int h : H.harmonics()) {
+      if (h == 0) continue;
+      const int ic = H.cosIndex(h), is = H.sinIndex(h);
+      for (int k = 0; k < W.cols(); ++k) energy += M_PI * h * (F(ic, k) * W(is, k) - F(is, k) * W(ic, k));
+      if (h == 1) slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
+    }
+    const double normal = H.contains(0) ? F(H.cosIndex(0), W.cols() - 1) : 0.0;
+    csv << e << "," << omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
+  }
+  csv.close();
+  file.commit();
+}
+
 }  // namespace
 
 void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
@@ -161,8 +206,11 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     if (nds.empty())
       throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
   }
-  r.rejectUnknownKeys();
   const std::string cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
+  DiscModelSpec checkedSpec = modelSpec;
+  checkedSpec.checkFrequencies = r.getInt("check_frequencies", 12);
+  if (forcedResponse && spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors)
+    checkedSpec.checkNodalDiameter = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, {1}).front();
   if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(cacheDir);
   // Engine-order errors before any FE work.
   if (forcedResponse && (spec.engineOrder < 1 || spec.engineOrder >= modelSpec.sectors)) {
@@ -170,7 +218,40 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     none.sectors = modelSpec.sectors;
     makeDiscForcedResponse(mesh, none, spec);  // throws the explained InputError
   }
-  const auto models = buildDiscReducedModels(mesh, modelSpec, nds, cacheDir, comm);
+  r.rejectUnknownKeys();
+  Timer romTimer;
+  const auto models = buildDiscReducedModels(mesh, checkedSpec, nds, cacheDir, comm);
+  {
+    const auto& c = models.check;
+    std::ostringstream estimate;
+    if (c.nodalDiameter >= 0) {
+      estimate << "largest relative error " << c.maxError() << " against the full FE compliance at ND "
+               << c.nodalDiameter << " over " << c.hz.size() << " frequencies (" << c.hz.front() << ".." << c.hz.back()
+               << " Hz)";
+      if (comm->getRank() == 0) {
+        post::SvgPlot plot("Reduced model (" + modelSpec.kind + ", " + std::to_string(modelSpec.modes) +
+                               " modes) against the full FE model, ND " + std::to_string(c.nodalDiameter),
+                           "frequency (Hz)", "|A| at the mid-blade node (mm/N)");
+        plot.addLine(c.hz, c.full, post::SvgPlot::palette(0), "full FE (complex solve)");
+        plot.addMarkers(c.hz, c.reduced, post::SvgPlot::palette(1), "reduced model");
+        plot.write(outDir + "/rom_check.svg");
+        AtomicFile file(outDir + "/rom_check.csv");
+        std::ofstream csv(file.tempPath());
+        csv.precision(12);
+        csv << "freq_hz,reduced_abs,full_abs,relative_error\n";
+        for (std::size_t i = 0; i < c.hz.size(); ++i)
+          csv << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
+        csv.close();
+        file.commit();
+      }
+      summary.written.push_back(outDir + "/rom_check.svg");
+      summary.written.push_back(outDir + "/rom_check.csv");
+      summary.computed.push_back("reduced model check: " + estimate.str());
+    } else {
+      estimate << "not checked (a reused model built before the check, or check_frequencies: 0)";
+    }
+    summary.stages.push_back({"reduced models (" + modelSpec.kind + ")", romTimer.seconds(), estimate.str()});
+  }
   {
     std::ostringstream line;
     line << "reduced models (" << modelSpec.kind << ", " << modelSpec.modes << " natural frequencies per ND, "
@@ -234,13 +315,22 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     }
     return result;
   };
+  Timer responseTimer;
   auto reference = traceOne(setup, "disc_frc");
-  (void)reference;
+  summary.stages.push_back({"forced response (H = " + std::to_string(setup.system->aft().harmonics().maxHarmonic()) +
+                                ", " + std::to_string(reference.branch.points.size()) + " points)",
+                            responseTimer.seconds(),
+                            "Newton tolerance " + shortNumber(opt.tolerance) +
+                                " (residual relative to the forces); " + reference.samplesCheck});
+  if (!reference.branch.points.empty() && comm->getRank() == 0)
+    writeContactEnergies(setup, reference, outDir + "/disc_frc_contacts.csv");
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.
   auto studies = d.section("studies");
   const std::vector<std::string> known{"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics",
                                        "modes"};
+  Timer studiesTimer;
+  int studyCurves = 0;
   for (const auto& name : known) {
     if (!studies.has(name)) continue;
     const auto values = studies.getDoubleList(name, {});
@@ -278,6 +368,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       std::ostringstream label;
       label << name << " = " << v;
       plot.addLine(c.hz, c.peak, post::SvgPlot::palette(int(i)), label.str());
+      ++studyCurves;
       table << v << "," << result.peakOmega / (2 * M_PI) << "," << result.peak << "," << result.branch.points.size()
             << "," << (result.branch.finished ? 1 : 0) << "," << t.seconds() << "\n";
     }
@@ -294,6 +385,9 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   }
   studies.rejectUnknownKeys();
   d.rejectUnknownKeys();
+  if (studyCurves > 0)
+    summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),
+                              "as the forced response, per curve"});
 }
 
 }  // namespace cyclone::scenes

@@ -806,15 +806,32 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
 
   if (wants("forced_response")) {
     // Matrix-defined systems need no mesh.
+    Timer stage;
     forcedResponseStage(scene, outDir, comm, summary);
+    summary.stages.push_back({"forced response", stage.seconds(), "see the samples check"});
+    if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
+    summary.written.push_back(outDir + "/report.md");
     return summary;
   }
   int builtInSectors = 0;
+  Timer stage;
   auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
-  if (wants("static")) staticStage(scene, mesh, outDir, comm, summary);
-  if (wants("modal")) modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
+  summary.stages.push_back({"mesh", stage.seconds(), "element Jacobians checked positive at every integration point"});
+  if (wants("static")) {
+    stage.restart();
+    staticStage(scene, mesh, outDir, comm, summary);
+    summary.stages.push_back({"static (linear, centrifugal)", stage.seconds(), summary.computed.back()});
+  }
+  if (wants("modal")) {
+    stage.restart();
+    modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
+    summary.stages.push_back({"prestress and cyclic modes", stage.seconds(),
+                              "every mode's backward error ||K x - l M x|| / (||K x|| + |l| ||M x||) checked"});
+  }
   if (wants("disc_response") || wants("reduced_model"))
     discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, comm, summary);
+  if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
+  summary.written.push_back(outDir + "/report.md");
   return summary;
 }
 

@@ -33,6 +33,10 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
 
 fe::IsotropicElastic readMaterial(SceneSection section);
 
+/// report.md in the output directory: the run's summary, its figures (the SVGs the
+/// stages wrote), the studies' tables and the stages' error against run time.
+void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary);
+
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.
 void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,

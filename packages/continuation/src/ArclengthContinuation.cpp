@@ -160,7 +160,9 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
   // A failed evaluation inside LOCA (e.g. a parameter leaving its domain in a
   // corrector iteration) ends its run by an exception: restart from the last
   // converged point with a quarter of the step, in the direction the branch
-  // was moving, a few times, as a step cut.
+  // was moving, a few times, as a step cut. (Restarting also after LOCA's step
+  // fell below its minimum at a kink of many friction contacts was tried: each
+  // restart failed the same way and the run took minutes longer.)
   const double forward = o.to >= o.from ? 1.0 : -1.0;
   bool threw = false;
   runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw);

@@ -30,13 +30,27 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(std::shared_ptr<const ReceptanceMod
   excitation_ = Eigen::VectorXd::Zero(numUnknowns());
   static_ = Eigen::VectorXd::Zero(numUnknowns());
   next_ = Eigen::MatrixXd::Identity(numCoefficients(), numCoefficients());
-  mean_ = receptance_->meanCompliance();
-  if (mean_.rows() != numDofs() || mean_.cols() != numDofs() || !mean_.allFinite())
-    throw InputError("system", "the receptance model's mean compliance is not a finite " + std::to_string(numDofs()) +
-                                   " square matrix");
-  const double largest = mean_.diagonal().cwiseAbs().maxCoeff();
-  if (!(largest > 0)) throw InputError("system", "the receptance model's mean compliance is zero");
+  if (aft_->harmonics().contains(0)) {
+    mean_ = receptance_->meanCompliance();
+    if (mean_.rows() != numDofs() || mean_.cols() != numDofs() || !mean_.allFinite())
+      throw InputError("system", "the receptance model's mean compliance is not a finite " +
+                                     std::to_string(numDofs()) + " square matrix");
+  }
+  kappa_ = 0;  // set on first use (the phases of a cyclic system come later)
+}
+
+double HarmonicBalanceSystem::receptanceStiffness() const {
+  if (kappa_ > 0) return kappa_;
+  if (!receptance_) return 1.0;
+  // 1 / the largest static compliance on the diagonal: the mean's, or the lowest harmonic's at rest.
+  const auto& H = aft_->harmonics();
+  double largest = 0;
+  if (mean_.size() != 0) largest = mean_.diagonal().cwiseAbs().maxCoeff();
+  else largest = receptance_->compliance(0.0, phaseIndex(H.harmonics().front())).diagonal().cwiseAbs().maxCoeff();
+  if (!(largest > 0) || !std::isfinite(largest))
+    throw InputError("system", "the receptance model's static compliance is zero or not finite");
   kappa_ = 1.0 / largest;
+  return kappa_;
 }
 
 const Eigen::MatrixXd& HarmonicBalanceSystem::M() const { return requireMatrixForm("M"), M_; }
@@ -69,6 +83,7 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
   }
   cyclic_ = std::move(coupling);
   cachedOmega_ = -1;  // the phases changed
+  if (receptance_ && mean_.size() == 0) kappa_ = 0;
   Cnext0_ = cyclic_.Cnext;
   cyclic_.Cnext *= dampingScale_;
   // Sector j+1 is sector j delayed by phi = 2 pi EO / N: harmonic h rotates by h phi.
@@ -299,12 +314,13 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
     addElementForces(X, omega, R, jacobian);
     const Eigen::MatrixXd B = complianceOperator(omega);
     const Eigen::VectorXd load = excitationScale * excitation_ + static_ - R;
-    R.noalias() = kappa_ * X;
-    R.noalias() -= kappa_ * (B * load);
+    const double kappa = receptanceStiffness();
+    R.noalias() = kappa * X;
+    R.noalias() -= kappa * (B * load);
     if (jacobian) {
       Eigen::MatrixXd BJ = B * *jacobian;
-      *jacobian = kappa_ * BJ;
-      jacobian->diagonal().array() += kappa_;
+      *jacobian = kappa * BJ;
+      jacobian->diagonal().array() += kappa;
     }
     return;
   }

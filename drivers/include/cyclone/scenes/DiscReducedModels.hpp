@@ -30,6 +30,17 @@ struct DiscModelSpec {
   int modes = 20;                       ///< natural frequencies per nodal diameter (a pair counts once)
   double omega0 = 0;                    ///< expansion frequency of the hybrid model's static compliance (rad/s)
   double lossFactor = 0.006;            ///< structural damping (1 + i eta) K; 2 x the modal damping ratio at resonance
+  int checkNodalDiameter = -1;          ///< compare this diameter's model with the full FE model (-1: none)
+  int checkFrequencies = 12;            ///< how many frequencies the check spans (first to fifth family)
+};
+
+/// The reduced model against the full FE compliance at one nodal diameter.
+struct ReducedModelCheck {
+  int nodalDiameter = -1;
+  std::vector<double> hz, reduced, full;  ///< |A| at the first retained DOF of the excitation direction...
+  std::vector<double> error;              ///< ||A_reduced - A_full||_F / ||A_full||_F per frequency
+  double seconds = 0;                     ///< the full solves
+  double maxError() const;
 };
 
 struct DiscReducedModels {
@@ -41,6 +52,7 @@ struct DiscReducedModels {
   std::map<int, std::string> files;              ///< by nodal diameter: the HDF5 file (none for full_fe)
   int reused = 0, built = 0;
   double seconds = 0;
+  ReducedModelCheck check;  ///< empty unless spec.checkNodalDiameter was built now or its check was cached
 };
 
 /// The nodal diameters harmonics `harmonics` of engine order `engineOrder` live on (h EO mod N folded to 0..N/2).

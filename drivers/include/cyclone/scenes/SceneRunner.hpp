@@ -14,9 +14,17 @@ struct SceneOverrides {
   std::optional<double> meshSize;  ///< built-in sector only
 };
 
+/// One stage of a run: how long it took and what its error estimate says.
+struct StageRecord {
+  std::string stage;
+  double seconds = 0;
+  std::string errorEstimate;
+};
+
 struct SceneSummary {
   std::vector<std::string> computed;  ///< one line per result, for the final summary
   std::vector<std::string> written;   ///< files produced
+  std::vector<StageRecord> stages;    ///< for the report's table of error against run time
 };
 
 /// `source` names the scene in messages (a file name or "embedded demo scene").

@@ -56,7 +56,7 @@ public:
   bool usesDynamicStiffness() const { return stiffnessForm_; }
   const std::shared_ptr<const ReceptanceModel>& receptance() const { return receptance_; }
   /// The stiffness kappa of the receptance form's rows (1 in the matrix form).
-  double receptanceStiffness() const { return kappa_; }
+  double receptanceStiffness() const;
 
   /// Makes the system one sector of a ring (see the file comment). Call before
   /// adding elements that use W_next.
@@ -144,7 +144,7 @@ private:
   void addElementForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian) const;
   std::shared_ptr<const ReceptanceModel> receptance_;
   Eigen::MatrixXd mean_;  // receptance form: the mean compliance
-  double kappa_ = 1.0;
+  mutable double kappa_ = 1.0;
   bool stiffnessForm_ = false;
   Eigen::MatrixXd meanStiffness_;
   // The last frequency's operator: residual and Jacobian come at the same frequency.

@@ -1,0 +1,98 @@
+// The report a person reads after a run: Markdown next to the figures.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "SceneStages.hpp"
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::scenes {
+
+namespace {
+
+bool exists(const std::string& dir, const std::string& name) { return std::filesystem::exists(dir + "/" + name); }
+
+// A CSV file as a Markdown table (at most `rows` data rows).
+std::string csvTable(const std::string& path, std::size_t rows) {
+  std::ifstream in(path);
+  std::ostringstream out;
+  std::string line;
+  std::size_t row = 0;
+  while (std::getline(in, line)) {
+    if (row > rows) {
+      out << "| ... |\n";
+      break;
+    }
+    std::string cell;
+    std::stringstream cells(line);
+    std::size_t columns = 0;
+    out << "|";
+    while (std::getline(cells, cell, ',')) out << " " << cell << " |", ++columns;
+    out << "\n";
+    if (row == 0) {
+      out << "|";
+      for (std::size_t c = 0; c < columns; ++c) out << "---|";
+      out << "\n";
+    }
+    ++row;
+  }
+  return out.str();
+}
+
+}  // namespace
+
+void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary) {
+  std::ostringstream r;
+  r << "# Cyclone run report\n\nScene: `" << source << "`. Every figure below is a file in this directory.\n\n";
+  r << "## Summary\n\n";
+  for (const auto& line : summary.computed) r << "- " << line << "\n";
+  r << "\n";
+  if (!summary.stages.empty()) {
+    r << "## Error estimate against run time, per stage\n\n| stage | run time [s] | error estimate |\n|---|---|---|\n";
+    for (const auto& s : summary.stages) r << "| " << s.stage << " | " << s.seconds << " | " << s.errorEstimate << " |\n";
+    r << "\n";
+  }
+  if (exists(outDir, "campbell.svg") || exists(outDir, "safe.svg")) {
+    r << "## Modes: Campbell and SAFE diagrams\n\nPrestressed modes of every nodal diameter (`frequencies.csv`, "
+         "`modes_<rpm>rpm.exo`).\n\n";
+    if (exists(outDir, "campbell.svg")) r << "![Campbell diagram](campbell.svg)\n\n";
+    if (exists(outDir, "safe.svg")) r << "![SAFE diagram](safe.svg)\n\n";
+    if (exists(outDir, "resonances.csv"))
+      r << "Engine-order resonances in the speed range (`resonances.csv`):\n\n" << csvTable(outDir + "/resonances.csv", 20)
+        << "\n";
+  }
+  if (exists(outDir, "rom_check.svg")) {
+    r << "## Reduced model against the full FE model\n\nThe reduced model's compliance at the excitation DOF against "
+         "the full FE model's (a complex solve per frequency), at the engine order's nodal diameter "
+         "(`rom_check.csv`).\n\n![reduced model check](rom_check.svg)\n\n";
+  }
+  for (const char* frc : {"disc_frc", "frc"})
+    if (exists(outDir, std::string(frc) + ".svg")) {
+      r << "## Forced response\n\nHarmonic balance (AFT) traced by pseudo-arclength continuation (`" << frc
+        << ".csv`: amplitudes per harmonic, max |x(t)|, bifurcation flags; `" << frc
+        << ".h5`: every coefficient).\n\n![forced response](" << frc << ".svg)\n\n";
+      if (exists(outDir, std::string(frc) + "_contacts.csv"))
+        r << "Contacts at the peak (`" << frc << "_contacts.csv`):\n\n"
+          << csvTable(outDir + "/" + frc + "_contacts.csv", 60) << "\n";
+    }
+  bool studies = false;
+  for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
+    const auto name = entry.path().filename().string();
+    if (name.rfind("study_", 0) != 0 || entry.path().extension() != ".svg") continue;
+    const std::string base = name.substr(0, name.size() - 4);
+    if (!studies) r << "## Parameter studies\n\n", studies = true;
+    r << "### " << base.substr(6) << "\n\n![" << base << "](" << name << ")\n\n";
+    if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";
+  }
+  r << "## Files\n\n";
+  for (const auto& f : summary.written) r << "- `" << std::filesystem::path(f).filename().string() << "`\n";
+  AtomicFile file(outDir + "/report.md");
+  std::ofstream out(file.tempPath());
+  out << r.str();
+  out.close();
+  if (!out) throw Error("cannot write " + outDir + "/report.md");
+  file.commit();
+}
+
+}  // namespace cyclone::scenes

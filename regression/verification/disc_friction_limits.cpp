@@ -1,0 +1,221 @@
+// Verification of the whole chain on the default disc (built-in shrouded sector,
+// 24 sectors, coarse mesh): reduced models at the shroud contacts, friction at
+// the shroud, engine-order forced response. Every reference is independent of
+// the harmonic balance:
+//  - contacts that cannot slip (huge preload) give the linear stuck response,
+//    x = (I + A T^H K T)^{-1} A F with the contact springs K on the relative
+//    motion T of the neighbours, formed here in complex arithmetic;
+//  - contacts without friction and normal stiffness (mu = 0, kn = 0) carry only a
+//    constant preload: at harmonic 1 the free response A F;
+//  - very stiff stuck contacts tie the shroud faces: the stuck resonance is the
+//    first family of the fixed-shroud cyclic modal analysis (another code path:
+//    the cyclic constraint on the side faces, Anasazi on the full sector);
+//  - in between, friction damps: the curve's peak lies below the stuck limit's
+//    peak and between the two limits' resonances, and moves up with the preload.
+#include <Tpetra_Core.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+#include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/cyclic/CyclicModalAnalysis.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "cyclone/rom/SectorReceptance.hpp"
+#include "cyclone/scenes/DiscForcedResponse.hpp"
+
+using namespace cyclone;
+using namespace cyclone::scenes;
+
+namespace {
+
+constexpr int kEngineOrder = 3;
+
+struct Disc {
+  mesh::Mesh mesh;
+  DiscModelSpec spec;
+  DiscReducedModels models;
+
+  explicit Disc(double rpm, std::vector<int> harmonics) {
+    mesh::ShroudedSectorParameters p;  // the default disc, coarse
+    mesh = mesh::generateShroudedSector(p);
+    spec.sectors = p.sectors;
+    spec.rpm = rpm;
+    spec.prestress = "linear";
+    spec.modes = 20;
+    models = buildDiscReducedModels(mesh, spec, nodalDiametersFor(p.sectors, kEngineOrder, harmonics), "",
+                                    Tpetra::getDefaultComm());
+  }
+};
+
+DiscResponseSpec responseSpec(std::vector<int> harmonics, double preload, double kn, double kt) {
+  DiscResponseSpec s;
+  s.engineOrder = kEngineOrder;
+  s.harmonics = std::move(harmonics);
+  s.contact.preload = preload, s.contact.kn = kn, s.contact.kt = kt;
+  s.excitation.amplitude = 20.0;
+  return s;
+}
+
+// Harmonic 1 of every DOF as complex amplitudes X = c - i s.
+Eigen::VectorXcd harmonicOne(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& X) {
+  const int nc = hb.numCoefficients(), c = hb.aft().harmonics().cosIndex(1);
+  Eigen::VectorXcd x(hb.numDofs());
+  for (int a = 0; a < hb.numDofs(); ++a) x(a) = {X(a * nc + c), -X(a * nc + c + 1)};
+  return x;
+}
+
+// The linear responses at harmonic 1, formed directly: free A F, stuck (I + A T^H K T)^{-1} A F.
+struct LinearLimits {
+  Eigen::VectorXcd free, stuck;
+};
+LinearLimits linearLimits(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscResponseSpec& spec,
+                          double omega) {
+  const int N = models.sectors, n = 3 * int(models.retainedNodes.size());
+  const long p = (long(kEngineOrder) % N + N) % N;  // harmonic 1's phase index
+  const rom::SectorReceptance receptance(N, models.models);
+  const Eigen::MatrixXcd A = receptance.compliance(omega, p);
+  Eigen::VectorXcd F = Eigen::VectorXcd::Zero(n);
+  const auto index = [&](mesh::Index node) {
+    return int(std::find(models.retainedNodes.begin(), models.retainedNodes.end(), node) - models.retainedNodes.begin());
+  };
+  const Eigen::Vector3d d = spec.excitation.direction.normalized();
+  for (auto node : mesh.nodeSet(spec.excitation.nodeSet))
+    for (int c = 0; c < 3; ++c) F(3 * index(node) + c) = spec.excitation.amplitude * d(c);
+  // Relative motion of pair i: E^T (Q x_next(left) - x(right)), x_next = e^{-i a} x.
+  const auto& left = mesh.nodeSet(spec.contact.leftSet);
+  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+  const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact), Q = models.sector.rotation();
+  const double a = 2 * M_PI * double(p) / N;
+  const std::complex<double> next(std::cos(a), -std::sin(a));
+  Eigen::MatrixXcd T = Eigen::MatrixXcd::Zero(3 * long(left.size()), n);
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    T.block(3 * long(i), 3 * index(right[i]), 3, 3) -= E.transpose().cast<std::complex<double>>();
+    T.block(3 * long(i), 3 * index(left[i]), 3, 3) += next * (E.transpose() * Q).cast<std::complex<double>>();
+  }
+  Eigen::VectorXcd k(3 * long(left.size()));
+  for (std::size_t i = 0; i < left.size(); ++i)
+    k.segment(3 * long(i), 3) << spec.contact.kt, spec.contact.kt, spec.contact.kn;
+  LinearLimits out;
+  out.free = A * F;
+  const Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(n, n) + A * T.adjoint() * k.asDiagonal() * T;
+  out.stuck = S.partialPivLu().solve(out.free);
+  return out;
+}
+
+Eigen::VectorXd solveAt(ForcedResponseSetup& setup, double omega) {
+  setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
+  setup.omega = omega;
+  const auto problem = continuationProblem(setup);
+  Eigen::VectorXd X = setup.system->linearizedSolution(omega);
+  const auto result = continuation::solveNewton(problem, X, 1.0, 1e-9, 60);
+  EXPECT_TRUE(result.converged) << "Newton at " << omega / (2 * M_PI) << " Hz: residual " << result.residualNorm;
+  return X;
+}
+
+}  // namespace
+
+TEST(DiscFriction, LinearLimitsAndFrictionDampingBetweenThem) {
+  Timer total;
+  Disc disc(10000.0, {0, 1});
+  std::printf("reduced models (ND 0, 3; %zu retained nodes) in %.1f s\n", disc.models.retainedNodes.size(),
+              total.seconds());
+
+  // 1. Contacts that cannot slip: the stuck linear response, at three frequencies.
+  auto stuckSpec = responseSpec({0, 1}, 1e5, 1e4, 1e4);
+  auto stuck = makeDiscForcedResponse(disc.mesh, disc.models, stuckSpec, 1.0);
+  const auto estimate = estimateResonance(stuck, disc.models);
+  std::printf("ND %d: free %.2f Hz, stuck %.2f Hz\n", estimate.nodalDiameter, estimate.freeHz, estimate.stuckHz);
+  ASSERT_GT(estimate.stuckHz, estimate.freeHz);
+  for (double f : {0.5 * estimate.stuckHz, 0.99 * estimate.stuckHz, 1.2 * estimate.stuckHz}) {
+    Timer t;
+    const double w = 2 * M_PI * f;
+    const Eigen::VectorXcd x = harmonicOne(*stuck.system, solveAt(stuck, w));
+    const auto ref = linearLimits(disc.mesh, disc.models, stuckSpec, w);
+    const double err = (x - ref.stuck).norm() / ref.stuck.norm();
+    std::printf("huge preload, %.1f Hz: harmonic balance vs stuck linear response %.2e (%.2f s)\n", f, err, t.seconds());
+    EXPECT_LT(err, 1e-7);
+  }
+
+  // 2. No friction (mu = 0) and no normal stiffness (kn = 0): the contact carries only its
+  //    constant preload, a static pair of forces; harmonic 1 is the free (shroud open) response.
+  auto freeSpec = responseSpec({0, 1}, 1.0, 0.0, 1e4);
+  freeSpec.contact.mu = 0.0;
+  auto open = makeDiscForcedResponse(disc.mesh, disc.models, freeSpec, 1.0);
+  for (double f : {0.8 * estimate.freeHz, estimate.freeHz, 2 * estimate.freeHz}) {
+    const double w = 2 * M_PI * f;
+    const Eigen::VectorXcd x = harmonicOne(*open.system, solveAt(open, w));
+    const auto ref = linearLimits(disc.mesh, disc.models, freeSpec, w);
+    const double err = (x - ref.free).norm() / ref.free.norm();
+    std::printf("mu = 0, kn = 0, %.1f Hz: harmonic balance vs free response %.2e\n", f, err);
+    EXPECT_LT(err, 1e-8);
+  }
+
+  // 3. In between: friction-damped peaks, below the stuck limit's peak (friction dissipates),
+  //    between the free and stuck resonances, moving up with the preload.
+  const int dofOut = stuck.outputDofs.front();
+  const double stuckPeak =
+      std::abs(linearLimits(disc.mesh, disc.models, stuckSpec, 2 * M_PI * estimate.stuckHz).stuck(dofOut));
+  const double freePeak = std::abs(linearLimits(disc.mesh, disc.models, freeSpec, 2 * M_PI * estimate.freeHz).free(dofOut));
+  std::printf("linear peaks at the output DOF: stuck %.4e mm at %.2f Hz, free %.4e mm at %.2f Hz\n", stuckPeak,
+              estimate.stuckHz, freePeak, estimate.freeHz);
+  double previousHz = 0;
+  for (double preload : {2.0, 5.0, 20.0}) {
+    Timer t;
+    auto spec = responseSpec({0, 1}, preload, 1e4, 1e4);
+    auto setup = makeDiscForcedResponse(disc.mesh, disc.models, spec, 0.9 * estimate.freeHz);
+    setup.continuation.from = 1.0;
+    setup.continuation.to = 1.1 * estimate.stuckHz / (0.9 * estimate.freeHz);
+    setup.continuation.initialStep = 0.002, setup.continuation.maxStep = 0.02, setup.continuation.minStep = 1e-7;
+    setup.continuation.tolerance = 1e-8, setup.continuation.arcLengthScaling = false;
+    const auto branch = traceForcedResponse(setup);
+    ASSERT_TRUE(branch.finished) << "preload " << preload << ": " << branch.stopReason;
+    const auto& hb = *setup.system;
+    const int nc = hb.numCoefficients();
+    double peak = 0, peakHz = 0;
+    for (const auto& pt : branch.points) {
+      const double m = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(dofOut * nc, nc)));
+      if (m > peak) peak = m, peakHz = setup.apply(pt.parameter).first / (2 * M_PI);
+    }
+    const auto limits = linearLimits(disc.mesh, disc.models, spec, 2 * M_PI * peakHz);
+    const double stuckAmp = std::abs(limits.stuck(dofOut)), freeAmp = std::abs(limits.free(dofOut));
+    std::printf("preload %5.1f N: peak %.4e mm at %.2f Hz (stuck there %.4e, free %.4e); %zu points, %.1f s\n", preload,
+                peak, peakHz, stuckAmp, freeAmp, branch.points.size(), t.seconds());
+    EXPECT_GT(peakHz, estimate.freeHz);
+    EXPECT_LT(peakHz, estimate.stuckHz);
+    EXPECT_GT(peakHz, previousHz) << "the peak must move up with the preload";
+    EXPECT_LT(peak, stuckPeak);
+    EXPECT_GT(peak, std::max(stuckAmp, freeAmp)) << "at its own resonance the response exceeds both linear ones there";
+    previousHz = peakHz;
+  }
+  std::printf("total %.1f s\n", total.seconds());
+}
+
+TEST(DiscFriction, StiffStuckContactsTieTheShroud) {
+  // Without prestress (the two configurations prestress differently), ND 3 only.
+  Timer t;
+  Disc disc(0.0, {1});
+  auto spec = responseSpec({1}, 1e9, 1e9, 1e9);
+  auto setup = makeDiscForcedResponse(disc.mesh, disc.models, spec, 1.0);
+  const auto estimate = estimateResonance(setup, disc.models);
+  // The fixed-shroud modes: disc and shroud faces under the cyclic constraint.
+  const auto tied = cyclic::makeCyclicSector(disc.mesh, disc.spec.sectors, {}, {"disc_left", "shroud_left"},
+                                             {"disc_right", "shroud_right"});
+  cyclic::CyclicModalProblem problem;
+  problem.fixedNodeSets = {"bore"};
+  problem.harmonics = {estimate.nodalDiameter};
+  problem.modesPerHarmonic = 3;
+  const auto modes = cyclic::solveCyclicModes(disc.mesh, tied, problem, Tpetra::getDefaultComm());
+  double nearest = 1e300;
+  for (double f : modes.front().frequenciesHz)
+    if (std::abs(f - estimate.stuckHz) < std::abs(nearest - estimate.stuckHz)) nearest = f;
+  const double rel = std::abs(estimate.stuckHz - nearest) / nearest;
+  std::printf("ND %d: stuck contacts (k = 1e9 N/mm) resonate at %.3f Hz, the fixed-shroud mode is at %.3f Hz: %.2e "
+              "(%.1f s)\n",
+              estimate.nodalDiameter, estimate.stuckHz, nearest, rel, t.seconds());
+  EXPECT_LT(rel, 1e-3);
+}
