@@ -176,6 +176,19 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
     runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw);
     if (branch.points.size() > before) step = o.initialStep;  // progress: the next cut starts afresh
   }
+  // LOCA ends a run at the range's bound by a last step that may overshoot it, and a
+  // corrector that jumps branches can land far outside: such points are not solutions
+  // in the range asked for.
+  const double lo = std::min(o.from, o.to), hi = std::max(o.from, o.to), slack = 1e-9 * (hi - lo);
+  std::size_t kept = 0;
+  for (auto& pt : branch.points)
+    if (pt.parameter >= lo - slack && pt.parameter <= hi + slack) branch.points[kept++] = std::move(pt);
+  if (kept < branch.points.size()) {
+    std::ostringstream why;
+    why << branch.stopReason << "; " << branch.points.size() - kept << " point(s) outside the range dropped";
+    branch.points.resize(kept);
+    branch.stopReason = why.str();
+  }
   return branch;
 }
 
