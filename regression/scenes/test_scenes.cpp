@@ -87,8 +87,31 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
   const auto summary = scenes::runSceneText(scenes::demoScene(), "demo", o, Tpetra::getDefaultComm());
   for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
   for (const char* f : {"mesh.exo", "mesh.inp", "static.exo", "frequencies.csv", "modes_10000rpm.exo",
-                        "campbell.svg", "safe.svg", "resonances.csv"})
+                        "campbell.svg", "safe.svg", "resonances.csv", "rom_check.svg", "disc_frc.csv",
+                        "disc_frc_contacts.csv", "study_preload.svg", "study_preload.csv", "report.md"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
+  {
+    std::ifstream report(dir / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    for (const char* section : {"## Error estimate against run time", "![SAFE diagram](safe.svg)",
+                                "![reduced model check](rom_check.svg)", "![forced response](disc_frc.svg)",
+                                "### preload"})
+      EXPECT_NE(text.find(section), std::string::npos) << section;
+  }
+  // Friction dissipates: every contact's energy per cycle at the peak is >= 0, some > 0.
+  {
+    std::ifstream csv(dir / "disc_frc_contacts.csv");
+    std::string line;
+    std::getline(csv, line);
+    double total = 0;
+    while (std::getline(csv, line)) {
+      double e = 0;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%*d,%*f,%lf", &e), 1) << line;
+      EXPECT_GE(e, -1e-12) << line;
+      total += e;
+    }
+    EXPECT_GT(total, 0.0);
+  }
 
   const auto mesh = mesh::readExodus((dir / "static.exo").string());
   const auto results = mesh::readExodusResults((dir / "static.exo").string());
@@ -107,6 +130,72 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
   // No temporary files left behind.
   for (const auto& entry : fs::directory_iterator(dir))
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+// Reduced models: built once, reused while the inputs match, rebuilt when one changes.
+TEST(Scenes, ReducedModelsAreReusedWhileTheirInputsMatch) {
+  log::setQuiet(true);
+  const auto dir = freshDir("rom_cache");
+  auto scene = [](int modes, const std::string& nds) {
+    return "cyclone:\n"
+           "  analysis: reduced_model\n"
+           "  mesh:\n"
+           "    source: shrouded_sector\n"
+           "    shrouded_sector:\n"
+           "      sectors: 8\n"
+           "      bore_radius: 70.0\n"
+           "      mesh_size: 14.0\n"
+           "  constraints:\n"
+           "    fixed_node_sets: [bore]\n"
+           "  loads:\n"
+           "    speed_rpm: 10000.0\n"
+           "  reduced_model:\n"
+           "    prestress: linear\n"
+           "    modes: " + std::to_string(modes) + "\n"
+           "    nodal_diameters: " + nds + "\n";
+  };
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  auto line = [](const scenes::SceneSummary& s) {
+    for (const auto& l : s.computed)
+      if (l.rfind("reduced models", 0) == 0) return l;
+    return std::string();
+  };
+  const auto first = scenes::runSceneText(scene(6, "[2]"), "rom.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_NE(line(first).find("1 built, 0 reused"), std::string::npos) << line(first);
+  const auto second = scenes::runSceneText(scene(6, "[2]"), "rom.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_NE(line(second).find("0 built, 1 reused"), std::string::npos) << line(second);
+  const auto third = scenes::runSceneText(scene(7, "[2]"), "rom.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_NE(line(third).find("1 built, 0 reused"), std::string::npos) << line(third);
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir / "reduced_models")) files += e.path().extension() == ".h5";
+  EXPECT_EQ(files, 2);
+  // A nodal diameter outside 0..N/2 is named.
+  const auto msg = failure(scene(6, "[5]"), dir);
+  EXPECT_NE(msg.find("5"), std::string::npos) << msg;
+}
+
+TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_eo");
+  auto scene = [](int eo) {
+    return "cyclone:\n"
+           "  analysis: disc_response\n"
+           "  mesh:\n"
+           "    source: shrouded_sector\n"
+           "    shrouded_sector:\n"
+           "      sectors: 8\n"
+           "      bore_radius: 70.0\n"
+           "      mesh_size: 14.0\n"
+           "  constraints:\n"
+           "    fixed_node_sets: [bore]\n"
+           "  disc_response:\n"
+           "    engine_order: " + std::to_string(eo) + "\n";
+  };
+  EXPECT_NE(failure(scene(0), dir).find("no travelling excitation"), std::string::npos);
+  const auto folded = failure(scene(11), dir);
+  EXPECT_NE(folded.find("exactly as engine order 3"), std::string::npos) << folded;
+  EXPECT_NE(failure(scene(8), dir).find("folds to 0"), std::string::npos);
 }
 
 TEST(Scenes, UnknownKeyIsNamedWithItsPath) {
