@@ -132,21 +132,26 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+// A small 8-sector disc (thin ring) with the bore held.
+std::string discScene(const std::string& analysis) {
+  return "cyclone:\n"
+         "  analysis: " + analysis + "\n"
+         "  mesh:\n"
+         "    source: shrouded_sector\n"
+         "    shrouded_sector:\n"
+         "      sectors: 8\n"
+         "      bore_radius: 70.0\n"
+         "      mesh_size: 14.0\n"
+         "  constraints:\n"
+         "    fixed_node_sets: [bore]\n";
+}
+
 // Reduced models: built once, reused while the inputs match, rebuilt when one changes.
 TEST(Scenes, ReducedModelsAreReusedWhileTheirInputsMatch) {
   log::setQuiet(true);
   const auto dir = freshDir("rom_cache");
   auto scene = [](int modes, const std::string& nds) {
-    return "cyclone:\n"
-           "  analysis: reduced_model\n"
-           "  mesh:\n"
-           "    source: shrouded_sector\n"
-           "    shrouded_sector:\n"
-           "      sectors: 8\n"
-           "      bore_radius: 70.0\n"
-           "      mesh_size: 14.0\n"
-           "  constraints:\n"
-           "    fixed_node_sets: [bore]\n"
+    return discScene("reduced_model") +
            "  loads:\n"
            "    speed_rpm: 10000.0\n"
            "  reduced_model:\n"
@@ -179,16 +184,7 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   log::setQuiet(true);
   const auto dir = freshDir("disc_eo");
   auto scene = [](int eo) {
-    return "cyclone:\n"
-           "  analysis: disc_response\n"
-           "  mesh:\n"
-           "    source: shrouded_sector\n"
-           "    shrouded_sector:\n"
-           "      sectors: 8\n"
-           "      bore_radius: 70.0\n"
-           "      mesh_size: 14.0\n"
-           "  constraints:\n"
-           "    fixed_node_sets: [bore]\n"
+    return discScene("disc_response") +
            "  disc_response:\n"
            "    engine_order: " + std::to_string(eo) + "\n";
   };
