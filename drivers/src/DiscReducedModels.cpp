@@ -60,17 +60,6 @@ std::vector<double> distinctHz(const rom::RetainedModes& m) {
   return hz;
 }
 
-void writeCheck(const std::string& path, const ReducedModelCheck& c) {
-  AtomicFile file(path);
-  std::ofstream out(file.tempPath());
-  out.precision(12);
-  out << "freq_hz,reduced_abs,full_abs,relative_error\n";
-  for (std::size_t i = 0; i < c.hz.size(); ++i)
-    out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
-  out.close();
-  file.commit();
-}
-
 ReducedModelCheck readCheck(const std::string& path, int nd) {
   ReducedModelCheck c;
   std::ifstream in(path);
@@ -88,6 +77,18 @@ ReducedModelCheck readCheck(const std::string& path, int nd) {
 }
 
 }  // namespace
+
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& c) {
+  AtomicFile file(path);
+  std::ofstream out(file.tempPath());
+  out.precision(12);
+  out << "freq_hz,reduced_abs,full_abs,relative_error\n";
+  for (std::size_t i = 0; i < c.hz.size(); ++i)
+    out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
+  out.close();
+  if (!out) throw Error("cannot write " + path);
+  file.commit();
+}
 
 double ReducedModelCheck::maxError() const {
   double e = 0;
@@ -202,7 +203,7 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
       line << "reduced model check at ND " << k << ": largest relative error " << c.maxError() << " over "
            << spec.checkFrequencies << " frequencies " << lo << ".." << hi << " Hz (" << c.seconds << " s)";
       log::info(line.str());
-      if (cache && comm->getRank() == 0) writeCheck(path + ".check.csv", c);
+      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", c);
     }
     std::ostringstream msg;
     msg << "reduced model ND " << k << " (" << spec.kind << ", " << spec.modes << " natural frequencies, "

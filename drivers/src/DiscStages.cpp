@@ -235,14 +235,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
         plot.addLine(c.hz, c.full, post::SvgPlot::palette(0), "full FE (complex solve)");
         plot.addMarkers(c.hz, c.reduced, post::SvgPlot::palette(1), "reduced model");
         plot.write(outDir + "/rom_check.svg");
-        AtomicFile file(outDir + "/rom_check.csv");
-        std::ofstream csv(file.tempPath());
-        csv.precision(12);
-        csv << "freq_hz,reduced_abs,full_abs,relative_error\n";
-        for (std::size_t i = 0; i < c.hz.size(); ++i)
-          csv << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
-        csv.close();
-        file.commit();
+        writeReducedModelCheckCsv(outDir + "/rom_check.csv", c);
       }
       summary.written.push_back(outDir + "/rom_check.svg");
       summary.written.push_back(outDir + "/rom_check.csv");

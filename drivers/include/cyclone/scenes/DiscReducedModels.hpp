@@ -43,6 +43,9 @@ struct ReducedModelCheck {
   double maxError() const;
 };
 
+/// freq_hz,reduced_abs,full_abs,relative_error (written atomically).
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& check);
+
 struct DiscReducedModels {
   int sectors = 0;
   cyclic::CyclicSector sector;
