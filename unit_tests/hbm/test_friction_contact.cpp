@@ -34,6 +34,21 @@ Eigen::MatrixXd force(const NonlinearElement& e, const Aft& aft, const Eigen::Ma
   return F;
 }
 
+// Largest entry of (analytic - central-difference Jacobian) over the largest of the analytic one.
+double jacobianError(const NonlinearElement& e, const Aft& aft, const Eigen::MatrixXd& W) {
+  const Eigen::Index m = W.size();
+  Eigen::MatrixXd J, fd(m, m);
+  force(e, aft, W, &J);
+  const double h = 1e-7;
+  for (Eigen::Index j = 0; j < m; ++j) {
+    Eigen::MatrixXd Wp = W, Wm = W;
+    Wp.data()[j] += h, Wm.data()[j] -= h;
+    const Eigen::MatrixXd dF = (force(e, aft, Wp) - force(e, aft, Wm)) / (2 * h);
+    fd.col(j) = Eigen::Map<const Eigen::VectorXd>(dF.data(), m);
+  }
+  return (J - fd).cwiseAbs().maxCoeff() / J.cwiseAbs().maxCoeff();
+}
+
 }  // namespace
 
 // Constant normal load (kn = 0): the tangential part is the Jenkins element;
@@ -141,17 +156,7 @@ TEST(FrictionContact, JacobianMatchesFiniteDifferences) {
       for (int i = 0; i < W.size(); ++i) W.data()[i] = 0.4 * u(rng);
       for (int c = 0; c < d; ++c) W(aft.harmonics().cosIndex(1), c) += 1.0;  // slip, separation and stick
       W(aft.harmonics().cosIndex(0), d - 1) = 0.2;
-      Eigen::MatrixXd J;
-      force(contact, aft, W, &J);
-      Eigen::MatrixXd fd(nc * d, nc * d);
-      const double h = 1e-7;
-      for (int j = 0; j < nc * d; ++j) {
-        Eigen::MatrixXd Wp = W, Wm = W;
-        Wp.data()[j] += h, Wm.data()[j] -= h;
-        const Eigen::MatrixXd Fp = force(contact, aft, Wp), Fm = force(contact, aft, Wm);
-        fd.col(j) = Eigen::Map<const Eigen::VectorXd>(Eigen::MatrixXd((Fp - Fm) / (2 * h)).data(), nc * d);
-      }
-      const double err = (J - fd).cwiseAbs().maxCoeff() / J.cwiseAbs().maxCoeff();
+      const double err = jacobianError(contact, aft, W);
       std::printf("friction %dD, N0 = %4.1f: Jacobian vs finite differences %.2e\n", dirs + 1, n0, err);
       EXPECT_LT(err, 1e-6);
     }
@@ -205,4 +210,108 @@ TEST(FrictionContact, FrictionlessAndStuckLimits) {
   EXPECT_LT(F0.leftCols(2).norm(), 1e-14);
   const Eigen::MatrixXd Fs = force(FrictionContact(params(2, 3.0, 5.0, 0.5, 1e9)), aft, W);
   EXPECT_LT((Fs.leftCols(2) - 3.0 * W.leftCols(2)).norm(), 1e-12 * Fs.leftCols(2).norm());
+}
+
+// The cyclic reduction assumes a sector's contact force is the time-shifted
+// copy of its neighbour's when the motion is: F(W shifted by s samples) must be
+// F(W) shifted. The periodic state of the march may not depend on where in the
+// period the march begins.
+TEST(FrictionContact, TimeShiftInvariant) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int samples = 256, H = 3;
+  const Aft aft(HarmonicSet::upTo(H), samples);
+  const HarmonicSet& hs = aft.harmonics();
+  auto shifted = [&](const Eigen::MatrixXd& X, int s) {  // x(t + s dt)
+    Eigen::MatrixXd Y = X;
+    for (int h = 1; h <= H; ++h) {
+      const double a = 2 * M_PI * h * s / samples, c = std::cos(a), sn = std::sin(a);
+      for (int col = 0; col < X.cols(); ++col) {
+        const double ch = X(hs.cosIndex(h), col), sh = X(hs.sinIndex(h), col);
+        Y(hs.cosIndex(h), col) = c * ch + sn * sh;
+        Y(hs.sinIndex(h), col) = -sn * ch + c * sh;
+      }
+    }
+    return Y;
+  };
+  double worst = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int dirs = 1 + trial % 2;
+    const FrictionContact contact(params(dirs, 1.0, trial % 3 == 0 ? 0.0 : 1.0, 0.4, 1.0 + 0.5 * u(rng)));
+    Eigen::MatrixXd W(aft.numCoefficients(), dirs + 1);
+    for (int i = 0; i < W.rows(); ++i)
+      for (int c = 0; c <= dirs; ++c) W(i, c) = (i == 0 ? 1.0 : 1.0 / i) * u(rng);
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    for (int s : {1, 37, 96, 200}) {
+      const Eigen::MatrixXd Fs = force(contact, aft, shifted(W, s));
+      const double e = (Fs - shifted(F, s)).norm() / F.norm();
+      worst = std::max(worst, e);
+      EXPECT_LT(e, 1e-10) << "trial " << trial << " dirs " << dirs << " shift " << s;
+    }
+  }
+  std::printf("time-shift invariance: worst relative difference %.2e\n", worst);
+}
+
+// A 3D contact that can stay stuck rests at the stuck state nearest the
+// relaxed slider. Closed forms with constant radius r = mu N0 / kt (kt = 1):
+//  - w_t = (B + a cos t, 0): the disks' intersection nearest 0 is the
+//    projection onto the disk at B + a, the 1D answer: mean f_t1 = r - a;
+//  - w_t = (A cos t, B), B > sqrt(r^2 - A^2): the crossing of the extreme
+//    circles, z = (0, B - sqrt(r^2 - A^2)): mean f_t2 = sqrt(r^2 - A^2).
+// The sampled extremes are exact at 256 samples (t = 0 and pi are samples).
+// The Jacobian of each branch (one and two active disks, with normal motion
+// moving the radii) against central differences.
+TEST(FrictionContact, StuckStateIsNearestTheRelaxedOne) {
+  const double mu = 0.5, n0 = 4.0, r = mu * n0;  // kt = 1
+  const FrictionContact contact(params(2, 1.0, 0.0, mu, n0));
+  const Aft aft(HarmonicSet::upTo(3), 256);
+  const HarmonicSet& hs = aft.harmonics();
+  const int nc = aft.numCoefficients();
+  {
+    const double B = 3.0, a = 0.5;
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+    W(hs.cosIndex(0), 0) = B, W(hs.cosIndex(1), 0) = a;
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    EXPECT_NEAR(F(hs.cosIndex(0), 0), r - a, 1e-12);
+    EXPECT_NEAR(F(hs.cosIndex(0), 1), 0.0, 1e-12);
+    EXPECT_NEAR(F(hs.cosIndex(1), 0), a, 1e-12);  // stuck: the spring's own harmonic
+  }
+  {
+    const double A = 1.2, B = 3.0;
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+    W(hs.cosIndex(1), 0) = A, W(hs.cosIndex(0), 1) = B;
+    const Eigen::MatrixXd F = force(contact, aft, W);
+    EXPECT_NEAR(F(hs.cosIndex(0), 0), 0.0, 1e-12);
+    EXPECT_NEAR(F(hs.cosIndex(0), 1), std::sqrt(r * r - A * A), 1e-12);
+  }
+  const FrictionContact pressing(params(2, 1.0, 2.0, mu, n0));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int active : {1, 2}) {
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+    if (active == 1) W(hs.cosIndex(0), 0) = 3.0, W(hs.cosIndex(1), 0) = 0.5;
+    else W(hs.cosIndex(1), 0) = 1.2, W(hs.cosIndex(0), 1) = 3.0;
+    for (int i = 1; i < nc; ++i)
+      for (int c = 0; c < 3; ++c) W(i, c) += 0.03 * u(rng);  // a general motion near the closed form
+    const double err = jacobianError(pressing, aft, W);
+    std::printf("stuck 3D contact, %d active disk(s): Jacobian vs finite differences %.2e\n", active, err);
+    EXPECT_LT(err, 1e-6);
+  }
+}
+
+// The force samples are the contact law itself: the slip plateau at exactly
+// mu N0, whose harmonics are harmonicForce's; the truncated Fourier series of
+// those harmonics (the base-class default) overshoots the plateau (Gibbs).
+TEST(FrictionContact, ForceSamplesAreTheSampledLaw) {
+  const FrictionContact contact(params(1, 2.0, 0.0, 0.5, 6.0));  // slip force 3
+  const Aft aft(HarmonicSet::upTo(5), 256);
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 2);
+  W(aft.harmonics().cosIndex(1), 0) = 5.0;
+  const Eigen::MatrixXd f = contact.forceSamples(aft, W, 1.0);
+  EXPECT_NEAR(f.col(0).cwiseAbs().maxCoeff(), 3.0, 1e-12);
+  EXPECT_NEAR(f.col(1).minCoeff(), 6.0, 1e-12);
+  const Eigen::MatrixXd F = force(contact, aft, W);
+  EXPECT_LT((aft.toFrequency(Eigen::VectorXd(f.col(0))) - F.col(0)).norm(), 1e-13 * F.norm());
+  const Eigen::MatrixXd smooth = contact.NonlinearElement::forceSamples(aft, W, 1.0);
+  EXPECT_GT(smooth.col(0).cwiseAbs().maxCoeff(), 3.0 + 1e-3);
 }

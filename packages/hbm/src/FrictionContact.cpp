@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "StuckSliderState.hpp"
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::hbm {
@@ -72,15 +73,88 @@ void contactStep(const FrictionContactParameters& p, const Eigen::VectorXd& wt, 
 
 }  // namespace
 
+bool FrictionContact::stuckThroughout(const Aft& aft, const Eigen::MatrixXd& w, Eigen::MatrixXd& f,
+                                      Eigen::MatrixXd* jacobian) const {
+  // 1D: the march itself projects the relaxed slider onto the stuck interval.
+  if (p_.tangentialDirections != 2 || p_.mu == 0) return false;
+  const int N = aft.numSamples(), nc = aft.numCoefficients();
+  const Eigen::VectorXd normal = (p_.preload + p_.kn * w.col(2).array()).matrix();
+  if (normal.minCoeff() <= 0) return false;  // opening resets the slider: the march is unique
+  const Eigen::Matrix2Xd centres = w.leftCols(2).transpose();
+  const Eigen::VectorXd radii = p_.mu / p_.kt * normal;
+  const detail::StuckSliderState stuck = detail::nearestStuckState(centres, radii);
+  if (!stuck.feasible) return false;
+  for (int i = 0; i < N; ++i) {
+    f(i, 0) = p_.kt * (w(i, 0) - stuck.z(0));
+    f(i, 1) = p_.kt * (w(i, 1) - stuck.z(1));
+    f(i, 2) = normal(i);
+  }
+  if (!jacobian) return true;
+  // dz/dvec(W) (2 x 3nc) from the active disks: z = c - r u on one circle, or
+  // the crossing of two, (z - c_a) . (dz - dc_a) = r_a dr_a for each.
+  const Eigen::MatrixXd& E = aft.timeFromCoefficients();
+  const Eigen::MatrixXd& P = aft.coefficientsFromTime();
+  const int m = 3 * nc;
+  auto dCentre = [&](int i) {
+    Eigen::MatrixXd dc = Eigen::MatrixXd::Zero(2, m);
+    dc.block(0, 0, 1, nc) = E.row(i), dc.block(1, nc, 1, nc) = E.row(i);
+    return dc;
+  };
+  auto dRadius = [&](int i) {
+    Eigen::RowVectorXd dr = Eigen::RowVectorXd::Zero(m);
+    dr.segment(2 * nc, nc) = (p_.mu * p_.kn / p_.kt) * E.row(i);
+    return dr;
+  };
+  Eigen::MatrixXd dz = Eigen::MatrixXd::Zero(2, m);
+  if (stuck.active.size() == 1) {
+    const int i = stuck.active[0];
+    const Eigen::Vector2d c = centres.col(i), u = c.normalized();
+    const Eigen::MatrixXd dc = dCentre(i);
+    dz = dc - u * dRadius(i) - (radii(i) / c.norm()) * (Eigen::Matrix2d::Identity() - u * u.transpose()) * dc;
+  } else if (stuck.active.size() == 2) {
+    Eigen::Matrix2d A;
+    Eigen::MatrixXd b(2, m);
+    for (int k = 0; k < 2; ++k) {
+      const int i = stuck.active[k];
+      const Eigen::Vector2d g = stuck.z - centres.col(i);
+      A.row(k) = g.transpose();
+      b.row(k) = radii(i) * dRadius(i) + g.transpose() * dCentre(i);
+    }
+    dz = A.partialPivLu().solve(b);
+  }
+  jacobian->setZero(m, m);
+  for (int c = 0; c < 2; ++c) {  // f_t = kt (w_t - z): P E = I for the w_t part
+    jacobian->block(c * nc, c * nc, nc, nc) = p_.kt * Eigen::MatrixXd::Identity(nc, nc);
+    jacobian->middleRows(c * nc, nc) -= (p_.kt * P.rowwise().sum()) * dz.row(c);
+  }
+  jacobian->block(2 * nc, 2 * nc, nc, nc) = p_.kn * Eigen::MatrixXd::Identity(nc, nc);
+  return true;
+}
+
 void FrictionContact::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double, Eigen::MatrixXd& F,
                                     Eigen::MatrixXd* jacobian) const {
+  Eigen::MatrixXd w, f;
+  sampledForce(aft, W, w, f, jacobian);
+  F.resize(aft.numCoefficients(), dimension());
+  for (int c = 0; c < dimension(); ++c) aft.toFrequency(f.col(c).data(), F.col(c).data());
+}
+
+Eigen::MatrixXd FrictionContact::forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double) const {
+  Eigen::MatrixXd w, f;
+  sampledForce(aft, W, w, f, nullptr);
+  return f;
+}
+
+void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eigen::MatrixXd& w, Eigen::MatrixXd& f,
+                                   Eigen::MatrixXd* jacobian) const {
   const int N = aft.numSamples(), nc = aft.numCoefficients(), d = dimension(), dt = p_.tangentialDirections;
   if (W.rows() != nc || W.cols() != d)
     throw InputError("friction contact", "expected " + std::to_string(nc) + " x " + std::to_string(d) +
                                              " coefficients, got " + std::to_string(W.rows()) + " x " +
                                              std::to_string(W.cols()));
-  Eigen::MatrixXd w(N, d), f(N, d);
+  w.resize(N, d), f.resize(N, d);
   for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
+  if (stuckThroughout(aft, w, f, jacobian)) return;
   const Eigen::MatrixXd& E = aft.timeFromCoefficients();
   const Eigen::MatrixXd& P = aft.coefficientsFromTime();
   const int m = nc * d;  // sensitivities with respect to vec(W)
@@ -118,8 +192,6 @@ void FrictionContact::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, do
     if ((z - start).norm() <= 1e-14 * std::max(scale, 1e-300)) break;
   }
   march(true);
-  F.resize(nc, d);
-  for (int c = 0; c < d; ++c) aft.toFrequency(f.col(c).data(), F.col(c).data());
 }
 
 Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,

@@ -4,6 +4,14 @@
 
 namespace cyclone::hbm {
 
+Eigen::MatrixXd NonlinearElement::forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const {
+  Eigen::MatrixXd F;
+  harmonicForce(aft, W, omega, F, nullptr);
+  Eigen::MatrixXd f(aft.numSamples(), F.cols());
+  for (Eigen::Index c = 0; c < F.cols(); ++c) aft.toTime(F.col(c).data(), f.col(c).data());
+  return f;
+}
+
 std::shared_ptr<const NonlinearElement> NonlinearElement::withParameter(const std::string& name, double) const {
   throw InputError("nonlinear element", "this element has no parameter '" + name + "' to vary");
 }

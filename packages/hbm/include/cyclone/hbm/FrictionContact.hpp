@@ -33,11 +33,14 @@ public:
   int dimension() const override { return p_.tangentialDirections + 1; }
   int recommendedSamples() const override { return 256; }
   /// Marches the slider over the samples from the relaxed state (z = 0) until
-  /// the state at the end of a period repeats, then records one more period,
-  /// so the result (and its mean) is unique; the Jacobian differentiates that
-  /// march exactly.
+  /// the state at the end of a period repeats, then records one more period;
+  /// a 3D contact that can stay stuck all period rests at the stuck state
+  /// nearest the relaxed one. Either way the result (and its mean) is unique
+  /// and a time shift of the motion shifts the force. The Jacobian is exact.
   void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                      Eigen::MatrixXd* jacobian) const override;
+  /// The sampled contact law itself (stick, slip and lift-off corners intact).
+  Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const override;
   int stateSize() const override { return p_.tangentialDirections; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
@@ -45,6 +48,16 @@ public:
   std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 
 private:
+  // Samples w (N x d) of the motion W, then the force samples f (N x d) and, if
+  // asked, dvec(F)/dvec(W).
+  void sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eigen::MatrixXd& w, Eigen::MatrixXd& f,
+                    Eigen::MatrixXd* jacobian) const;
+  // 3D contact that never opens and can stay stuck over the whole period: the
+  // slider rests at the stuck state nearest the relaxed one (StuckSliderState),
+  // not wherever a march that began at sample 0 happened to stop. Fills the
+  // samples f (and the Jacobian) and returns true in that case.
+  bool stuckThroughout(const Aft& aft, const Eigen::MatrixXd& w, Eigen::MatrixXd& f, Eigen::MatrixXd* jacobian) const;
+
   FrictionContactParameters p_;
 };
 

@@ -34,6 +34,11 @@ public:
   virtual void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                              Eigen::MatrixXd* jacobian) const = 0;
 
+  /// The force at the Aft's time samples (numSamples x d) for the motion W:
+  /// the time signal whose harmonics harmonicForce returns, before that
+  /// projection (hysteresis loops, contact states). By default the samples of
+  /// those harmonics; elements with nonsmooth laws give their own samples.
+  virtual Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const;
   /// Size of the internal state carried from step to step by `incremental`.
   virtual int stateSize() const { return 0; }
   /// The state the element starts from (the relaxed element): zeros by default.
