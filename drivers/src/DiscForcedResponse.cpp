@@ -7,6 +7,8 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/ScalarElementAdapter.hpp"
+#include "cyclone/hbm/UnilateralSpring.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 #include "cyclone/mesh/Mesh.hpp"
@@ -107,6 +109,22 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   } catch (const InputError& e) {
     throw InputError("contact", e.what());
   }
+  std::vector<bool> isGap(left.size(), false);
+  std::shared_ptr<const hbm::NonlinearElement> gapElement;
+  if (!spec.gap.pairs.empty()) {
+    for (int i : spec.gap.pairs) {
+      if (i < 0 || i >= int(left.size()))
+        throw InputError("gap/pairs", "pair " + std::to_string(i) + " is not one of the " +
+                                          std::to_string(left.size()) + " contact pairs (0-based)");
+      if (isGap[std::size_t(i)]) throw InputError("gap/pairs", "pair " + std::to_string(i) + " is listed twice");
+      isGap[std::size_t(i)] = true;
+    }
+    if (!(std::isfinite(spec.gap.kn) && spec.gap.kn > 0))
+      throw InputError("gap/kn", "must be a positive stiffness (N/mm), got " + std::to_string(spec.gap.kn));
+    if (!std::isfinite(spec.gap.clearance)) throw InputError("gap/clearance", "must be finite");
+    gapElement = std::make_shared<hbm::ScalarElementAdapter>(
+        std::make_shared<hbm::UnilateralSpring>(spec.gap.kn, spec.gap.clearance));
+  }
   const int samples = spec.samples > 0 ? spec.samples
                                        : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
 
@@ -128,11 +146,13 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   for (std::size_t i = 0; i < left.size(); ++i) {
     const int r = retainedIndex(models, right[i], spec.contact.rightSet);
     const int l = retainedIndex(models, left[i], spec.contact.leftSet);
-    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, 3), Wnext = Eigen::MatrixXd::Zero(n, 3);
-    W.middleRows(3 * r, 3) = -E;                    // - this sector's right node
-    Wnext.middleRows(3 * l, 3) = Q.transpose() * E;  // + the next sector's left node, rotated into this frame
-    hb.addElement(element, W, Wnext);
-    setup.elementNames.push_back("contact");
+    const int d = isGap[i] ? 1 : 3;  // a gap acts on the normal (the frame's last column) only
+    const Eigen::MatrixXd Ei = E.rightCols(d);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
+    W.middleRows(3 * r, 3) = -Ei;                    // - this sector's right node
+    Wnext.middleRows(3 * l, 3) = Q.transpose() * Ei;  // + the next sector's left node, rotated into this frame
+    hb.addElement(isGap[i] ? gapElement : element, W, Wnext);
+    setup.elementNames.push_back(isGap[i] ? "gap" : "contact");
   }
   // Excitation on harmonic 1 (cos), travelling with the engine order.
   const Eigen::Vector3d d = spec.excitation.direction.normalized();

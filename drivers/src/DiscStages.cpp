@@ -101,6 +101,14 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   if (c.has("normal")) ct.normal = toEigen(c.getVector3("normal", {0, 0, 0}));
   if (c.has("tangent")) ct.tangent = toEigen(c.getVector3("tangent", {0, 0, 0}));
   c.rejectUnknownKeys();
+  if (d.has("gap")) {
+    auto g = d.section("gap");
+    spec.gap.pairs = g.getIntList("pairs", {});
+    if (spec.gap.pairs.empty()) throw InputError(g.where("pairs"), "needs the contact pairs that are gap elements");
+    spec.gap.kn = g.getDouble("kn", spec.gap.kn);
+    spec.gap.clearance = g.getDouble("clearance", spec.gap.clearance);
+    g.rejectUnknownKeys();
+  }
   auto e = d.section("excitation");
   spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
   spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));
@@ -147,42 +155,140 @@ std::string shortNumber(double v) {
   return s.str();
 }
 
+// The largest response of a curve: its point and the relative motion W and
+// force F (coefficients) of every contact there.
+struct PeakContactStates {
+  double omega = 0;
+  Eigen::MatrixXd X;                            // nc x dofs
+  std::vector<Eigen::MatrixXd> W, F;            // per element: nc x d
+};
+
+PeakContactStates peakContactStates(ForcedResponseSetup& setup, const ForcedResponseResult& result) {
+  const auto& hb = *setup.system;
+  const int nc = hb.numCoefficients();
+  const auto& pts = result.branch.points;
+  const auto& pt = *std::max_element(pts.begin(), pts.end(), [](const auto& a, const auto& b) {
+    return a.x.norm() < b.x.norm();
+  });
+  PeakContactStates out;
+  out.omega = setup.apply(pt.parameter).first;
+  out.X = Eigen::Map<const Eigen::MatrixXd>(pt.x.data(), nc, hb.numDofs());
+  for (const auto& c : hb.elements()) {
+    Eigen::MatrixXd W = out.X * c.W;
+    if (c.Wnext.size() != 0) W += hb.nextSectorMap() * (out.X * c.Wnext);
+    Eigen::MatrixXd F;
+    c.element->harmonicForce(hb.aft(), W, out.omega, F, nullptr);
+    out.W.push_back(W), out.F.push_back(F);
+  }
+  return out;
+}
+
 // Per contact at the largest response: the energy friction dissipates per cycle,
 // E = sum_h pi h (F_ch . W_sh - F_sh . W_ch) from the coefficients of the relative
-// motion w and of the contact force f (exact for the harmonics kept), and the mean normal force.
-void writeContactEnergies(ForcedResponseSetup& setup, const ForcedResponseResult& result, const std::string& path) {
-  const auto& hb = *setup.system;
-  const auto& H = hb.aft().harmonics();
-  const int nc = hb.numCoefficients();
-  const auto& pt = result.branch.points[std::size_t(std::max_element(result.branch.points.begin(), result.branch.points.end(),
-                                                                     [&](const auto& a, const auto& b) {
-                                                                       return a.x.norm() < b.x.norm();
-                                                                     }) -
-                                                    result.branch.points.begin())];
-  const double omega = setup.apply(pt.parameter).first;
-  const Eigen::Map<const Eigen::MatrixXd> Xm(pt.x.data(), nc, hb.numDofs());
+// motion w and of the contact force f (exact for the harmonics kept), and the
+// mean normal force. Returns the energies.
+std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const PeakContactStates& peak,
+                                         const std::string& path) {
   AtomicFile file(path);
   std::ofstream csv(file.tempPath());
   csv.precision(10);
   csv << "contact,freq_hz,dissipated_energy_per_cycle,mean_normal_force,slip_amplitude\n";
-  Eigen::MatrixXd F;
-  for (std::size_t e = 0; e < hb.elements().size(); ++e) {
-    const auto& c = hb.elements()[e];
-    Eigen::MatrixXd W = Xm * c.W;
-    if (c.Wnext.size() != 0) W += hb.nextSectorMap() * (Xm * c.Wnext);
-    c.element->harmonicForce(hb.aft(), W, omega, F, nullptr);
+  std::vector<double> energies;
+  for (std::size_t e = 0; e < peak.W.size(); ++e) {
+    const Eigen::MatrixXd &W = peak.W[e], &F = peak.F[e];
     double energy = 0, slip = 0;
     for (int h : H.harmonics()) {
       if (h == 0) continue;
       const int ic = H.cosIndex(h), is = H.sinIndex(h);
       for (int k = 0; k < W.cols(); ++k) energy += M_PI * h * (F(ic, k) * W(is, k) - F(is, k) * W(ic, k));
-      if (h == 1) slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
+      if (h == 1 && W.cols() == 3) slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
     }
     const double normal = H.contains(0) ? F(H.cosIndex(0), W.cols() - 1) : 0.0;
-    csv << e << "," << omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
+    csv << e << "," << peak.omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
+    energies.push_back(energy);
   }
   csv.close();
   file.commit();
+  return energies;
+}
+
+// Contact hysteresis loops at the largest response: the sampled contact law
+// (not its truncated Fourier series, whose Gibbs ripples would blur the stick and
+// slip corners) against the relative motion over one period, for the chosen
+// contacts; and the response DOFs over that period.
+void writePeakTimeResponse(ForcedResponseSetup& setup, const PeakContactStates& peak, const std::vector<int>& contacts,
+                           const std::string& outDir, SceneSummary& summary) {
+  const auto& hb = *setup.system;
+  const auto& aft = hb.aft();
+  const int N = aft.numSamples();
+  const double hz = peak.omega / (2 * M_PI);
+  std::vector<double> phase(std::size_t(N) + 1);
+  for (int i = 0; i <= N; ++i) phase[std::size_t(i)] = double(i) / N;
+  const char* tangential[] = {"t1", "t2"};
+  {
+    AtomicFile file(outDir + "/disc_hysteresis.csv");
+    std::ofstream csv(file.tempPath());
+    csv.precision(10);
+    csv << "contact,freq_hz,t_over_T,slip_t1,slip_t2,approach,force_t1,force_t2,force_n\n";
+    std::ostringstream title;
+    title << "Contact hysteresis at the largest response (" << hz << " Hz)";
+    // About each direction's mean: the static part differs between directions
+    // and would push the loops apart.
+    post::SvgPlot plot(title.str(), "relative tangential displacement about its mean (mm)",
+                       "tangential contact force (N)");
+    int line = 0;
+    for (int e : contacts) {
+      const Eigen::MatrixXd& W = peak.W[std::size_t(e)];
+      const int d = int(W.cols());
+      Eigen::MatrixXd w(N, d);
+      for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
+      const Eigen::MatrixXd f = hb.elements()[std::size_t(e)].element->forceSamples(aft, W, peak.omega);
+      for (int i = 0; i < N; ++i) {
+        // Tangential columns: d - 1 of them (none for a gap element).
+        auto t = [&](const Eigen::MatrixXd& m, int c) { return c < d - 1 ? m(i, c) : 0.0; };
+        csv << e << "," << hz << "," << phase[std::size_t(i)] << "," << t(w, 0) << "," << t(w, 1) << ","
+            << w(i, d - 1) << "," << t(f, 0) << "," << t(f, 1) << "," << f(i, d - 1) << "\n";
+      }
+      for (int c = 0; c + 1 < d; ++c) {  // closed loops: the first sample repeated at the end
+        std::vector<double> x(std::size_t(N) + 1), y(std::size_t(N) + 1);
+        const double mean = w.col(c).mean();
+        for (int i = 0; i <= N; ++i) x[std::size_t(i)] = w(i % N, c) - mean, y[std::size_t(i)] = f(i % N, c);
+        plot.addLine(x, y, post::SvgPlot::palette(line++),
+                     "contact " + std::to_string(e) + ", " + tangential[c]);
+      }
+    }
+    csv.close();
+    file.commit();
+    plot.write(outDir + "/disc_hysteresis.svg");
+  }
+  {
+    AtomicFile file(outDir + "/disc_time_response.csv");
+    std::ofstream csv(file.tempPath());
+    csv.precision(10);
+    csv << "freq_hz,t_over_T";
+    for (int dof : setup.outputDofs) csv << "," << setup.dofNames[std::size_t(dof)];
+    csv << "\n";
+    std::ostringstream title;
+    title << "Response over one period at the largest response (" << hz << " Hz)";
+    post::SvgPlot plot(title.str(), "t / T", "displacement (mm)");
+    Eigen::MatrixXd x(N, setup.outputDofs.size());
+    for (std::size_t k = 0; k < setup.outputDofs.size(); ++k) {
+      aft.toTime(peak.X.col(setup.outputDofs[k]).data(), x.col(Eigen::Index(k)).data());
+      std::vector<double> y(std::size_t(N) + 1);
+      for (int i = 0; i <= N; ++i) y[std::size_t(i)] = x(i % N, Eigen::Index(k));
+      plot.addLine(phase, y, post::SvgPlot::palette(int(k)), setup.dofNames[std::size_t(setup.outputDofs[k])]);
+    }
+    for (int i = 0; i < N; ++i) {
+      csv << hz << "," << phase[std::size_t(i)];
+      for (Eigen::Index k = 0; k < x.cols(); ++k) csv << "," << x(i, k);
+      csv << "\n";
+    }
+    csv.close();
+    file.commit();
+    plot.write(outDir + "/disc_time_response.svg");
+  }
+  for (const char* f : {"disc_hysteresis.csv", "disc_hysteresis.svg", "disc_time_response.csv", "disc_time_response.svg"})
+    summary.written.push_back(outDir + "/" + f);
 }
 
 }  // namespace
@@ -261,6 +367,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   const auto range = d.getDoubleList("frequency_range_hz", {});
   if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
     throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
+  const std::vector<int> hysteresisContacts = d.getIntList("hysteresis_contacts", {});
   auto cs = d.section("continuation");
   continuation::ContinuationOptions opt;
   opt.initialStep = cs.getDouble("initial_step", 0.002);
@@ -273,6 +380,12 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
 
   // The reference system: the range from its resonance estimate unless given.
   auto setup = makeDiscForcedResponse(mesh, models, spec);
+  const int contactCount = int(setup.system->elements().size());
+  for (int e : hysteresisContacts)
+    if (e < 0 || e >= contactCount)
+      throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
+                                                           std::to_string(contactCount) +
+                                                           " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
   const auto estimate = estimateResonance(setup, models, family);
   double fromHz = 0, toHz = 0;
   if (range.empty()) {
@@ -315,13 +428,21 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                             responseTimer.seconds(),
                             "Newton tolerance " + shortNumber(opt.tolerance) +
                                 " (residual relative to the forces); " + reference.samplesCheck});
-  if (!reference.branch.points.empty() && comm->getRank() == 0)
-    writeContactEnergies(setup, reference, outDir + "/disc_frc_contacts.csv");
+  if (!reference.branch.points.empty() && comm->getRank() == 0) {
+    const PeakContactStates peak = peakContactStates(setup, reference);
+    const auto energies =
+        writeContactEnergies(setup.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
+    summary.written.push_back(outDir + "/disc_frc_contacts.csv");
+    // Default: the contact that dissipates most at the peak.
+    std::vector<int> loops = hysteresisContacts;
+    if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
+    writePeakTimeResponse(setup, peak, loops, outDir, summary);
+  }
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.
   auto studies = d.section("studies");
   const std::vector<std::string> known{"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics",
-                                       "modes"};
+                                       "modes", "clearance"};
   Timer studiesTimer;
   int studyCurves = 0;
   for (const auto& name : known) {
@@ -342,6 +463,11 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       else if (name == "mu") sv.contact.mu = v;
       else if (name == "contact_stiffness") sv.contact.kn = v, sv.contact.kt = v;
       else if (name == "force") sv.excitation.amplitude = spec.excitation.amplitude * v;
+      else if (name == "clearance") {
+        if (spec.gap.pairs.empty())
+          throw InputError(studies.where(name), "needs gap elements (disc_response/gap/pairs)");
+        sv.gap.clearance = v;
+      }
       else if (name == "harmonics") {
         sv.harmonics.clear();
         for (int h = 0; h <= int(v); ++h) sv.harmonics.push_back(h);

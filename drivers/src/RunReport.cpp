@@ -76,6 +76,14 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
         r << "Contacts at the peak (`" << frc << "_contacts.csv`):\n\n"
           << csvTable(outDir + "/" + frc + "_contacts.csv", 60) << "\n";
     }
+  if (exists(outDir, "disc_hysteresis.svg"))
+    r << "### Time domain at the peak\n\nTangential contact force against relative tangential displacement over one "
+         "period, from the sampled contact law (`disc_hysteresis.csv`; the loop's area is the energy per cycle; "
+         "`disc_response/hysteresis_contacts` chooses the contacts, default the one dissipating most):\n\n"
+         "![hysteresis loops](disc_hysteresis.svg)\n\n";
+  if (exists(outDir, "disc_time_response.svg"))
+    r << "The response DOFs over one period (`disc_time_response.csv`):\n\n"
+         "![time response](disc_time_response.svg)\n\n";
   bool studies = false;
   for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
     const auto name = entry.path().filename().string();

@@ -4,6 +4,8 @@
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
@@ -88,7 +90,8 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
   for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
   for (const char* f : {"mesh.exo", "mesh.inp", "static.exo", "frequencies.csv", "modes_10000rpm.exo",
                         "campbell.svg", "safe.svg", "resonances.csv", "rom_check.svg", "disc_frc.csv",
-                        "disc_frc_contacts.csv", "study_preload.svg", "study_preload.csv", "report.md"})
+                        "disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
+                        "disc_time_response.svg", "study_preload.svg", "study_preload.csv", "report.md"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   {
     std::ifstream report(dir / "report.md");
@@ -99,6 +102,7 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
       EXPECT_NE(text.find(section), std::string::npos) << section;
   }
   // Friction dissipates: every contact's energy per cycle at the peak is >= 0, some > 0.
+  std::map<int, double> energies;
   {
     std::ifstream csv(dir / "disc_frc_contacts.csv");
     std::string line;
@@ -106,11 +110,41 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     double total = 0;
     while (std::getline(csv, line)) {
       double e = 0;
-      ASSERT_EQ(std::sscanf(line.c_str(), "%*d,%*f,%lf", &e), 1) << line;
+      int contact = -1;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%d,%*f,%lf", &contact, &e), 2) << line;
       EXPECT_GE(e, -1e-12) << line;
-      total += e;
+      total += e, energies[contact] = e;
     }
     EXPECT_GT(total, 0.0);
+  }
+  // The hysteresis loop of the contact dissipating most (the default choice):
+  // every sample obeys Coulomb's law |f_t| <= mu f_n (mu = 0.4 in the demo),
+  // and the loop's area (trapezoidal rule over the samples) is the energy per
+  // cycle that the contacts CSV computed from the harmonics.
+  {
+    std::ifstream csv(dir / "disc_hysteresis.csv");
+    std::string line;
+    std::getline(csv, line);
+    std::vector<std::array<double, 6>> s;
+    int contact = -1;
+    while (std::getline(csv, line)) {
+      std::array<double, 6> v{};
+      ASSERT_EQ(std::sscanf(line.c_str(), "%d,%*f,%*f,%lf,%lf,%*f,%lf,%lf,%lf", &contact, &v[0], &v[1], &v[2], &v[3],
+                            &v[4]), 6) << line;
+      s.push_back(v);
+    }
+    ASSERT_GE(s.size(), 64u);
+    double area = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const auto &a = s[i], &b = s[(i + 1) % s.size()];
+      EXPECT_LE(std::hypot(a[2], a[3]), 0.4 * a[4] * (1 + 1e-9) + 1e-12) << "sample " << i;
+      area += 0.5 * (a[2] + b[2]) * (b[0] - a[0]) + 0.5 * (a[3] + b[3]) * (b[1] - a[1]);
+    }
+    double largest = 0;
+    for (const auto& [c, e] : energies) largest = std::max(largest, e);
+    EXPECT_EQ(energies.at(contact), largest);
+    std::printf("hysteresis loop of contact %d: area %.6e, energy from the harmonics %.6e\n", contact, area, largest);
+    EXPECT_NEAR(area, largest, 0.02 * largest);
   }
 
   const auto mesh = mesh::readExodus((dir / "static.exo").string());
@@ -144,6 +178,24 @@ std::string discScene(const std::string& analysis) {
          "      mesh_size: 14.0\n"
          "  constraints:\n"
          "    fixed_node_sets: [bore]\n";
+}
+
+// The forced response of that disc at 10 000 rpm, EO 3, harmonic 1, 5 N preload, 20 N;
+// a test appends keys of disc_response.
+std::string discResponseScene() {
+  return discScene("disc_response") +
+         "  loads:\n"
+         "    speed_rpm: 10000.0\n"
+         "  reduced_model:\n"
+         "    prestress: linear\n"
+         "    check_frequencies: 0\n"
+         "  disc_response:\n"
+         "    engine_order: 3\n"
+         "    harmonics: 1\n"
+         "    contact:\n"
+         "      preload: 5.0\n"
+         "    excitation:\n"
+         "      amplitude: 20.0\n";
 }
 
 // Reduced models: built once, reused while the inputs match, rebuilt when one changes.
@@ -199,19 +251,7 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
 TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
   log::setQuiet(true);
   const auto dir = freshDir("disc_studies");
-  const std::string yaml = discScene("disc_response") +
-                           "  loads:\n"
-                           "    speed_rpm: 10000.0\n"
-                           "  reduced_model:\n"
-                           "    prestress: linear\n"
-                           "    check_frequencies: 0\n"
-                           "  disc_response:\n"
-                           "    engine_order: 3\n"
-                           "    harmonics: 1\n"
-                           "    contact:\n"
-                           "      preload: 5.0\n"
-                           "    excitation:\n"
-                           "      amplitude: 20.0\n"
+  const std::string yaml = discResponseScene() +
                            "    studies:\n"
                            "      loss_factor: [0.012]\n"
                            "      force: [2.0]\n"
@@ -256,6 +296,57 @@ TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
   // Fewer modes: no bound from theory on a friction curve (7 % here on this thin test disc); the
   // study must run and give a finite peak.
   EXPECT_TRUE(std::isfinite(fewer) && fewer > 0);
+}
+
+// Gap elements at a shroud pair (seed 8.6): interference stiffens the disc, so
+// the study's peak moves up from clearance to interference; the hysteresis
+// output names a gap's tangential columns as zero. Bad gap input is named.
+TEST(Scenes, DiscGapClearanceStudyStiffensWithInterference) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_gap");
+  auto scene = [](const std::string& pairs) {
+    return discResponseScene() +
+           "    gap:\n"
+           "      pairs: " + pairs + "\n"
+           "      kn: 1.0e4\n"
+           "      clearance: 0.0\n"
+           "    hysteresis_contacts: [0, 1]\n"
+           "    studies:\n"
+           "      clearance: [0.01, -0.01]\n";
+  };
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  scenes::runSceneText(scene("[0]"), "gap.yaml", o, Tpetra::getDefaultComm());
+  std::ifstream csv(dir / "study_clearance.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<double> hz;
+  while (std::getline(csv, line)) {
+    double value, f;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf", &value, &f), 2) << line;
+    hz.push_back(f);
+  }
+  ASSERT_EQ(hz.size(), 2u);
+  std::printf("gap at pair 0: peak at %.3f Hz with 0.01 mm clearance, %.3f Hz with 0.01 mm interference\n", hz[0],
+              hz[1]);
+  EXPECT_GT(hz[1], hz[0]);
+  {  // pair 0 is the gap: no tangential motion or force in its rows
+    std::ifstream loops(dir / "disc_hysteresis.csv");
+    std::getline(loops, line);
+    int gapRows = 0;
+    while (std::getline(loops, line)) {
+      int contact = -1;
+      double slip1, slip2, f1, f2;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%d,%*f,%*f,%lf,%lf,%*f,%lf,%lf", &contact, &slip1, &slip2, &f1, &f2), 5);
+      if (contact != 0) continue;
+      ++gapRows;
+      EXPECT_EQ(std::abs(slip1) + std::abs(slip2) + std::abs(f1) + std::abs(f2), 0.0) << line;
+    }
+    EXPECT_GT(gapRows, 0);
+  }
+  const auto msg = failure(scene("[100000]"), dir);
+  EXPECT_NE(msg.find("gap/pairs"), std::string::npos) << msg;
+  EXPECT_NE(failure(scene("[0, 0]"), dir).find("twice"), std::string::npos);
 }
 
 TEST(Scenes, UnknownKeyIsNamedWithItsPath) {

@@ -11,7 +11,10 @@
 //    first family of the fixed-shroud cyclic modal analysis (another code path:
 //    the cyclic constraint on the side faces, Anasazi on the full sector);
 //  - in between, friction damps: the curve's peak lies below the stuck limit's
-//    peak and between the two limits' resonances, and moves up with the preload.
+//    peak and between the two limits' resonances, and moves up with the preload;
+//  - gap elements (seed 8.6) at the outermost pairs: with an interference larger
+//    than the motion they are linear normal springs, with a clearance larger
+//    than it they are absent; the same linear formula gives both references.
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
@@ -97,9 +100,12 @@ LinearLimits linearLimits(const mesh::Mesh& mesh, const DiscReducedModels& model
     T.block(3 * long(i), 3 * index(right[i]), 3, 3) -= E.transpose().cast<std::complex<double>>();
     T.block(3 * long(i), 3 * index(left[i]), 3, 3) += next * (E.transpose() * Q).cast<std::complex<double>>();
   }
+  // A gap pair's linear limit: its normal spring when it never opens (an
+  // interference larger than the motion), nothing when it never closes.
   Eigen::VectorXcd k(3 * long(left.size()));
   for (std::size_t i = 0; i < left.size(); ++i)
     k.segment(3 * long(i), 3) << spec.contact.kt, spec.contact.kt, spec.contact.kn;
+  for (int i : spec.gap.pairs) k.segment(3 * long(i), 3) << 0.0, 0.0, spec.gap.clearance < 0 ? spec.gap.kn : 0.0;
   LinearLimits out;
   out.free = A * F;
   const Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(n, n) + A * T.adjoint() * k.asDiagonal() * T;
@@ -218,4 +224,40 @@ TEST(DiscFriction, StiffStuckContactsTieTheShroud) {
               "(%.1f s)\n",
               estimate.nodalDiameter, estimate.stuckHz, nearest, rel, t.seconds());
   EXPECT_LT(rel, 1e-3);
+}
+
+// Gap elements in place of the friction contacts at the first and last pairs
+// (the seed's modified shroud, 8.6), the other contacts stuck: an interference
+// of 1 mm (never opens) and a clearance of 1 mm (never closes) against their
+// linear references; the two must differ, or the gaps would not be there.
+// Harmonic 1 alone: with the static part on, the stuck contacts' 1e5 N preloads
+// deform the shroud statically, the gaps' mean approach is no longer the
+// interference, and the 1 mm case is no longer linear (1e-2 and 0.35 off).
+TEST(DiscFriction, GapElementsBetweenTheirLimits) {
+  Timer total;
+  Disc disc(10000.0, {1});
+  auto spec = responseSpec({1}, 1e5, 1e4, 1e4);
+  const int pairs = int(disc.mesh.nodeSet(spec.contact.leftSet).size());
+  spec.gap.pairs = {0, pairs - 1};
+  spec.gap.kn = 1e4;
+  Eigen::VectorXcd closedResponse, openResponse;
+  for (double clearance : {-1.0, 1.0}) {
+    spec.gap.clearance = clearance;
+    auto setup = makeDiscForcedResponse(disc.mesh, disc.models, spec, 1.0);
+    const auto estimate = estimateResonance(setup, disc.models);
+    for (double f : {0.7 * estimate.stuckHz, 0.99 * estimate.stuckHz}) {
+      Timer t;
+      const double w = 2 * M_PI * f;
+      const Eigen::VectorXcd x = harmonicOne(*setup.system, solveAt(setup, w));
+      const auto ref = linearLimits(disc.mesh, disc.models, spec, w);
+      const double err = (x - ref.stuck).norm() / ref.stuck.norm();
+      std::printf("gaps at pairs 0 and %d, clearance %+.1f mm, %.1f Hz: harmonic balance vs linear limit %.2e (%.2f s)\n",
+                  pairs - 1, clearance, f, err, t.seconds());
+      EXPECT_LT(err, 1e-7);
+      if (f == 0.7 * estimate.stuckHz) (clearance < 0 ? closedResponse : openResponse) = x;
+    }
+  }
+  const double apart = (closedResponse - openResponse).norm() / closedResponse.norm();
+  std::printf("closed and open gaps differ by %.2e; %.1f s\n", apart, total.seconds());
+  EXPECT_GT(apart, 1e-4);
 }

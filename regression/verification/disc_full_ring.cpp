@@ -163,27 +163,17 @@ Eigen::MatrixXd relative(const Eigen::VectorXd& X, int nc, const Pair& p) {
   return U * p.E;  // column c: coordinate c
 }
 
-/// Marches a contact through its settled period: the fractions of samples slipping
-/// (|f_t| at mu N with N > 0) and open (N <= 0).
+/// The fractions of the period a contact slips (|f_t| at mu N with N > 0) and is
+/// open (N <= 0), from the element's own force samples.
 std::pair<double, double> slipAndOpen(const hbm::FrictionContact& e, const hbm::Aft& aft, const Eigen::MatrixXd& Wc) {
   const int ns = aft.numSamples();
-  Eigen::MatrixXd w(ns, 3);
-  for (int c = 0; c < 3; ++c) w.col(c) = aft.toTime(Eigen::VectorXd(Wc.col(c)));
-  Eigen::VectorXd z = e.initialState();
-  Eigen::MatrixXd dfdw, dfdwdot;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3);
-  for (int period = 0; period < 50; ++period) {
-    const Eigen::VectorXd start = z;
-    for (int i = 0; i < ns; ++i) e.incremental(w.row(i).transpose(), zero, z, dfdw, dfdwdot);
-    if ((z - start).norm() <= 1e-14 * (w.norm() + 1e-300)) break;
-  }
-  int slip = 0, open = 0;
+  const Eigen::MatrixXd f = e.forceSamples(aft, Wc, 0.0);
   const auto& p = e.parameters();
+  int slip = 0, open = 0;
   for (int i = 0; i < ns; ++i) {
-    const Eigen::VectorXd f = e.incremental(w.row(i).transpose(), zero, z, dfdw, dfdwdot);
-    const double normal = p.preload + p.kn * w(i, 2);
+    const double normal = f(i, 2);
     if (normal <= 0) ++open;
-    else if (f.head(2).norm() >= (1 - 1e-9) * p.mu * normal) ++slip;
+    else if (f.row(i).head(2).norm() >= (1 - 1e-9) * p.mu * normal) ++slip;
   }
   return {double(slip) / ns, double(open) / ns};
 }

@@ -25,6 +25,15 @@ struct ShroudContactSpec {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(), tangent = Eigen::Vector3d::Zero();
 };
 
+/// Gap elements (seed 8.6) in place of friction contacts at some pairs: the
+/// normal direction only, f = kn max(w_n - clearance, 0) with w_n the normal
+/// approach; clearance > 0 is a gap that must close, < 0 an interference.
+struct ShroudGapSpec {
+  std::vector<int> pairs;  ///< contact pairs (0-based, in the contact node sets' order)
+  double kn = 1e4;         ///< N/mm
+  double clearance = 0;    ///< mm
+};
+
 struct DiscExcitationSpec {
   std::string nodeSet = "mid_blade";
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< sector 0's frame; normalised
@@ -36,6 +45,7 @@ struct DiscResponseSpec {
   std::vector<int> harmonics{0, 1, 2, 3};
   int samples = 0;  ///< 0: what the friction elements recommend
   ShroudContactSpec contact;
+  ShroudGapSpec gap;
   DiscExcitationSpec excitation;
   std::vector<std::string> responseNodeSets{"mid_blade"};
 };
@@ -45,7 +55,8 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
                                    const ShroudContactSpec& contact);
 
 /// The system: receptance form over `models`, one friction3d element named "contact" per
-/// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), the
+/// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), or a
+/// unilateral spring named "gap" on w_n for the pairs spec.gap names, the
 /// excitation on harmonic 1, output DOFs the response nodes' x, y, z. Continuation in
 /// omega by default, p = f / referenceHz.
 ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
