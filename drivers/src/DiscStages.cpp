@@ -386,7 +386,20 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
                                                            std::to_string(contactCount) +
                                                            " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
-  const auto estimate = estimateResonance(setup, models, family);
+  // The estimate sets the range unless the scene gives one; then it only informs,
+  // and a failed estimate (no stuck peak on its scan) is reported, not fatal.
+  ResonanceEstimate estimate = ResonanceEstimate{};
+  std::string estimateText;
+  try {
+    estimate = estimateResonance(setup, models, family);
+    std::ostringstream text;
+    text << "family " << family << " at " << estimate.freeHz << " Hz with the shroud free, " << estimate.stuckHz
+         << " Hz with the contacts stuck";
+    estimateText = text.str();
+  } catch (const InputError& e) {
+    if (range.empty()) throw;
+    estimateText = std::string("no resonance estimate (") + e.what() + ")";
+  }
   double fromHz = 0, toHz = 0;
   if (range.empty()) {
     fromHz = 0.9 * std::min(estimate.freeHz, estimate.stuckHz);
@@ -396,9 +409,9 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   }
   {
     std::ostringstream line;
-    line << "engine order " << spec.engineOrder << " on ND " << estimate.nodalDiameter << ": family " << family
-         << " at " << estimate.freeHz << " Hz with the shroud free, " << estimate.stuckHz
-         << " Hz with the contacts stuck; sweep " << fromHz << " -> " << toHz << " Hz";
+    line << "engine order " << spec.engineOrder << " on ND "
+         << nodalDiametersFor(modelSpec.sectors, spec.engineOrder, {1}).front() << ": " << estimateText << "; sweep "
+         << fromHz << " -> " << toHz << " Hz";
     summary.computed.push_back(line.str());
     log::info(line.str());
   }
@@ -413,8 +426,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       if (peakHz < fromHz + 1e-3 * span || peakHz > toHz - 1e-3 * span) {
         std::ostringstream msg;
         msg << name << ": the largest response is at the end of the sweep (" << peakHz << " Hz): the resonance lies "
-            << "outside " << fromHz << ".." << toHz << " Hz (the estimate says " << estimate.freeHz << " Hz free, "
-            << estimate.stuckHz << " Hz stuck); widen disc_response/frequency_range_hz";
+            << "outside " << fromHz << ".." << toHz << " Hz (" << estimateText
+            << "); widen disc_response/frequency_range_hz";
         log::warn(msg.str());
         summary.computed.push_back("warning: " + msg.str());
       }

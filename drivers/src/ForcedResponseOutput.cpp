@@ -208,8 +208,10 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
   summary.written.push_back(csvPath);
   summary.written.push_back(outDir + "/" + name + ".svg");
   std::ostringstream line;
-  line << name << ": " << branch.points.size() << " points (" << unstablePoints
-       << " unstable by Hill's method) in " << timer.seconds() << " s, " << branch.stopReason;
+  line << name << ": " << branch.points.size() << " points (";
+  if (hill) line << unstablePoints << " unstable by Hill's method";
+  else line << "stability not computed";
+  line << ") in " << timer.seconds() << " s, " << branch.stopReason;
   for (const auto& [kind, count] : special) line << "; " << count << " " << kind;
   summary.computed.push_back(line.str());
   if (!branch.finished)

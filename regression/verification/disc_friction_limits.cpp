@@ -26,6 +26,7 @@
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/rom/SectorReceptance.hpp"
@@ -260,4 +261,100 @@ TEST(DiscFriction, GapElementsBetweenTheirLimits) {
   const double apart = (closedResponse - openResponse).norm() / closedResponse.norm();
   std::printf("closed and open gaps differ by %.2e; %.1f s\n", apart, total.seconds());
   EXPECT_GT(apart, 1e-4);
+}
+
+// Error against run time in the harmonics and the time samples, near the
+// friction-damped peak of the demo's contact values (H = 1 curve): Newton at
+// fixed frequencies for H = 1..4 (harmonics 0..H, each started from the level
+// below; H = 5 costs minutes per Newton solve here) and, at H = 2, for 128..2048
+// samples; the finest levels are the references.
+//  - On the flank (0.7 x the H = 1 peak frequency) raising H must converge:
+//    the stick-slip and lift-off corners make the force only C0 in time, its
+//    harmonics decay algebraically, so the error falls, if not monotonically.
+//  - At the H = 1 peak frequency itself the amplitude is printed, not bounded:
+//    on a sharp resonance a shift of the peak with H changes it by a factor.
+//  - Samples: the march quantises the stick-slip events to the sample grid, an
+//    O(1/N) error that oscillates with where the events fall (not halving per
+//    doubling); it must stay below 1e-3 from 256 samples on and far below the
+//    harmonic truncation error.
+TEST(DiscFriction, HarmonicAndSampleRefinementNearThePeak) {
+  Timer total;
+  const std::vector<int> all{0, 1, 2, 3, 4};
+  Disc disc(10000.0, all);
+  auto spec = responseSpec({0, 1}, 5.0, 1e4, 1e4);
+  auto h1 = makeDiscForcedResponse(disc.mesh, disc.models, spec, 1.0);
+  const auto estimate = estimateResonance(h1, disc.models);
+  h1 = makeDiscForcedResponse(disc.mesh, disc.models, spec, 0.9 * estimate.freeHz);
+  h1.continuation.from = 1.0;
+  h1.continuation.to = 1.1 * estimate.stuckHz / (0.9 * estimate.freeHz);
+  h1.continuation.initialStep = 0.002, h1.continuation.maxStep = 0.02, h1.continuation.minStep = 1e-7;
+  h1.continuation.tolerance = 1e-8, h1.continuation.arcLengthScaling = false;
+  const auto branch = traceForcedResponse(h1);
+  ASSERT_TRUE(branch.finished) << branch.stopReason;
+  const int dofOut = h1.outputDofs.front();
+  double peakHz = 0, best = 0;
+  for (const auto& pt : branch.points) {
+    const int nc = h1.system->numCoefficients();
+    const double m = hbm::peakMagnitude(h1.system->aft().harmonics(), Eigen::VectorXd(pt.x.segment(dofOut * nc, nc)));
+    if (m > best) best = m, peakHz = h1.apply(pt.parameter).first / (2 * M_PI);
+  }
+  std::printf("H = 1 peak %.4e mm at %.2f Hz (%zu points, %.1f s)\n", best, peakHz, branch.points.size(),
+              total.seconds());
+
+  // One level: Newton at w from the previous level's solution carried over.
+  struct Level {
+    int H, samples;
+    double amplitude, seconds;
+  };
+  Eigen::VectorXd previous;
+  hbm::HarmonicSet previousSet({0, 1});
+  auto solveLevel = [&](double w, int H, int samples) {
+    auto s = spec;
+    s.harmonics.assign(all.begin(), all.begin() + H + 1);
+    s.samples = samples;
+    auto setup = makeDiscForcedResponse(disc.mesh, disc.models, s, 1.0);
+    const auto& hb = *setup.system;
+    Timer t;
+    Eigen::VectorXd X = previous.size() == 0 ? hb.linearizedSolution(w)
+                                             : hbm::transferCoefficients(previous, hb.numDofs(), previousSet,
+                                                                         hb.aft().harmonics());
+    setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
+    setup.omega = w;
+    const auto result = continuation::solveNewton(continuationProblem(setup), X, 1.0, 1e-9, 40);
+    EXPECT_TRUE(result.converged) << "H = " << H << ", " << samples << " samples: residual " << result.residualNorm;
+    previous = X, previousSet = hb.aft().harmonics();
+    const int nc = hb.numCoefficients();
+    return Level{H, samples, hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(X.segment(dofOut * nc, nc))),
+                 t.seconds()};
+  };
+  auto harmonicsTable = [&](double hz) {
+    previous.resize(0);
+    std::vector<Level> byH;
+    for (int H = 1; H <= 4; ++H) byH.push_back(solveLevel(2 * M_PI * hz, H, 512));
+    std::printf("harmonics at %.2f Hz (512 samples): H, max|x(t)|, difference to H = 4, Newton time\n", hz);
+    for (const auto& l : byH)
+      std::printf("  %d  %.6e  %.2e  %.2f s\n", l.H, l.amplitude, std::abs(l.amplitude / byH.back().amplitude - 1),
+                  l.seconds);
+    std::fflush(stdout);
+    return byH;
+  };
+  const auto flank = harmonicsTable(0.7 * peakHz);
+  const auto errH = [&](int H) { return std::abs(flank[std::size_t(H - 1)].amplitude / flank.back().amplitude - 1); };
+  EXPECT_LT(errH(2), errH(1)) << "raising H must converge on the flank";
+  EXPECT_LT(errH(3), errH(1)) << "raising H must converge on the flank";
+  const auto atPeak = harmonicsTable(peakHz);
+
+  std::vector<Level> byN;  // from the H = 4 solution at the peak, carried over (from rest Newton fails at H = 2)
+  for (int samples : {128, 256, 512, 1024, 2048}) byN.push_back(solveLevel(2 * M_PI * peakHz, 2, samples));
+  std::printf("samples at H = 2, %.2f Hz: N, max|x(t)|, difference to N = 2048, Newton time\n", peakHz);
+  const double truncation = std::abs(atPeak[1].amplitude / atPeak[2].amplitude - 1);  // H = 2 against H = 3 there
+  for (std::size_t i = 0; i < byN.size(); ++i) {
+    const double err = std::abs(byN[i].amplitude / byN.back().amplitude - 1);
+    std::printf("  %4d  %.6e  %.2e  %.2f s\n", byN[i].samples, byN[i].amplitude, err, byN[i].seconds);
+    if (byN[i].samples >= 256) {
+      EXPECT_LT(err, 1e-3) << byN[i].samples << " samples";
+      EXPECT_LT(err, 0.01 * truncation) << byN[i].samples << " samples: the samples must not limit the accuracy";
+    }
+  }
+  std::printf("total %.1f s\n", total.seconds());
 }

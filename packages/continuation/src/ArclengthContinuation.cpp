@@ -2,7 +2,9 @@
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
+#include "cyclone/continuation/BranchTurn.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -10,16 +12,28 @@
 #include <LOCA.H>
 #include <LOCA_LAPACK.H>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace cyclone::continuation {
 
 namespace {
 
+// The tangent predictor's orientation can flip at a kink of a nonsmooth system
+// (BranchTurn.hpp): the run stops there and traceBranch steps over the kink.
+struct BranchTurnedBack : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class Interface : public LOCA::LAPACK::Interface {
 public:
-  Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch)
-      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch) {
+  /// before: the branch's point before x0 when LOCA resumes a branch (nullptr at its start),
+  /// so that a first step back along it is caught too.
+  Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch,
+            const BranchPoint* before, double lo, double hi)
+      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(before), lo_(lo), hi_(hi) {
     for (int i = 0; i < x0.size(); ++i) guess_(i) = x0(i);
   }
   const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
@@ -51,6 +65,20 @@ public:
   void setParams(const LOCA::ParameterVector& p) override { p_ = p.getValue("p"); }
   void printSolution(const NOX::LAPACK::Vector& x, const double conParam) override {
     branch_.points.push_back({conParam, toEigen(x)});
+    std::vector<const BranchPoint*> path;
+    if (before_) path.push_back(before_);
+    for (std::size_t i = 0; i + 1 < branch_.points.size(); ++i) path.push_back(&branch_.points[i]);
+    // LOCA's last step overshoots the range's bound and then steps back onto it: not a flip.
+    const double last = path.empty() ? p_ : path.back()->parameter;
+    const int kink = last >= lo_ && last <= hi_ ? retracedFrom(path, branch_.points.back()) : -1;
+    if (kink >= 0) {
+      // Keep the points up to the kink (path index kink; path[0] is before_ when given).
+      const int keep = kink + 1 - (before_ ? 1 : 0);
+      branch_.points.resize(std::size_t(std::max(keep, 1)));
+      std::ostringstream msg;
+      msg << "the arclength predictor turned back onto the branch at p = " << branch_.points.back().parameter;
+      throw BranchTurnedBack(msg.str());
+    }
     // Progress for long curves: a line every 10 s.
     if (sinceLog_.seconds() > 10) {
       std::ostringstream msg;
@@ -75,6 +103,8 @@ private:
   NOX::LAPACK::Vector guess_;
   double p_;
   Branch& branch_;
+  const BranchPoint* before_;
+  double lo_, hi_;
   Timer sinceLog_, total_;
   long residuals_ = 0, jacobians_ = 0;
   std::size_t pointsAtLog_ = 0;
@@ -88,8 +118,8 @@ namespace {
 // first step of size `initialStep` (sign: the direction of p). Appends the
 // points (the start itself only when `keepStart`) and sets the stop fields.
 void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, double initialStep,
-             const ContinuationOptions& o, bool keepStart, Branch& branch, bool& threw) {
-  threw = false;
+             const ContinuationOptions& o, bool keepStart, Branch& branch, bool& threw, bool& turnedBack) {
+  threw = false, turnedBack = false;
   Branch run;
   auto params = Teuchos::rcp(new Teuchos::ParameterList);
   auto& stepper = params->sublist("LOCA").sublist("Stepper");
@@ -113,7 +143,8 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   {
     LOCA::ParameterVector p;
     p.addParameter("p", p0);
-    Interface iface(problem, x0, p0, run);
+    const BranchPoint* before = keepStart || branch.points.size() < 2 ? nullptr : &branch.points[branch.points.size() - 2];
+    Interface iface(problem, x0, p0, run, before, std::min(o.from, o.to), std::max(o.from, o.to));
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
     group->setParams(p);
     auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
@@ -123,6 +154,9 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
     LOCA::Abstract::Iterator::IteratorStatus status = LOCA::Abstract::Iterator::Failed;
     try {
       status = stepperObject.run();
+    } catch (const BranchTurnedBack& e) {
+      run.stopReason = e.what();
+      turnedBack = true;
     } catch (const std::exception& e) {
       run.stopReason = std::string("continuation stopped by an exception: ") + e.what();
       threw = true;
@@ -140,6 +174,70 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   }
   LOCA::destroyGlobalData(globalData);
   for (std::size_t i = keepStart ? 0 : 1; i < run.points.size(); ++i) branch.points.push_back(run.points[i]);
+}
+
+// One pseudo-arclength step past a kink, predicted along the secant over the
+// last regular step length L (through the creeping points at the kink):
+// Newton on [F(x, p); t . (z - z_pred)] = 0 with dF/dp by central differences,
+// for steps L, L/2, 2 L, L/4. The first converged point that does not go back
+// along the traced path (BranchTurn) is appended; at a fold it lands on the
+// other half. False if none does.
+bool bridgeKink(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch) {
+  const auto& pts = branch.points;
+  const std::size_t n = pts.size();
+  const std::size_t first = n > 11 ? n - 11 : 0;
+  double L = 0;
+  for (std::size_t i = first + 1; i < n; ++i) L = std::max(L, turnStep(pts[i - 1], pts[i]));
+  if (!(L > 0)) return false;
+  std::size_t ia = n - 2;
+  while (ia > first && turnStep(pts[ia], pts[n - 1]) < L) --ia;
+  const BranchPoint& a = pts[ia];
+  const BranchPoint b = pts[n - 1];
+  const double chord = turnStep(a, b);
+  const Eigen::VectorXd tx = (b.x - a.x) / chord;
+  const double tp = (b.parameter - a.parameter) / chord;
+  const double lo = std::min(o.from, o.to), hi = std::max(o.from, o.to);
+  const int m = problem.size;
+  std::vector<const BranchPoint*> path;
+  for (std::size_t i = n > 51 ? n - 51 : 0; i < n; ++i) path.push_back(&pts[i]);
+  for (double h : {L, 0.5 * L, 2 * L, 0.25 * L}) {
+    Eigen::VectorXd x = b.x + h * tx;
+    double p = b.parameter + h * tp;
+    bool converged = false;
+    Eigen::VectorXd F(m), Fp(m), Fm(m);
+    Eigen::MatrixXd J(m, m), A(m + 1, m + 1);
+    Eigen::VectorXd R(m + 1);
+    for (int it = 0; it < 30 && !converged; ++it) {
+      try {
+        problem.residual(x, p, F);
+        const double eps = 1e-7 * std::max(1.0, std::abs(p));
+        problem.residual(x, p + eps, Fp);
+        problem.residual(x, p - eps, Fm);
+        problem.jacobian(x, p, J);
+      } catch (...) {
+        break;
+      }
+      const double arc = tx.dot(x - b.x) + tp * (p - b.parameter) - h;
+      if (F.norm() <= o.tolerance && std::abs(arc) <= 1e-10 * h) {
+        converged = true;
+        break;
+      }
+      A.topLeftCorner(m, m) = J;
+      A.topRightCorner(m, 1) = (Fp - Fm) / (2 * 1e-7 * std::max(1.0, std::abs(p)));
+      A.bottomLeftCorner(1, m) = tx.transpose();
+      A(m, m) = tp;
+      R << F, arc;
+      const Eigen::VectorXd dz = A.partialPivLu().solve(R);
+      if (!dz.allFinite()) break;
+      x -= dz.head(m), p -= dz(m);
+    }
+    if (!converged || p < lo || p > hi) continue;
+    const BranchPoint c{p, x};
+    if (retracedFrom(path, c) >= 0) continue;
+    branch.points.push_back(c);
+    return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -164,17 +262,39 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
   // fell below its minimum at a kink of many friction contacts was tried: each
   // restart failed the same way and the run took minutes longer.)
   const double forward = o.to >= o.from ? 1.0 : -1.0;
-  bool threw = false;
-  runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw);
+  bool threw = false, turnedBack = false;
+  runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw, turnedBack);
   double step = o.initialStep;
-  for (int restart = 0; threw && restart < 6 && branch.points.size() >= 2; ++restart) {
+  int restarts = 0, bridges = 0;
+  while ((threw || turnedBack) && branch.points.size() >= 2) {
+    const std::size_t before = branch.points.size();
+    if (turnedBack) {
+      // Step over the kink by a secant arclength step (bridgeKink); LOCA
+      // resumes from there.
+      if (++bridges > 20 || !bridgeKink(problem, o, branch)) {
+        branch.stopReason += " (a kink the predictor could not pass, nor a secant step over it): the branch so "
+                             "far is kept";
+        break;
+      }
+      const auto& last = branch.points.back();
+      const double moving = last.parameter - branch.points[branch.points.size() - 2].parameter;
+      runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * o.initialStep, o, false, branch, threw,
+              turnedBack);
+      continue;
+    }
+    if (++restarts > 6) break;
     step /= 4;
     if (step < o.minStep) break;
     const auto& last = branch.points.back();
     const double moving = last.parameter - branch.points[branch.points.size() - 2].parameter;
-    const std::size_t before = branch.points.size();
-    runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw);
-    if (branch.points.size() > before) step = o.initialStep;  // progress: the next cut starts afresh
+    runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw, turnedBack);
+    if (branch.points.size() > before) step = o.initialStep, restarts = 0;  // progress: the next cut starts afresh
+  }
+  if (bridges > 0 && branch.finished) {
+    std::ostringstream why;
+    why << branch.stopReason << " (" << bridges << " kink(s) where the predictor turned back, stepped over by a "
+        << "secant step)";
+    branch.stopReason = why.str();
   }
   // LOCA ends a run at the range's bound by a last step that may overshoot it, and a
   // corrector that jumps branches can land far outside: such points are not solutions

@@ -1,0 +1,30 @@
+#pragma once
+// Whether a continuation step went back along the path already traced.
+//
+// The tangent predictor's orientation can flip at a kink of a nonsmooth system
+// (the stick-slip corners of many friction contacts), at once or over a few
+// tiny steps: LOCA then walks back along the branch it came from and may report
+// the range as finished without ever passing the kink. A step is taken for such
+// a retrace when it lands on a segment of the path already traced (within a
+// tenth of the longer of the two) moving against it (by more than 120
+// degrees). A true fold, even taken with a large step, lands on the fold's
+// other half, about a step or more away from the traced one.
+#include <vector>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+
+namespace cyclone::continuation {
+
+/// Distance between two points in (x, p).
+double turnStep(const BranchPoint& a, const BranchPoint& b);
+
+/// Cosine of the turn between the steps a -> b and b -> c in (x, p).
+double turnCosine(const BranchPoint& a, const BranchPoint& b, const BranchPoint& c);
+
+/// path: the points traced so far, oldest first (the last 50 segments are
+/// searched); c: the new point after path.back(). -1 if c continues the
+/// branch; otherwise the index in path of the last point that still moved
+/// forward along the retraced segment (the kink: the points after it went back).
+int retracedFrom(const std::vector<const BranchPoint*>& path, const BranchPoint& c);
+
+}  // namespace cyclone::continuation

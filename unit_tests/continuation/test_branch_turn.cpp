@@ -1,0 +1,63 @@
+// The predictor-flip test of the continuation: a step back along the traced
+// path is caught; a fold taken with a large step, a gentle bend and a step
+// past the path's start are not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cyclone/continuation/BranchTurn.hpp"
+
+using namespace cyclone::continuation;
+
+namespace {
+
+BranchPoint point(double p, double x) { return {p, Eigen::VectorXd::Constant(1, x)}; }
+
+int retraced(const std::vector<BranchPoint>& path, const BranchPoint& c) {
+  std::vector<const BranchPoint*> ptrs;
+  for (const auto& q : path) ptrs.push_back(&q);
+  return retracedFrom(ptrs, c);
+}
+bool turnsBack(const std::vector<BranchPoint>& path, const BranchPoint& c) { return retraced(path, c) >= 0; }
+
+}  // namespace
+
+TEST(BranchTurn, StepBackAlongThePathIsCaught) {
+  // x = p^2 traced upwards, then a step back to between the last two points.
+  std::vector<BranchPoint> path;
+  for (double p : {0.0, 0.1, 0.2, 0.3}) path.push_back(point(p, p * p));
+  EXPECT_TRUE(turnsBack(path, point(0.25, 0.0625)));
+  EXPECT_TRUE(turnsBack(path, point(0.15, 0.0225)));  // two segments back
+  EXPECT_FALSE(turnsBack(path, point(0.4, 0.16)));     // onward
+}
+
+TEST(BranchTurn, FoldTakenWithALargeStepIsNot) {
+  // A hairpin: the path rises along x = 0 to p = 1, the fold's other half
+  // returns at x = 0.5. A step onto that half turns back by 150 degrees but
+  // lands half a unit from the path: a true fold.
+  std::vector<BranchPoint> path{point(0.0, 0.0), point(0.5, 0.0), point(1.0, 0.0)};
+  const BranchPoint otherHalf = point(0.1, 0.5);
+  EXPECT_LT(turnCosine(path[1], path[2], otherHalf), -0.5);
+  EXPECT_FALSE(turnsBack(path, otherHalf));
+  // The same turn landing on the traced half: caught.
+  EXPECT_TRUE(turnsBack(path, point(0.1, 0.02)));
+}
+
+TEST(BranchTurn, GentleBendAndTooShortPathsAreNot) {
+  std::vector<BranchPoint> path{point(0, 0), point(1, 0)};
+  EXPECT_FALSE(turnsBack(path, point(1.5, 0.5)));               // 45 degrees
+  EXPECT_FALSE(turnsBack({point(0, 0)}, point(-1, 0)));           // nothing to go back along
+  EXPECT_NEAR(turnCosine(point(0, 0), point(1, 0), point(0, 0)), -1.0, 1e-15);
+}
+
+// The flip spread over tiny steps (what LOCA did at a friction kink): the path
+// creeps forward, turns around in small steps, then walks back over its old
+// segments. Caught when it lands on them; the kink is the turning point.
+TEST(BranchTurn, GradualTurnAroundIsCaughtAtItsTip) {
+  std::vector<BranchPoint> path;
+  for (double p : {0.0, 0.1, 0.2, 0.3, 0.4}) path.push_back(point(p, p));  // forward
+  path.push_back(point(0.401, 0.4012));                                    // creeping
+  path.push_back(point(0.4005, 0.4008));                                   // turned, tiny
+  EXPECT_EQ(retraced(path, point(0.35, 0.35)), 5);  // back on the segment 0.3 -> 0.4: kink at index 5
+  EXPECT_EQ(retraced(path, point(0.41, 0.43)), -1);
+}
