@@ -17,21 +17,23 @@ namespace cyclone::rom {
 
 struct CyclicHarmonicModel::Impl {
   cyclic::HarmonicOperators op;
-  std::vector<mesh::Index> nodes;
+  RetainedDofSet dofs;
   double eta = 0;
   Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
 
-  Eigen::Index size() const { return Eigen::Index(3 * nodes.size() * op.copies); }
+  Eigen::Index size() const { return dofs.size() * op.copies; }
 
-  // G^T X: every column of X seen at the retained DOFs.
+  // G^T X: every column of X seen at the retained DOFs (along each DOF's unit vector).
   Eigen::MatrixXd retained(const linalg::MultiVector& X) const {
-    const auto nn = Eigen::Index(nodes.size());
+    const auto nd = dofs.size();
     Eigen::MatrixXd out(size(), X.getNumVectors());
     for (std::size_t j = 0; j < X.getNumVectors(); ++j)
       for (int c = 0; c < op.copies; ++c) {
         const auto field = op.assembler->nodalField(X, int(j), c);
-        for (Eigen::Index i = 0; i < nn; ++i)
-          for (int d = 0; d < 3; ++d) out((c * nn + i) * 3 + d, Eigen::Index(j)) = field[nodes[i]][d];
+        for (Eigen::Index k = 0; k < nd; ++k) {
+          const auto& u = field[dofs.nodes[std::size_t(dofs.dofs[std::size_t(k)].first)]];
+          out(c * nd + k, Eigen::Index(j)) = dofs.axis(k).dot(Eigen::Vector3d(u[0], u[1], u[2]));
+        }
       }
     return out;
   }
@@ -43,10 +45,7 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   auto& I = *impl_;
   problem.material.validate("material");
   if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
-  if (problem.retainedNodeSets.empty()) throw InputError("retained", "no retained node sets given");
-  for (const auto& name : problem.retainedNodeSets)
-    for (mesh::Index n : mesh.nodeSet(name))  // InputError naming a missing or empty set
-      if (std::find(I.nodes.begin(), I.nodes.end(), n) == I.nodes.end()) I.nodes.push_back(n);
+  I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections);
   Timer timer;
   I.op = cyclic::assembleHarmonicOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
                                            problem.prestress, comm);
@@ -55,17 +54,20 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   const auto& T = I.op.assembler->transform();
   const auto map = I.op.assembler->map();
   I.G = Teuchos::rcp(new linalg::MultiVector(map, std::size_t(I.size())));
-  const auto nn = Eigen::Index(I.nodes.size());
+  const auto nd = I.dofs.size();
   for (int c = 0; c < I.op.copies; ++c)
-    for (Eigen::Index i = 0; i < nn; ++i)
+    for (Eigen::Index k = 0; k < nd; ++k) {
+      const mesh::Index node = I.dofs.nodes[std::size_t(I.dofs.dofs[std::size_t(k)].first)];
+      const Eigen::Vector3d axis = I.dofs.axis(k);
       for (int d = 0; d < 3; ++d)
-        for (const auto& term : T.terms(I.nodes[i], d, c))
-          if (map->isNodeGlobalElement(term.equation))
-            I.G->sumIntoGlobalValue(term.equation, std::size_t((c * nn + i) * 3 + d), term.coefficient);
+        for (const auto& term : T.terms(node, d, c))
+          if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
+            I.G->sumIntoGlobalValue(term.equation, std::size_t(c * nd + k), axis[d] * term.coefficient);
+    }
   std::ostringstream msg;
   msg << "harmonic model k = " << problem.harmonic << ": " << T.numEquations() << " equations, " << I.size()
-      << " retained DOFs (" << nn << " nodes x 3 x " << I.op.copies << " copies), assembled in " << timer.seconds()
-      << " s";
+      << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes, " << I.op.copies
+      << " copies), assembled in " << timer.seconds() << " s";
   log::info(msg.str());
 }
 
@@ -75,7 +77,8 @@ int CyclicHarmonicModel::harmonic() const { return impl_->op.harmonic; }
 int CyclicHarmonicModel::copies() const { return impl_->op.copies; }
 long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
 double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
-const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->nodes; }
+const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->dofs.nodes; }
+const RetainedDofSet& CyclicHarmonicModel::retainedDofs() const { return impl_->dofs; }
 Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
 const cyclic::HarmonicOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
 const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *impl_->G; }

@@ -3,9 +3,11 @@
 // at its retained DOFs for a frequency, whatever kind of model it is (the full
 // FE reference, the hybrid FRF model, modal truncation). Eigen only.
 //
-// Retained DOF order: index = (copy * retainedNodes + node) * 3 + direction,
-// copy 0 and 1 being the real and imaginary parts of the cyclic real form at
-// harmonic index k (one copy for k = 0 and N/2). The complex entries are the
+// Retained DOF order: index = copy * (DOFs per copy) + DOF, copy 0 and 1 being
+// the real and imaginary parts of the cyclic real form at harmonic index k (one
+// copy for k = 0 and N/2), the DOFs of a copy node by node, each node's chosen
+// directions in order (RetainedDofs.hpp); with all 3 global directions, index =
+// (copy * retainedNodes + node) * 3 + direction. The complex entries are the
 // time-harmonic amplitudes x = A(omega) f for f e^{i omega t}.
 #include <Eigen/Dense>
 

@@ -1,6 +1,7 @@
 #pragma once
 // The full FE model of a cyclic sector at one harmonic index k, seen at
-// retained DOFs (all 3 directions of the nodes of some node sets): the
+// retained DOFs (the nodes of some node sets, all 3 directions or chosen ones,
+// in the global frame or a given local one: RetainedDofs.hpp): the
 // real-form K_k (prestressed tangent when given) and M_k assembled as for the
 // modes (cyclic::assembleHarmonicOperators), and from them
 //   - the full-FE dynamic compliance G^T ((1 + i eta) K - w^2 M)^{-1} G by a
@@ -9,7 +10,9 @@
 //   - the exact static compliance G^T (K - sigma M)^{-1} G from one CHOLMOD
 //     factorization with all retained DOFs as right-hand sides.
 // G maps unknowns to the retained physical DOFs (a right-face node is a
-// combination of left-face unknowns; a fixed DOF has a zero column).
+// combination of left-face unknowns; a fixed DOF has a zero column); its column
+// for a DOF in a local frame is the unit load along that frame vector.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +22,7 @@
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/rom/RetainedDofs.hpp"
 
 namespace cyclone::cyclic {
 struct HarmonicOperators;
@@ -31,6 +35,7 @@ struct HarmonicModelProblem {
   int harmonic = 0;                             ///< k in 0..N/2
   std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
+  std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
   const cyclic::PrestressState* prestress = nullptr;  ///< tangent K + K_sigma - K_Omega; null: K
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
 };
@@ -49,6 +54,8 @@ public:
   long long equations() const;
   double lossFactor() const;
   const std::vector<mesh::Index>& retainedNodes() const;
+  /// The retained DOFs of one copy (copy c's DOF k is compliance row c * dofs + k).
+  const RetainedDofSet& retainedDofs() const;
   Eigen::Index size() const override;
 
   /// The full-FE compliance at the retained DOFs (one complex factorization).
