@@ -31,11 +31,14 @@ rom::HybridFrfModel syntheticModel(bool hybrid) {
   modes.eigenvalues = {1.0e4, 1.0e4, 3.7e5, 3.7e5};
   modes.shapes.resize(6, 4);
   for (int i = 0; i < modes.shapes.size(); ++i) modes.shapes.data()[i] = g(rng);
+  modes.loads.resize(4, 2);  // two load patterns' modal forces
+  for (int i = 0; i < modes.loads.size(); ++i) modes.loads.data()[i] = g(rng);
   if (!hybrid) return rom::HybridFrfModel::modalTruncation(modes, 0.003);
   rom::StaticCompliance a0;
   Eigen::MatrixXd B(6, 6);
   for (int i = 0; i < B.size(); ++i) B.data()[i] = g(rng);
   a0.matrix = B * B.transpose() * 1e-6;
+  a0.loadResponse = 1e-6 * B.leftCols(2);
   a0.omega0 = 12.5, a0.shift = 12.5 * 12.5;
   return rom::HybridFrfModel(modes, a0, 0.003);
 }
@@ -98,14 +101,19 @@ TEST(ReducedModelFile, RoundTripIsBitIdenticalAndH5dumpReadsIt) {
     EXPECT_EQ(back.staticCorrection, hybrid);
     EXPECT_EQ(back.kind, hybrid ? "hybrid" : "truncation");
     const auto again = back.hybridModel();
-    for (double w : {0.0, 50.0, 100.0, 99.99, 700.0})
+    ASSERT_EQ(again.numLoads(), 2);
+    for (double w : {0.0, 50.0, 100.0, 99.99, 700.0}) {
       EXPECT_EQ((again.compliance(w) - model.compliance(w)).cwiseAbs().maxCoeff(), 0.0) << w;
+      EXPECT_EQ((again.loadResponse(w) - model.loadResponse(w)).cwiseAbs().maxCoeff(), 0.0) << w;
+    }
     const std::string out = (dir / "h5dump.txt").string();
     ASSERT_EQ(std::system(("h5dump -H '" + path + "' > '" + out + "' 2>&1").c_str()), 0);
     std::ifstream in(out);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("DATASET \"shapes\""), std::string::npos) << text;
     EXPECT_EQ(text.find("DATASET \"static_compliance\"") != std::string::npos, hybrid) << text;
+    EXPECT_NE(text.find("DATASET \"load_modal_forces\""), std::string::npos) << text;
+    EXPECT_EQ(text.find("DATASET \"load_static_response\"") != std::string::npos, hybrid) << text;
     EXPECT_NE(text.find("ATTRIBUTE \"harmonic\""), std::string::npos) << text;
     EXPECT_NE(text.find("ATTRIBUTE \"kind\""), std::string::npos) << text;
   }

@@ -137,6 +137,10 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
       writeVector(h5, "eigenvalues", rec.modes.eigenvalues, H5::PredType::NATIVE_DOUBLE);
       writeMatrix(h5, "shapes", rec.modes.shapes);
       if (rec.staticCorrection) writeMatrix(h5, "static_compliance", rec.staticCompliance.matrix);
+      // The excitation part: modal forces phi_j^T f and (hybrid) the static response to each pattern.
+      if (rec.modes.loads.size()) writeMatrix(h5, "load_modal_forces", rec.modes.loads);
+      if (rec.staticCorrection && rec.staticCompliance.loadResponse.size())
+        writeMatrix(h5, "load_static_response", rec.staticCompliance.loadResponse);
     } else {
       writeMatrix(h5, "boundary_stiffness", rec.reduction.stiffness);
       writeMatrix(h5, "boundary_mass", rec.reduction.mass);
@@ -184,6 +188,9 @@ ReducedModelRecord readReducedModelHdf5(const std::string& path) {
       rec.modes.shapes = readMatrix(h5, "shapes");
       rec.modes.copies = copies;
       if (rec.staticCorrection) rec.staticCompliance.matrix = readMatrix(h5, "static_compliance");
+      if (h5.nameExists("load_modal_forces")) rec.modes.loads = readMatrix(h5, "load_modal_forces");
+      if (h5.nameExists("load_static_response"))
+        rec.staticCompliance.loadResponse = readMatrix(h5, "load_static_response");
     } else if (boundary(rec.kind)) {
       rec.reduction.copies = copies;
       rec.reduction.stiffness = readMatrix(h5, "boundary_stiffness");
@@ -223,6 +230,9 @@ ReducedModelRecord readReducedModelHdf5(const std::string& path) {
                     (rec.retainedAxes.size() == 0 || (rec.retainedAxes.rows() == r && rec.retainedAxes.cols() == 3));
   if (modal(rec.kind))
     consistent = consistent && rec.modes.shapes.cols() == Eigen::Index(rec.modes.eigenvalues.size()) &&
+                 (rec.modes.loads.size() == 0 || rec.modes.loads.rows() == rec.modes.shapes.cols()) &&
+                 (!rec.staticCorrection || rec.staticCompliance.loadResponse.cols() == rec.modes.loads.cols()) &&
+                 (rec.staticCompliance.loadResponse.size() == 0 || rec.staticCompliance.loadResponse.rows() == r) &&
                  (!rec.staticCorrection ||
                   (rec.staticCompliance.matrix.rows() == r && rec.staticCompliance.matrix.cols() == r));
   else

@@ -16,6 +16,7 @@
 #include "cyclone/rom/CyclicHarmonicModel.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
+#include "TransposeProduct.hpp"
 
 namespace cyclone::rom {
 namespace {
@@ -174,20 +175,6 @@ linalg::MultiVector embed(const linalg::MultiVector& interior, const Eigen::Matr
       else
         dst[r] = boundaryRows(p.boundaryOf[std::size_t(fullMap->getGlobalElement(r))], Eigen::Index(j));
     }
-  }
-  return out;
-}
-
-// A^T B (small, on every rank).
-Eigen::MatrixXd transposeProduct(const linalg::MultiVector& A, const linalg::MultiVector& B) {
-  const auto local = Teuchos::rcp(
-      new linalg::Map(Tpetra::global_size_t(A.getNumVectors()), 0, A.getMap()->getComm(), Tpetra::LocallyReplicated));
-  linalg::MultiVector C(local, B.getNumVectors());
-  C.multiply(Teuchos::TRANS, Teuchos::NO_TRANS, 1.0, A, B, 0.0);
-  Eigen::MatrixXd out(Eigen::Index(A.getNumVectors()), Eigen::Index(B.getNumVectors()));
-  for (std::size_t j = 0; j < B.getNumVectors(); ++j) {
-    const auto c = C.getData(j);
-    for (std::size_t i = 0; i < A.getNumVectors(); ++i) out(Eigen::Index(i), Eigen::Index(j)) = c[i];
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
+#include "TransposeProduct.hpp"
 
 namespace cyclone::rom {
 
@@ -20,6 +21,7 @@ struct CyclicHarmonicModel::Impl {
   RetainedDofSet dofs;
   double eta = 0;
   Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
+  Teuchos::RCP<linalg::MultiVector> F;  // the load patterns (null: none)
 
   Eigen::Index size() const { return dofs.size() * op.copies; }
 
@@ -64,6 +66,27 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
           if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
             I.G->sumIntoGlobalValue(term.equation, std::size_t(c * nd + k), axis[d] * term.coefficient);
     }
+  if (!problem.loads.empty()) {
+    I.F = Teuchos::rcp(new linalg::MultiVector(map, problem.loads.size()));
+    for (std::size_t p = 0; p < problem.loads.size(); ++p) {
+      const auto& load = problem.loads[p];
+      const std::string where = "loads/" + (load.name.empty() ? std::to_string(p) : load.name);
+      if (load.forces.empty()) throw InputError(where, "no forces given");
+      for (const auto& f : load.forces) {
+        if (f.node < 0 || f.node >= mesh.numNodes())
+          throw InputError(where, "node index " + std::to_string(f.node) + " is not in the mesh");
+        if (f.copy < 0 || f.copy >= I.op.copies)
+          throw InputError(where, "copy " + std::to_string(f.copy) + " at harmonic index " +
+                                      std::to_string(problem.harmonic) + " (it has " + std::to_string(I.op.copies) +
+                                      " real-form copies)");
+        if (!f.force.allFinite()) throw InputError(where, "a force that is not a finite number");
+        for (int d = 0; d < 3; ++d)
+          for (const auto& term : T.terms(f.node, d, f.copy))  // a fixed DOF takes no load
+            if (f.force[d] != 0 && map->isNodeGlobalElement(term.equation))
+              I.F->sumIntoGlobalValue(term.equation, p, f.force[d] * term.coefficient);
+      }
+    }
+  }
   std::ostringstream msg;
   msg << "harmonic model k = " << problem.harmonic << ": " << T.numEquations() << " equations, " << I.size()
       << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes, " << I.op.copies
@@ -94,6 +117,22 @@ Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   return A;
 }
 
+Eigen::Index CyclicHarmonicModel::numLoads() const {
+  return impl_->F.is_null() ? 0 : Eigen::Index(impl_->F->getNumVectors());
+}
+
+Eigen::MatrixXcd CyclicHarmonicModel::loadResponse(double omega) const {
+  const auto& I = *impl_;
+  if (I.F.is_null()) return ComplianceModel::loadResponse(omega);  // the InputError
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega);
+  linalg::MultiVector xr(I.F->getMap(), I.F->getNumVectors()), xi(I.F->getMap(), I.F->getNumVectors());
+  solver.solve(*I.F, xr, xi);
+  Eigen::MatrixXcd X(I.size(), numLoads());
+  X.real() = I.retained(xr);
+  X.imag() = I.retained(xi);
+  return X;
+}
+
 Eigen::MatrixXd CyclicHarmonicModel::zeroFrequencyCompliance() const {
   const auto& I = *impl_;
   std::unique_ptr<solvers::DirectSolver> solver;
@@ -118,6 +157,7 @@ RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
   out.copies = I.op.copies;
   out.eigenvalues = result.eigenvalues;
   out.shapes = I.retained(*result.modes);
+  if (!I.F.is_null()) out.loads = transposeProduct(*result.modes, *I.F);
   out.seconds = timer.seconds();
   return out;
 }
@@ -166,6 +206,11 @@ StaticCompliance CyclicHarmonicModel::staticCompliance(double omega0, const Reta
   solver.solve(*I.G, X);
   out.matrix = I.retained(X);
   out.matrix = 0.5 * (out.matrix + out.matrix.transpose()).eval();
+  if (!I.F.is_null()) {
+    linalg::MultiVector XF(I.F->getMap(), I.F->getNumVectors());
+    solver.solve(*I.F, XF);
+    out.loadResponse = I.retained(XF);
+  }
   out.note = note.str();
   out.seconds = timer.seconds();
   return out;

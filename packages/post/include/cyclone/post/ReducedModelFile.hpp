@@ -6,6 +6,8 @@
 //     /eigenvalues         [m]        omega_j^2, (rad/s)^2, ascending (pairs listed twice)
 //     /shapes              [r x m]    mass-normalised modes at the retained DOFs
 //     /static_compliance   [r x r]    G^T (K - sigma M)^-1 G (hybrid models only)
+//     /load_modal_forces   [m x p]    optional, the excitation part: phi_j^T f for p load patterns
+//     /load_static_response [r x p]   with it (hybrid): G^T (K - sigma M)^-1 f
 //   guyan, craig_bampton:
 //     /boundary_stiffness  [r x r]    K_g
 //     /boundary_mass       [r x r]    M_g

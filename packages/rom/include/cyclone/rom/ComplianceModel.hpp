@@ -24,6 +24,12 @@ public:
   /// harmonic balance solution sees. Structural damping has no meaning at zero
   /// frequency, so this is not compliance(0). InputError for a model with rigid-body modes.
   virtual Eigen::MatrixXd zeroFrequencyCompliance() const = 0;
+
+  /// Load patterns the model carries (its excitation part): 0 unless built with some.
+  virtual Eigen::Index numLoads() const { return 0; }
+  /// x_r(omega) = A_rf(omega) f: the retained DOFs' response to each load pattern (one
+  /// column each). InputError for a model without load patterns.
+  virtual Eigen::MatrixXcd loadResponse(double omega) const;
 };
 
 }  // namespace cyclone::rom

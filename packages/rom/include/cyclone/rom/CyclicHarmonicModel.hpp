@@ -22,6 +22,7 @@
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/rom/LoadPattern.hpp"
 #include "cyclone/rom/RetainedDofs.hpp"
 
 namespace cyclone::cyclic {
@@ -36,6 +37,7 @@ struct HarmonicModelProblem {
   std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
   std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
+  std::vector<LoadPattern> loads;               ///< the excitation part: loads that need not act at retained DOFs
   const cyclic::PrestressState* prestress = nullptr;  ///< tangent K + K_sigma - K_Omega; null: K
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
 };
@@ -62,16 +64,22 @@ public:
   Eigen::MatrixXcd compliance(double omega) const override;
   /// G^T K^{-1} G (CHOLMOD); InputError when K is singular (a free sector).
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
+  /// G^T ((1 + i eta) K - w^2 M)^{-1} F for the load patterns F (one complex factorization):
+  /// the reference for the reduced models' excitation part.
+  Eigen::Index numLoads() const override;
+  Eigen::MatrixXcd loadResponse(double omega) const override;
 
   /// The lowest `distinct` natural frequencies' modes (pairs twice) at the retained
-  /// DOFs; shift as in solvers::ModalOptions (automaticShift() for a free sector).
+  /// DOFs, with phi_j^T f for the load patterns; shift as in solvers::ModalOptions
+  /// (automaticShift() for a free sector).
   RetainedModes modes(int distinct, double shift = 0) const;
 
   /// The exact compliance at sigma = omega0^2 for the hybrid model, checked against
   /// `modes` (computed with this model): omega0^2 within 1e-3 (relative) of a natural
   /// frequency's square, or at or above the highest computed one, is an InputError.
   /// omega0 = 0 with rigid-body modes among `modes`: sigma moves automatically to half
-  /// the first elastic eigenvalue (reported in the note and the log).
+  /// the first elastic eigenvalue (reported in the note and the log). The load patterns'
+  /// static response G^T (K - sigma M)^{-1} F comes from the same factorization.
   StaticCompliance staticCompliance(double omega0, const RetainedModes& modes) const;
 
   /// The real-form K_k, M_k and their unknowns: what reductions onto the retained
