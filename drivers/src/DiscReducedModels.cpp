@@ -54,9 +54,11 @@ std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
   return h.hex();
 }
 
-std::vector<double> distinctHz(const rom::RetainedModes& m) {
+// Natural frequencies in Hz from eigenvalues with pairs listed twice (a pair counts once).
+std::vector<double> distinctHz(const std::vector<double>& eigenvalues, int copies) {
   std::vector<double> hz;
-  for (int j = 0; j < m.numModes(); j += m.copies) hz.push_back(std::sqrt(std::max(m.eigenvalues[j], 0.0)) / (2 * M_PI));
+  for (std::size_t j = 0; j < eigenvalues.size(); j += std::size_t(copies))
+    hz.push_back(std::sqrt(std::max(eigenvalues[j], 0.0)) / (2 * M_PI));
   return hz;
 }
 
@@ -138,8 +140,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     problem.prestress = &prestress;
   };
 
-  // The HDF5 form holds modal models (hybrid, truncation); the others are rebuilt.
-  const bool cache = !cacheDirectory.empty() && (spec.kind == "hybrid" || spec.kind == "truncation");
+  // Every reduced kind has an HDF5 form; the full FE model is the reference and is rebuilt.
+  const bool cache = !cacheDirectory.empty() && spec.kind != "full_fe";
   if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
   for (int k : nodalDiameters) {
     const std::string path =
@@ -148,10 +150,14 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     if (cache && std::filesystem::exists(path)) {
       if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
         out.check = readCheck(path + ".check.csv", k);
-      auto record = post::readReducedModelHdf5(path);
-      auto model = std::make_shared<rom::HybridFrfModel>(record.model());
-      out.naturalHz[k] = distinctHz(model->modes());
-      out.models[k] = model;
+      const auto record = post::readReducedModelHdf5(path);
+      if (record.kind != spec.kind) throw InputError(path, "holds a " + record.kind + " model, " + spec.kind + " expected");
+      // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
+      out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
+                             ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)
+                             : distinctHz(record.modes.eigenvalues, record.modes.copies);
+      if (out.naturalHz[k].empty()) throw InputError(path, "holds no natural frequencies of the full model");
+      out.models[k] = record.model();
       out.files[k] = path;
       ++out.reused;
       log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
@@ -165,15 +171,17 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     if (modes.numRigidBodyModes() > 0)
       throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +
                                                           ": a disc response needs the disc held (e.g. the bore)");
-    out.naturalHz[k] = distinctHz(modes);
+    out.naturalHz[k] = distinctHz(modes.eigenvalues, modes.copies);
     std::shared_ptr<const rom::ComplianceModel> model;
     std::shared_ptr<const rom::HybridFrfModel> hybrid;
+    std::shared_ptr<const rom::GuyanModel> guyan;
+    std::shared_ptr<const rom::CraigBamptonModel> craigBampton;
     if (spec.kind == "full_fe") {
       model = full;
     } else if (spec.kind == "guyan" || spec.kind == "craig_bampton") {
       const auto reduction = rom::reduceOntoRetainedDofs(*full, spec.kind == "guyan" ? 0 : spec.modes);
-      if (spec.kind == "guyan") model = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
-      else model = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
+      if (spec.kind == "guyan") model = guyan = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
+      else model = craigBampton = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
     } else {
       hybrid = spec.kind == "hybrid"
                    ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes),
@@ -210,14 +218,18 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
         << full->size() << " retained DOFs): built in " << build.seconds() << " s; first " << out.naturalHz[k].front()
         << " Hz";
     log::info(msg.str());
-    if (cache && hybrid) {
+    if (cache) {
       std::vector<int> nodes, directions, copies;
       const int nn = int(out.retainedNodes.size());
       for (int c = 0; c < full->copies(); ++c)
         for (int i = 0; i < nn; ++i)
           for (int d = 0; d < 3; ++d)
             nodes.push_back(int(out.retainedNodes[i])), directions.push_back(d), copies.push_back(c);
-      const auto record = post::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies);
+      auto record =
+          hybrid ? post::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies)
+          : guyan ? post::makeReducedModelRecord(*guyan, k, spec.sectors, spec.rpm, nodes, directions, copies)
+                  : post::makeReducedModelRecord(*craigBampton, k, spec.sectors, spec.rpm, nodes, directions, copies);
+      if (!hybrid) record.fullModelEigenvalues = modes.eigenvalues;
       if (comm->getRank() == 0) post::writeReducedModelHdf5(path, record);
       out.files[k] = path;
     }

@@ -46,4 +46,16 @@ inline double readDoubleAttribute(H5::H5File& f, const char* n) {
   return readAttribute<double>(f, n, H5::PredType::NATIVE_DOUBLE);
 }
 
+// Fixed-length string attributes (what h5dump and h5py show as plain strings).
+inline void writeStringAttribute(H5::H5File& f, const char* n, const std::string& v) {
+  const H5::StrType type(H5::PredType::C_S1, v.empty() ? 1 : v.size());
+  f.createAttribute(n, type, H5::DataSpace(H5S_SCALAR)).write(type, v);
+}
+inline std::string readStringAttribute(H5::H5File& f, const char* n) {
+  auto attr = f.openAttribute(n);
+  std::string v;
+  attr.read(attr.getStrType(), v);
+  return v;
+}
+
 }  // namespace cyclone::post::hdf5

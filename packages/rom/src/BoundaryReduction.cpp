@@ -4,7 +4,9 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 
+#include <array>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -14,6 +16,7 @@
 #include "cyclone/rom/CyclicHarmonicModel.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
+#include "TransposeProduct.hpp"
 
 namespace cyclone::rom {
 namespace {
@@ -22,13 +25,18 @@ using linalg::GlobalIndex;
 
 // The unknowns split into the retained DOFs (boundary, in retained order) and the
 // rest (interior, renumbered 0.. in the same order: the interior map keeps each
-// row on the rank that owns it in the full map).
+// row on the rank that owns it in the full map). A node retained in a local frame
+// has its 3 unknowns rotated into that frame first (rotation below): then unknown
+// j of the node is the displacement along frame vector j, and the directions not
+// retained are interior, so Guyan and Craig-Bampton condense them correctly.
 struct Partition {
   std::vector<GlobalIndex> boundary;  // unknown of retained DOF r
   std::vector<GlobalIndex> interior;  // full unknown -> interior unknown, -1 on the boundary
   std::vector<int> boundaryOf;        // full unknown -> retained DOF, -1 in the interior
   Teuchos::RCP<const linalg::Map> interiorMap;
   std::vector<long long> localInterior;  // owned full row -> owned interior row, -1 on the boundary
+  // The rotated nodes' unknowns: per node and copy, the unknowns of x, y, z and the frame.
+  std::vector<std::pair<std::array<GlobalIndex, 3>, Eigen::Matrix3d>> rotations;
 };
 
 std::string dofName(const mesh::Mesh& mesh, mesh::Index node, int d, int c) {
@@ -40,31 +48,43 @@ std::string dofName(const mesh::Mesh& mesh, mesh::Index node, int d, int c) {
 Partition partition(const CyclicHarmonicModel& model, const linalg::Map& fullMap) {
   const auto& T = model.operators().assembler->transform();
   const auto& mesh = model.operators().assembler->mesh();
-  const auto& nodes = model.retainedNodes();
-  const auto nn = Eigen::Index(nodes.size());
+  const auto& retained = model.retainedDofs();
   Partition p;
   const auto n = std::size_t(T.numEquations());
   p.boundaryOf.assign(n, -1);
-  for (int c = 0; c < model.copies(); ++c)
-    for (Eigen::Index i = 0; i < nn; ++i)
-      for (int d = 0; d < 3; ++d) {
-        const auto terms = T.terms(nodes[std::size_t(i)], d, c);
-        const auto count = terms.end() - terms.begin();
-        // A boundary coordinate must be an unknown itself: a fixed DOF has none, a
-        // right-face or axis node is a combination (its partner unknowns are interior).
-        if (count == 0)
-          throw InputError("retained", dofName(mesh, nodes[std::size_t(i)], d, c) +
-                                           " is fixed: a Guyan or Craig-Bampton boundary DOF must be free");
-        if (count > 1 || terms.begin()->coefficient != 1.0)
-          throw InputError("retained", dofName(mesh, nodes[std::size_t(i)], d, c) +
-                                           " is a combination of unknowns (a cyclic right-face or axis node): "
-                                           "retain nodes off the paired side faces and the axis");
-        const GlobalIndex eq = terms.begin()->equation;
-        if (p.boundaryOf[std::size_t(eq)] >= 0)
-          throw InputError("retained", dofName(mesh, nodes[std::size_t(i)], d, c) + " repeats another retained DOF");
-        p.boundaryOf[std::size_t(eq)] = int(p.boundary.size());
-        p.boundary.push_back(eq);
+  // The unknown of (node, global direction d, copy c). A boundary coordinate must be an
+  // unknown itself: a fixed DOF has none, a right-face or axis node is a combination
+  // (its partner unknowns are interior). A rotated node needs all 3 (the frame mixes them).
+  const auto unknown = [&](mesh::Index node, int d, int c) {
+    const auto terms = T.terms(node, d, c);
+    const auto count = terms.end() - terms.begin();
+    if (count == 0)
+      throw InputError("retained", dofName(mesh, node, d, c) +
+                                       " is fixed: a Guyan or Craig-Bampton boundary DOF (or a DOF of a node "
+                                       "retained in a local frame) must be free");
+    if (count > 1 || terms.begin()->coefficient != 1.0)
+      throw InputError("retained", dofName(mesh, node, d, c) +
+                                       " is a combination of unknowns (a cyclic right-face or axis node): "
+                                       "retain nodes off the paired side faces and the axis");
+    return GlobalIndex(terms.begin()->equation);
+  };
+  for (int c = 0; c < model.copies(); ++c) {
+    for (std::size_t i = 0; i < retained.nodes.size(); ++i)
+      if (retained.rotated[i]) {
+        std::array<GlobalIndex, 3> eqs{};
+        for (int d = 0; d < 3; ++d) eqs[std::size_t(d)] = unknown(retained.nodes[i], d, c);
+        p.rotations.emplace_back(eqs, retained.frames[i]);
       }
+    for (const auto& [i, j] : retained.dofs) {
+      const mesh::Index node = retained.nodes[std::size_t(i)];
+      // After the rotation the node's unknown of direction j is its coordinate along frame vector j.
+      const GlobalIndex eq = unknown(node, j, c);
+      if (p.boundaryOf[std::size_t(eq)] >= 0)
+        throw InputError("retained", dofName(mesh, node, j, c) + " repeats another retained DOF");
+      p.boundaryOf[std::size_t(eq)] = int(p.boundary.size());
+      p.boundary.push_back(eq);
+    }
+  }
   p.interior.assign(n, -1);
   GlobalIndex next = 0;
   for (std::size_t eq = 0; eq < n; ++eq)
@@ -159,20 +179,6 @@ linalg::MultiVector embed(const linalg::MultiVector& interior, const Eigen::Matr
   return out;
 }
 
-// A^T B (small, on every rank).
-Eigen::MatrixXd transposeProduct(const linalg::MultiVector& A, const linalg::MultiVector& B) {
-  const auto local = Teuchos::rcp(
-      new linalg::Map(Tpetra::global_size_t(A.getNumVectors()), 0, A.getMap()->getComm(), Tpetra::LocallyReplicated));
-  linalg::MultiVector C(local, B.getNumVectors());
-  C.multiply(Teuchos::TRANS, Teuchos::NO_TRANS, 1.0, A, B, 0.0);
-  Eigen::MatrixXd out(Eigen::Index(A.getNumVectors()), Eigen::Index(B.getNumVectors()));
-  for (std::size_t j = 0; j < B.getNumVectors(); ++j) {
-    const auto c = C.getData(j);
-    for (std::size_t i = 0; i < A.getNumVectors(); ++i) out(Eigen::Index(i), Eigen::Index(j)) = c[i];
-  }
-  return out;
-}
-
 // The boundary rows of X (retained x columns, on every rank): K_g = (K Psi)_b, since
 // K Psi vanishes on the interior; cheaper than Psi^T K Psi by a factor n / nb.
 Eigen::MatrixXd boundaryRows(const linalg::MultiVector& X, const Partition& p) {
@@ -191,6 +197,40 @@ Eigen::MatrixXd boundaryRows(const linalg::MultiVector& X, const Partition& p) {
 
 Eigen::MatrixXd symmetricPart(const Eigen::MatrixXd& A) { return 0.5 * (A + A.transpose()); }
 
+// R = the identity except, for each rotated node, u_d = sum_j frame(j, d) q_j on its
+// unknowns (frame rows are the unit vectors): new unknown j is q_j. Orthogonal.
+Teuchos::RCP<linalg::Matrix> rotation(const Partition& p, const Teuchos::RCP<const linalg::Map>& map) {
+  std::vector<const std::pair<std::array<GlobalIndex, 3>, Eigen::Matrix3d>*> rotatedRow(
+      map->getGlobalNumElements(), nullptr);
+  std::vector<int> directionOf(map->getGlobalNumElements(), -1);
+  for (const auto& r : p.rotations)
+    for (int d = 0; d < 3; ++d) rotatedRow[std::size_t(r.first[std::size_t(d)])] = &r, directionOf[std::size_t(r.first[std::size_t(d)])] = d;
+  auto R = Teuchos::rcp(new linalg::Matrix(map, 3));
+  for (std::size_t r = 0; r < map->getNodeNumElements(); ++r) {
+    const GlobalIndex row = map->getGlobalElement(r);
+    if (const auto* rot = rotatedRow[std::size_t(row)]) {
+      const int d = directionOf[std::size_t(row)];
+      const std::array<double, 3> v{rot->second(0, d), rot->second(1, d), rot->second(2, d)};
+      R->insertGlobalValues(row, Teuchos::ArrayView<const GlobalIndex>(rot->first.data(), 3),
+                            Teuchos::ArrayView<const double>(v.data(), 3));
+    } else {
+      const double one = 1.0;
+      R->insertGlobalValues(row, Teuchos::ArrayView<const GlobalIndex>(&row, 1), Teuchos::ArrayView<const double>(&one, 1));
+    }
+  }
+  R->fillComplete(map, map);
+  return R;
+}
+
+// R^T A R (sparse; only the rotated nodes' rows and columns change).
+Teuchos::RCP<linalg::Matrix> rotated(const linalg::Matrix& A, const linalg::Matrix& R) {
+  auto RtA = Teuchos::rcp(new linalg::Matrix(R.getDomainMap(), 0));
+  Tpetra::MatrixMatrix::Multiply(R, true, A, false, *RtA);
+  auto out = Teuchos::rcp(new linalg::Matrix(R.getDomainMap(), 0));
+  Tpetra::MatrixMatrix::Multiply(*RtA, false, R, false, *out);
+  return out;
+}
+
 }  // namespace
 
 BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int fixedInterfaceModes) {
@@ -199,11 +239,18 @@ BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int f
   const auto fullMap = op.K->getRowMap();
   Timer timer;
   const Partition p = partition(model, *fullMap);
+  // Nodes in local frames: K and M in the rotated unknowns (otherwise the model's own).
+  Teuchos::RCP<const linalg::Matrix> K = op.K, M = op.M;
+  if (!p.rotations.empty()) {
+    const auto R = rotation(p, fullMap);
+    K = rotated(*op.K, *R);
+    M = rotated(*op.M, *R);
+  }
   const auto interiorEquations = (long long)(p.interiorMap->getGlobalNumElements());
   if (fixedInterfaceModes * model.copies() >= interiorEquations)
     throw InputError("fixed_interface_modes", std::to_string(fixedInterfaceModes) + " asked for, the interior has " +
                                                   std::to_string(interiorEquations) + " unknowns");
-  const auto Kii = interiorBlock(*op.K, p);
+  const auto Kii = interiorBlock(*K, p);
   std::unique_ptr<solvers::DirectSolver> solver;
   try {
     solver = std::make_unique<solvers::DirectSolver>(*Kii);
@@ -214,12 +261,12 @@ BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int f
   const double factorSeconds = timer.seconds();
   const auto nb = Eigen::Index(p.boundary.size());
   linalg::MultiVector psiInterior(p.interiorMap, std::size_t(nb));
-  solver->solve(interiorCouplingRhs(*op.K, p), psiInterior);
+  solver->solve(interiorCouplingRhs(*K, p), psiInterior);
   const double solveSeconds = timer.seconds() - factorSeconds;
   const auto Psi = embed(psiInterior, Eigen::MatrixXd::Identity(nb, nb), fullMap, p);
   linalg::MultiVector KPsi(fullMap, std::size_t(nb)), MPsi(fullMap, std::size_t(nb));
-  op.K->apply(Psi, KPsi);
-  op.M->apply(Psi, MPsi);
+  K->apply(Psi, KPsi);
+  M->apply(Psi, MPsi);
 
   BoundaryReduction out;
   out.copies = model.copies();
@@ -234,7 +281,7 @@ BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int f
     solvers::ModalOptions opt;
     opt.numModes = fixedInterfaceModes * model.copies();
     opt.blockSize = std::max(4, 2 * model.copies());  // as for the sector's own modes: pairs together
-    const auto Mii = interiorBlock(*op.M, p);
+    const auto Mii = interiorBlock(*M, p);
     const auto modes = solvers::solveModes(*Kii, *Mii, opt);
     out.interfaceEigenvalues = modes.eigenvalues;
     const auto Phi = embed(*modes.modes, Eigen::MatrixXd::Zero(nb, Eigen::Index(modes.modes->getNumVectors())),

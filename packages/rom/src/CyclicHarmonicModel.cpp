@@ -12,26 +12,30 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
+#include "TransposeProduct.hpp"
 
 namespace cyclone::rom {
 
 struct CyclicHarmonicModel::Impl {
   cyclic::HarmonicOperators op;
-  std::vector<mesh::Index> nodes;
+  RetainedDofSet dofs;
   double eta = 0;
   Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
+  Teuchos::RCP<linalg::MultiVector> F;  // the load patterns (null: none)
 
-  Eigen::Index size() const { return Eigen::Index(3 * nodes.size() * op.copies); }
+  Eigen::Index size() const { return dofs.size() * op.copies; }
 
-  // G^T X: every column of X seen at the retained DOFs.
+  // G^T X: every column of X seen at the retained DOFs (along each DOF's unit vector).
   Eigen::MatrixXd retained(const linalg::MultiVector& X) const {
-    const auto nn = Eigen::Index(nodes.size());
+    const auto nd = dofs.size();
     Eigen::MatrixXd out(size(), X.getNumVectors());
     for (std::size_t j = 0; j < X.getNumVectors(); ++j)
       for (int c = 0; c < op.copies; ++c) {
         const auto field = op.assembler->nodalField(X, int(j), c);
-        for (Eigen::Index i = 0; i < nn; ++i)
-          for (int d = 0; d < 3; ++d) out((c * nn + i) * 3 + d, Eigen::Index(j)) = field[nodes[i]][d];
+        for (Eigen::Index k = 0; k < nd; ++k) {
+          const auto& u = field[dofs.nodes[std::size_t(dofs.dofs[std::size_t(k)].first)]];
+          out(c * nd + k, Eigen::Index(j)) = dofs.axis(k).dot(Eigen::Vector3d(u[0], u[1], u[2]));
+        }
       }
     return out;
   }
@@ -43,10 +47,7 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   auto& I = *impl_;
   problem.material.validate("material");
   if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
-  if (problem.retainedNodeSets.empty()) throw InputError("retained", "no retained node sets given");
-  for (const auto& name : problem.retainedNodeSets)
-    for (mesh::Index n : mesh.nodeSet(name))  // InputError naming a missing or empty set
-      if (std::find(I.nodes.begin(), I.nodes.end(), n) == I.nodes.end()) I.nodes.push_back(n);
+  I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections);
   Timer timer;
   I.op = cyclic::assembleHarmonicOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
                                            problem.prestress, comm);
@@ -55,17 +56,41 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   const auto& T = I.op.assembler->transform();
   const auto map = I.op.assembler->map();
   I.G = Teuchos::rcp(new linalg::MultiVector(map, std::size_t(I.size())));
-  const auto nn = Eigen::Index(I.nodes.size());
+  const auto nd = I.dofs.size();
   for (int c = 0; c < I.op.copies; ++c)
-    for (Eigen::Index i = 0; i < nn; ++i)
+    for (Eigen::Index k = 0; k < nd; ++k) {
+      const mesh::Index node = I.dofs.nodes[std::size_t(I.dofs.dofs[std::size_t(k)].first)];
+      const Eigen::Vector3d axis = I.dofs.axis(k);
       for (int d = 0; d < 3; ++d)
-        for (const auto& term : T.terms(I.nodes[i], d, c))
-          if (map->isNodeGlobalElement(term.equation))
-            I.G->sumIntoGlobalValue(term.equation, std::size_t((c * nn + i) * 3 + d), term.coefficient);
+        for (const auto& term : T.terms(node, d, c))
+          if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
+            I.G->sumIntoGlobalValue(term.equation, std::size_t(c * nd + k), axis[d] * term.coefficient);
+    }
+  if (!problem.loads.empty()) {
+    I.F = Teuchos::rcp(new linalg::MultiVector(map, problem.loads.size()));
+    for (std::size_t p = 0; p < problem.loads.size(); ++p) {
+      const auto& load = problem.loads[p];
+      const std::string where = "loads/" + (load.name.empty() ? std::to_string(p) : load.name);
+      if (load.forces.empty()) throw InputError(where, "no forces given");
+      for (const auto& f : load.forces) {
+        if (f.node < 0 || f.node >= mesh.numNodes())
+          throw InputError(where, "node index " + std::to_string(f.node) + " is not in the mesh");
+        if (f.copy < 0 || f.copy >= I.op.copies)
+          throw InputError(where, "copy " + std::to_string(f.copy) + " at harmonic index " +
+                                      std::to_string(problem.harmonic) + " (it has " + std::to_string(I.op.copies) +
+                                      " real-form copies)");
+        if (!f.force.allFinite()) throw InputError(where, "a force that is not a finite number");
+        for (int d = 0; d < 3; ++d)
+          for (const auto& term : T.terms(f.node, d, f.copy))  // a fixed DOF takes no load
+            if (f.force[d] != 0 && map->isNodeGlobalElement(term.equation))
+              I.F->sumIntoGlobalValue(term.equation, p, f.force[d] * term.coefficient);
+      }
+    }
+  }
   std::ostringstream msg;
   msg << "harmonic model k = " << problem.harmonic << ": " << T.numEquations() << " equations, " << I.size()
-      << " retained DOFs (" << nn << " nodes x 3 x " << I.op.copies << " copies), assembled in " << timer.seconds()
-      << " s";
+      << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes, " << I.op.copies
+      << " copies), assembled in " << timer.seconds() << " s";
   log::info(msg.str());
 }
 
@@ -75,7 +100,8 @@ int CyclicHarmonicModel::harmonic() const { return impl_->op.harmonic; }
 int CyclicHarmonicModel::copies() const { return impl_->op.copies; }
 long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
 double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
-const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->nodes; }
+const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->dofs.nodes; }
+const RetainedDofSet& CyclicHarmonicModel::retainedDofs() const { return impl_->dofs; }
 Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
 const cyclic::HarmonicOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
 const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *impl_->G; }
@@ -89,6 +115,22 @@ Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   A.real() = I.retained(xr);
   A.imag() = I.retained(xi);
   return A;
+}
+
+Eigen::Index CyclicHarmonicModel::numLoads() const {
+  return impl_->F.is_null() ? 0 : Eigen::Index(impl_->F->getNumVectors());
+}
+
+Eigen::MatrixXcd CyclicHarmonicModel::loadResponse(double omega) const {
+  const auto& I = *impl_;
+  if (I.F.is_null()) return ComplianceModel::loadResponse(omega);  // the InputError
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega);
+  linalg::MultiVector xr(I.F->getMap(), I.F->getNumVectors()), xi(I.F->getMap(), I.F->getNumVectors());
+  solver.solve(*I.F, xr, xi);
+  Eigen::MatrixXcd X(I.size(), numLoads());
+  X.real() = I.retained(xr);
+  X.imag() = I.retained(xi);
+  return X;
 }
 
 Eigen::MatrixXd CyclicHarmonicModel::zeroFrequencyCompliance() const {
@@ -115,6 +157,7 @@ RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
   out.copies = I.op.copies;
   out.eigenvalues = result.eigenvalues;
   out.shapes = I.retained(*result.modes);
+  if (!I.F.is_null()) out.loads = transposeProduct(*result.modes, *I.F);
   out.seconds = timer.seconds();
   return out;
 }
@@ -163,6 +206,11 @@ StaticCompliance CyclicHarmonicModel::staticCompliance(double omega0, const Reta
   solver.solve(*I.G, X);
   out.matrix = I.retained(X);
   out.matrix = 0.5 * (out.matrix + out.matrix.transpose()).eval();
+  if (!I.F.is_null()) {
+    linalg::MultiVector XF(I.F->getMap(), I.F->getNumVectors());
+    solver.solve(*I.F, XF);
+    out.loadResponse = I.retained(XF);
+  }
   out.note = note.str();
   out.seconds = timer.seconds();
   return out;

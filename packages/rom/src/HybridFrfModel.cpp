@@ -16,6 +16,7 @@ RetainedModes RetainedModes::first(int distinct) const {
   out.copies = copies;
   out.eigenvalues.assign(eigenvalues.begin(), eigenvalues.begin() + m);
   out.shapes = shapes.leftCols(m);
+  if (loads.size()) out.loads = loads.topRows(m);
   out.seconds = seconds;
   return out;
 }
@@ -32,6 +33,9 @@ HybridFrfModel::HybridFrfModel(RetainedModes modes, double lossFactor) : modes_(
   if (modes_.shapes.cols() != modes_.numModes())
     throw InputError("modes", "mode shapes and eigenvalues differ in number");
   if (!(lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
+  if (modes_.loads.size() && modes_.loads.rows() != modes_.numModes())
+    throw InputError("loads", "modal loads for " + std::to_string(modes_.loads.rows()) + " modes, the model has " +
+                                  std::to_string(modes_.numModes()));
 }
 
 HybridFrfModel::HybridFrfModel(RetainedModes modes, StaticCompliance staticCompliance, double lossFactor)
@@ -40,6 +44,11 @@ HybridFrfModel::HybridFrfModel(RetainedModes modes, StaticCompliance staticCompl
     throw InputError("static compliance", "is " + std::to_string(staticCompliance.matrix.rows()) + " x " +
                                               std::to_string(staticCompliance.matrix.cols()) + ", the modes have " +
                                               std::to_string(size()) + " retained DOFs");
+  if (staticCompliance.loadResponse.cols() != numLoads() ||
+      (numLoads() > 0 && staticCompliance.loadResponse.rows() != size()))
+    throw InputError("loads", "the static load response (" + std::to_string(staticCompliance.loadResponse.cols()) +
+                                  " patterns) and the modal loads (" + std::to_string(numLoads()) +
+                                  ") must come from the same load patterns");
   static_ = std::move(staticCompliance);
   hasStatic_ = true;
 }
@@ -65,7 +74,7 @@ Eigen::MatrixXcd HybridFrfModel::residualCompliance() const {
   return static_.matrix.cast<std::complex<double>>() / damped + phi * w.asDiagonal() * phi.transpose();
 }
 
-Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
+Eigen::VectorXcd HybridFrfModel::expansionWeights(double omega) const {
   const std::complex<double> damped(1.0, eta_);
   const double w2 = omega * omega;
   Eigen::VectorXcd weight(modes_.numModes());
@@ -74,13 +83,29 @@ Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
     weight(j) = 1.0 / (damped * l - w2);
     if (hasStatic_) weight(j) -= 1.0 / (damped * (l - static_.shift));
   }
+  return weight;
+}
+
+Eigen::MatrixXcd HybridFrfModel::compliance(double omega) const {
+  const Eigen::VectorXcd weight = expansionWeights(omega);
   // Real shapes, complex weights: two real products (half the work of one complex product).
   const auto& phi = modes_.shapes;
   Eigen::MatrixXcd A(size(), size());
   A.real() = phi * weight.real().asDiagonal() * phi.transpose();
   A.imag() = phi * weight.imag().asDiagonal() * phi.transpose();
-  if (hasStatic_) A += static_.matrix.cast<std::complex<double>>() / damped;
+  if (hasStatic_) A += static_.matrix.cast<std::complex<double>>() / std::complex<double>(1.0, eta_);
   return A;
+}
+
+Eigen::MatrixXcd HybridFrfModel::loadResponse(double omega) const {
+  if (numLoads() == 0) return ComplianceModel::loadResponse(omega);  // the InputError
+  const Eigen::VectorXcd weight = expansionWeights(omega);
+  const auto& phi = modes_.shapes;
+  Eigen::MatrixXcd X(size(), numLoads());
+  X.real() = phi * weight.real().asDiagonal() * modes_.loads;
+  X.imag() = phi * weight.imag().asDiagonal() * modes_.loads;
+  if (hasStatic_) X += static_.loadResponse.cast<std::complex<double>>() / std::complex<double>(1.0, eta_);
+  return X;
 }
 
 Eigen::MatrixXd HybridFrfModel::zeroFrequencyCompliance() const {

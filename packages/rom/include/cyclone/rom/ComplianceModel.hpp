@@ -3,9 +3,11 @@
 // at its retained DOFs for a frequency, whatever kind of model it is (the full
 // FE reference, the hybrid FRF model, modal truncation). Eigen only.
 //
-// Retained DOF order: index = (copy * retainedNodes + node) * 3 + direction,
-// copy 0 and 1 being the real and imaginary parts of the cyclic real form at
-// harmonic index k (one copy for k = 0 and N/2). The complex entries are the
+// Retained DOF order: index = copy * (DOFs per copy) + DOF, copy 0 and 1 being
+// the real and imaginary parts of the cyclic real form at harmonic index k (one
+// copy for k = 0 and N/2), the DOFs of a copy node by node, each node's chosen
+// directions in order (RetainedDofs.hpp); with all 3 global directions, index =
+// (copy * retainedNodes + node) * 3 + direction. The complex entries are the
 // time-harmonic amplitudes x = A(omega) f for f e^{i omega t}.
 #include <Eigen/Dense>
 
@@ -22,6 +24,12 @@ public:
   /// harmonic balance solution sees. Structural damping has no meaning at zero
   /// frequency, so this is not compliance(0). InputError for a model with rigid-body modes.
   virtual Eigen::MatrixXd zeroFrequencyCompliance() const = 0;
+
+  /// Load patterns the model carries (its excitation part): 0 unless built with some.
+  virtual Eigen::Index numLoads() const { return 0; }
+  /// x_r(omega) = A_rf(omega) f: the retained DOFs' response to each load pattern (one
+  /// column each). InputError for a model without load patterns.
+  virtual Eigen::MatrixXcd loadResponse(double omega) const;
 };
 
 }  // namespace cyclone::rom

@@ -31,6 +31,11 @@ public:
   /// shapes restricted to the boundary (retained) DOFs.
   const RetainedModes& modes() const { return modal_.modes(); }
   int numInterfaceModes() const { return int(interface_.size()); }
+  /// What it was built from (the HDF5 form stores these): K_g, M_g, M_bm and lambda_j of the modes kept.
+  const Eigen::MatrixXd& boundaryStiffness() const { return stiffness_; }
+  const Eigen::MatrixXd& boundaryMass() const { return mass_; }
+  const Eigen::MatrixXd& massCoupling() const { return coupling_; }
+  const Eigen::VectorXd& interfaceEigenvalues() const { return interface_; }
   /// K_r and M_r, boundary first.
   Eigen::MatrixXd reducedStiffness() const;
   Eigen::MatrixXd reducedMass() const;

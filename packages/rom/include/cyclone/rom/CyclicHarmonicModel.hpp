@@ -1,6 +1,7 @@
 #pragma once
 // The full FE model of a cyclic sector at one harmonic index k, seen at
-// retained DOFs (all 3 directions of the nodes of some node sets): the
+// retained DOFs (the nodes of some node sets, all 3 directions or chosen ones,
+// in the global frame or a given local one: RetainedDofs.hpp): the
 // real-form K_k (prestressed tangent when given) and M_k assembled as for the
 // modes (cyclic::assembleHarmonicOperators), and from them
 //   - the full-FE dynamic compliance G^T ((1 + i eta) K - w^2 M)^{-1} G by a
@@ -9,7 +10,9 @@
 //   - the exact static compliance G^T (K - sigma M)^{-1} G from one CHOLMOD
 //     factorization with all retained DOFs as right-hand sides.
 // G maps unknowns to the retained physical DOFs (a right-face node is a
-// combination of left-face unknowns; a fixed DOF has a zero column).
+// combination of left-face unknowns; a fixed DOF has a zero column); its column
+// for a DOF in a local frame is the unit load along that frame vector.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +22,8 @@
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/rom/LoadPattern.hpp"
+#include "cyclone/rom/RetainedDofs.hpp"
 
 namespace cyclone::cyclic {
 struct HarmonicOperators;
@@ -31,6 +36,8 @@ struct HarmonicModelProblem {
   int harmonic = 0;                             ///< k in 0..N/2
   std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
+  std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
+  std::vector<LoadPattern> loads;               ///< the excitation part: loads that need not act at retained DOFs
   const cyclic::PrestressState* prestress = nullptr;  ///< tangent K + K_sigma - K_Omega; null: K
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
 };
@@ -49,22 +56,30 @@ public:
   long long equations() const;
   double lossFactor() const;
   const std::vector<mesh::Index>& retainedNodes() const;
+  /// The retained DOFs of one copy (copy c's DOF k is compliance row c * dofs + k).
+  const RetainedDofSet& retainedDofs() const;
   Eigen::Index size() const override;
 
   /// The full-FE compliance at the retained DOFs (one complex factorization).
   Eigen::MatrixXcd compliance(double omega) const override;
   /// G^T K^{-1} G (CHOLMOD); InputError when K is singular (a free sector).
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
+  /// G^T ((1 + i eta) K - w^2 M)^{-1} F for the load patterns F (one complex factorization):
+  /// the reference for the reduced models' excitation part.
+  Eigen::Index numLoads() const override;
+  Eigen::MatrixXcd loadResponse(double omega) const override;
 
   /// The lowest `distinct` natural frequencies' modes (pairs twice) at the retained
-  /// DOFs; shift as in solvers::ModalOptions (automaticShift() for a free sector).
+  /// DOFs, with phi_j^T f for the load patterns; shift as in solvers::ModalOptions
+  /// (automaticShift() for a free sector).
   RetainedModes modes(int distinct, double shift = 0) const;
 
   /// The exact compliance at sigma = omega0^2 for the hybrid model, checked against
   /// `modes` (computed with this model): omega0^2 within 1e-3 (relative) of a natural
   /// frequency's square, or at or above the highest computed one, is an InputError.
   /// omega0 = 0 with rigid-body modes among `modes`: sigma moves automatically to half
-  /// the first elastic eigenvalue (reported in the note and the log).
+  /// the first elastic eigenvalue (reported in the note and the log). The load patterns'
+  /// static response G^T (K - sigma M)^{-1} F comes from the same factorization.
   StaticCompliance staticCompliance(double omega0, const RetainedModes& modes) const;
 
   /// The real-form K_k, M_k and their unknowns: what reductions onto the retained

@@ -28,6 +28,7 @@ struct RetainedModes {
   int copies = 1;
   std::vector<double> eigenvalues;  ///< omega_j^2 in (rad/s)^2, ascending; pairs listed twice
   Eigen::MatrixXd shapes;           ///< retained DOFs x modes, from mass-normalised modes
+  Eigen::MatrixXd loads;            ///< modes x load patterns: phi_j^T f (empty: no load patterns)
   double seconds = 0;               ///< eigen-solution time
 
   int numModes() const { return int(eigenvalues.size()); }
@@ -42,6 +43,7 @@ struct StaticCompliance {
   double omega0 = 0;      ///< requested expansion frequency (rad/s)
   double shift = 0;       ///< sigma actually used, (rad/s)^2 (= omega0^2 unless shifted automatically)
   Eigen::MatrixXd matrix; ///< retained DOFs x retained DOFs
+  Eigen::MatrixXd loadResponse;  ///< retained DOFs x load patterns: G^T (K - sigma M)^{-1} f (same factorization)
   std::string note;       ///< how sigma was chosen (an automatic shift is reported here and in the log)
   double seconds = 0;     ///< factorization and solves
 };
@@ -56,6 +58,11 @@ public:
   Eigen::Index size() const override { return modes_.shapes.rows(); }
   Eigen::MatrixXcd compliance(double omega) const override;
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
+  /// The excitation part (seed eqs. 5.27-5.35) for loads off the retained DOFs, with the
+  /// same weights as the compliance: A0_rf f / (1 + i eta) + Phi diag(w_j(omega)) (Phi^T f);
+  /// exact with all modes, its truncation error that of the compliance.
+  Eigen::Index numLoads() const override { return modes_.loads.cols(); }
+  Eigen::MatrixXcd loadResponse(double omega) const override;
 
   bool hasStaticCorrection() const { return hasStatic_; }
   /// The split A(w) = R + Phi diag(d(w)) Phi^T: R = A0 / (1 + i eta) - Phi diag(1 / ((1 + i eta)(l_j - sigma))) Phi^T
@@ -68,6 +75,8 @@ public:
 
 private:
   HybridFrfModel(RetainedModes modes, double lossFactor);
+  // Per mode: 1 / ((1 + i eta) l_j - w^2), less 1 / ((1 + i eta)(l_j - sigma)) with the static correction.
+  Eigen::VectorXcd expansionWeights(double omega) const;
   RetainedModes modes_;
   StaticCompliance static_;
   bool hasStatic_ = false;

@@ -1,0 +1,54 @@
+// Reduced models cached in HDF5 by buildDiscReducedModels: every reduced kind
+// (hybrid, Guyan, Craig-Bampton) is written on the first build and read back on
+// the second, and the reused model is the built one exactly (compliance at and
+// between resonances, zero-frequency compliance, the full model's natural
+// frequencies used for the resonance estimate).
+#include <Tpetra_Core.hpp>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cyclone/core/Log.hpp"
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "cyclone/scenes/DiscReducedModels.hpp"
+
+using namespace cyclone;
+namespace fs = std::filesystem;
+
+TEST(ReducedModelCache, EveryKindIsReusedExactly) {
+  log::setQuiet(true);
+  mesh::ShroudedSectorParameters p;  // the small disc of the reduced-model proofs
+  p.sectors = 8;
+  p.meshSize = 14.0;
+  p.boreRadius = 70.0;
+  const auto mesh = mesh::generateShroudedSector(p);
+  const auto dir = fs::temp_directory_path() / "cyclone_reduced_model_cache";
+  fs::remove_all(dir);
+  for (const std::string kind : {"guyan", "craig_bampton", "hybrid"}) {
+    scenes::DiscModelSpec spec;
+    spec.sectors = p.sectors;
+    spec.rpm = 10000;
+    spec.prestress = "linear";
+    spec.kind = kind;
+    spec.modes = 6;
+    const std::vector<int> nds{2};
+    const auto built = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+    const auto reused = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+    EXPECT_EQ(built.built, 1) << kind;
+    EXPECT_EQ(reused.reused, 1) << kind;
+    EXPECT_EQ(reused.built, 0) << kind;
+    ASSERT_EQ(reused.files.at(2), built.files.at(2));
+    EXPECT_TRUE(fs::exists(built.files.at(2))) << kind;
+    EXPECT_EQ(reused.naturalHz.at(2), built.naturalHz.at(2)) << kind;
+    const auto& a = *built.models.at(2);
+    const auto& b = *reused.models.at(2);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ((a.zeroFrequencyCompliance() - b.zeroFrequencyCompliance()).cwiseAbs().maxCoeff(), 0.0) << kind;
+    const double f1 = 2 * M_PI * built.naturalHz.at(2).front(), f2 = 2 * M_PI * built.naturalHz.at(2)[1];
+    for (double w : {0.5 * f1, f1, 0.5 * (f1 + f2), f2, 3.0 * f2})
+      EXPECT_EQ((a.compliance(w) - b.compliance(w)).cwiseAbs().maxCoeff(), 0.0) << kind << " at " << w << " rad/s";
+  }
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.path().extension() == ".h5";
+  EXPECT_EQ(files, 3);  // one per kind: the kind is part of the content hash
+}
