@@ -303,8 +303,12 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   DiscResponseSpec spec;
   if (forcedResponse) {
     spec = readResponseSpec(d);
-    if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors)
-      nds = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, spec.harmonics);
+    if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors) {
+      // Also the nodal diameter of harmonic H + 1, for the curve's harmonics check.
+      auto checked = spec.harmonics;
+      checked.push_back(*std::max_element(checked.begin(), checked.end()) + 1);
+      nds = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, checked);
+    }
     if (r.has("nodal_diameters"))
       throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
   } else {
@@ -373,6 +377,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   opt.initialStep = cs.getDouble("initial_step", 0.002);
   opt.maxStep = cs.getDouble("max_step", 0.02);
   opt.arcLengthScaling = false;  // the unknowns are scaled to order one (makeDiscForcedResponse)
+  opt.stopWhereItTurnsBack = true;  // never a false "range finished" after walking back from a kink
   opt.minStep = cs.getDouble("min_step", 1e-7);
   opt.maxSteps = cs.getInt("max_points", 2000);
   opt.tolerance = cs.getDouble("tolerance", 1e-8);
@@ -440,7 +445,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                                 ", " + std::to_string(reference.branch.points.size()) + " points)",
                             responseTimer.seconds(),
                             "Newton tolerance " + shortNumber(opt.tolerance) +
-                                " (residual relative to the forces); " + reference.samplesCheck});
+                                " (residual relative to the forces); " + reference.samplesCheck + "; " +
+                                reference.harmonicsCheck});
   if (!reference.branch.points.empty() && comm->getRank() == 0) {
     const PeakContactStates peak = peakContactStates(setup, reference);
     const auto energies =

@@ -27,10 +27,7 @@ namespace {
 // The AFT sample count is checked by doubling it: the largest-response point
 // is solved again with 2N samples and the change of its peak reported (friction
 // and gaps place their events only to within a sample).
-std::string samplesCheck(ForcedResponseSetup& setup, const continuation::Branch& branch,
-                         const std::vector<double>& peaks) {
-  const std::size_t ip = std::max_element(peaks.begin(), peaks.end()) - peaks.begin();
-  const auto& pt = branch.points[ip];
+std::string samplesCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
   const auto [w, scale] = setup.apply(pt.parameter);
   const auto& hb = *setup.system;
   const int N = hb.aft().numSamples(), dof = setup.outputDofs.front(), nc = hb.numCoefficients();
@@ -46,12 +43,48 @@ std::string samplesCheck(ForcedResponseSetup& setup, const continuation::Branch&
     log::warn(out.str());
     return out.str();
   }
-  const double before = peaks[ip];
+  const double before = peak;
   const double after = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(X.segment(dof * nc, nc)));
   const double change = std::abs(after / before - 1);
   out << "samples check: " << N << " -> " << 2 * N << " samples changes the peak max|x| of DOF " << dof << " by "
       << change << " (relative)";
   if (change > 1e-2) log::warn(out.str() + ": raise `samples`");
+  return out.str();
+}
+
+// The harmonic truncation is checked by raising H by one: the largest-response
+// point is solved again with harmonics 0..H+1 (the same list plus H + 1) and
+// the change of its peak reported. Not possible when the system has nothing
+// for harmonic H + 1 (a reduced model without that nodal diameter): said so.
+std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
+  const auto [w, scale] = setup.apply(pt.parameter);
+  const auto& hb = *setup.system;
+  const auto& H = hb.aft().harmonics();
+  const int dof = setup.outputDofs.front(), next = H.maxHarmonic() + 1;
+  std::vector<int> list = H.harmonics();
+  list.push_back(next);
+  std::ostringstream out;
+  out << "harmonics check: H " << H.maxHarmonic() << " -> " << next;
+  try {
+    const hbm::HarmonicSet raised(list);
+    const auto refined =
+        hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+    const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
+    Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
+    const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+    if (!newton.converged) {
+      out << ": no solution at the peak (residual " << newton.residualNorm << ")";
+      log::warn(out.str());
+      return out.str();
+    }
+    const int nc = refined->numCoefficients();
+    const double after = hbm::peakMagnitude(raised, Eigen::VectorXd(X.segment(dof * nc, nc)));
+    const double change = std::abs(after / peak - 1);
+    out << " changes the peak max|x| of DOF " << dof << " by " << change << " (relative)";
+    if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
+  } catch (const std::exception& e) {
+    out << ": not possible (" << e.what() << ")";
+  }
   return out.str();
 }
 
@@ -181,7 +214,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
       const bool stablePart = plotStable[i] == 1;
       std::string label;
       if (!labelled[stablePart]) {
-        label = std::string(stablePart ? "stable" : "unstable") + ", H = " + std::to_string(harmonics.maxHarmonic());
+        label = (hill ? std::string(stablePart ? "stable" : "unstable") + ", " : std::string()) + "H = " +
+                std::to_string(harmonics.maxHarmonic());
         labelled[stablePart] = true;
       }
       plot.addLine(std::vector<double>(plotW.begin() + i, plotW.begin() + j + 1),
@@ -225,8 +259,11 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     result.peak = plotMax[ip];
     result.peakParameter = branch.points[ip].parameter;
     result.peakOmega = frequency(branch.points[ip].parameter);
-    result.samplesCheck = samplesCheck(setup, branch, plotMax);
+    // Both checks at the largest-response point.
+    result.samplesCheck = samplesCheck(setup, branch.points[ip], plotMax[ip]);
     summary.computed.push_back(result.samplesCheck);  // rank 0
+    result.harmonicsCheck = harmonicsCheck(setup, branch.points[ip], plotMax[ip]);
+    summary.computed.push_back(result.harmonicsCheck);
   }
   return result;
 }

@@ -22,7 +22,7 @@ struct ForcedResponseResult {
   double peakParameter = 0;  ///< the continuation parameter there
   double peakOmega = 0;      ///< the frequency there (rad/s)
   double seconds = 0;
-  std::string startMethod, samplesCheck;
+  std::string startMethod, samplesCheck, harmonicsCheck;
 };
 
 /// Finds the first point, traces the curve and writes <name>.csv, <name>.svg and

@@ -32,8 +32,9 @@ public:
   /// before: the branch's point before x0 when LOCA resumes a branch (nullptr at its start),
   /// so that a first step back along it is caught too.
   Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch,
-            const BranchPoint* before, double lo, double hi)
-      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(before), lo_(lo), hi_(hi) {
+            const BranchPoint* before, double lo, double hi, bool check)
+      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(before), lo_(lo), hi_(hi),
+        check_(check) {
     for (int i = 0; i < x0.size(); ++i) guess_(i) = x0(i);
   }
   const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
@@ -70,11 +71,16 @@ public:
     for (std::size_t i = 0; i + 1 < branch_.points.size(); ++i) path.push_back(&branch_.points[i]);
     // LOCA's last step overshoots the range's bound and then steps back onto it: not a flip.
     const double last = path.empty() ? p_ : path.back()->parameter;
-    const int kink = last >= lo_ && last <= hi_ ? retracedFrom(path, branch_.points.back()) : -1;
-    if (kink >= 0) {
-      // Keep the points up to the kink (path index kink; path[0] is before_ when given).
-      const int keep = kink + 1 - (before_ ? 1 : 0);
-      branch_.points.resize(std::size_t(std::max(keep, 1)));
+    const int kink = check_ && last >= lo_ && last <= hi_ ? retracedFrom(path, branch_.points.back()) : -1;
+    // LOCA sometimes takes one step back at a kink and turns forward again by
+    // itself: only a retrace that goes on for kRetraceSteps points is stopped.
+    if (kink < 0) {
+      retracing_ = 0;
+    } else if (retracing_++ == 0) {
+      kinkPoint_ = kink - (before_ ? 1 : 0);  // index in this run's points (path[0] is before_ when given)
+    }
+    if (retracing_ >= kRetraceSteps) {
+      branch_.points.resize(std::size_t(std::max(kinkPoint_ + 1, 1)));
       std::ostringstream msg;
       msg << "the arclength predictor turned back onto the branch at p = " << branch_.points.back().parameter;
       throw BranchTurnedBack(msg.str());
@@ -105,6 +111,9 @@ private:
   Branch& branch_;
   const BranchPoint* before_;
   double lo_, hi_;
+  bool check_;
+  static constexpr int kRetraceSteps = 3;
+  int retracing_ = 0, kinkPoint_ = 0;
   Timer sinceLog_, total_;
   long residuals_ = 0, jacobians_ = 0;
   std::size_t pointsAtLog_ = 0;
@@ -144,7 +153,8 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
     LOCA::ParameterVector p;
     p.addParameter("p", p0);
     const BranchPoint* before = keepStart || branch.points.size() < 2 ? nullptr : &branch.points[branch.points.size() - 2];
-    Interface iface(problem, x0, p0, run, before, std::min(o.from, o.to), std::max(o.from, o.to));
+    Interface iface(problem, x0, p0, run, before, std::min(o.from, o.to), std::max(o.from, o.to),
+                    o.stopWhereItTurnsBack);
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
     group->setParams(p);
     auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
