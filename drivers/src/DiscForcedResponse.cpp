@@ -179,7 +179,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   setup.parameter = ForcedResponseSetup::Parameter::Omega;
   setup.omegaUnit = 2 * M_PI * referenceHz;
   setup.unknownScale = 0;  // displacements of ~1e-3 mm: scaled to order one for the arclength
-  setup.stability = "false";
+  setup.stability = "auto";  // the scene's disc_response/stability
   return setup;
 }
 

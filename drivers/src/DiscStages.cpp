@@ -372,6 +372,9 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
     throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
   const std::vector<int> hysteresisContacts = d.getIntList("hysteresis_contacts", {});
+  const std::string stability = d.getString("stability", "auto");
+  if (stability != "auto" && stability != "true" && stability != "false")
+    throw InputError(d.where("stability"), "must be auto, true or false");
   auto cs = d.section("continuation");
   continuation::ContinuationOptions opt;
   opt.initialStep = cs.getDouble("initial_step", 0.002);
@@ -422,6 +425,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   }
   auto traceOne = [&](ForcedResponseSetup& s, const std::string& name) {
     s.omegaUnit = 2 * M_PI * fromHz;
+    s.stability = stability;
     s.continuation = opt;
     s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
     const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);

@@ -132,15 +132,35 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
   if (!hill && setup.stability != "false")
     log::warn("stability not computed: Hill's method with velocity-dependent elements is not supported yet");
   if (hill && hb.isReceptance()) {
-    hill = false;
-    if (setup.stability == "true")
-      throw InputError("output/stability", "Hill's method needs M, C and K; a reduced (receptance) model has none");
-    log::info("stability not computed: Hill's method needs M, C and K, a reduced (receptance) model gives none; "
-              "folds are still flagged from the curve's path");
+    // Hill's method runs on the reduced models' modal realizations (ReceptanceHill.cpp): the
+    // full FE compliance has none. Its cost is a dense LU of n nc per point.
+    std::string why;
+    int modes = 0;
+    for (int h : harmonics.harmonics()) {
+      const auto r = hb.receptance()->modalRealization(hb.phaseIndex(h));
+      if (!r) {
+        why = "the model of nodal diameter " + std::to_string(hb.nodalDiameter(h)) +
+              " has no modal form (Hill's method needs one)";
+        break;
+      }
+      modes += (h == 0 ? 1 : 2) * r->numModes();
+    }
+    if (!why.empty()) {
+      hill = false;
+      if (setup.stability == "true") throw InputError("output/stability", why);
+      log::info("stability not computed: " + why + "; folds are still flagged from the curve's path");
+    } else if (setup.stability == "auto" && hb.numUnknowns() > 1500) {
+      hill = false;
+      log::warn("stability not computed: Hill's method on the reduced model needs an LU of " +
+                std::to_string(hb.numUnknowns()) + " per point (set output: stability: true to compute it anyway)");
+    } else {
+      log::info("stability by Hill's method on the reduced model's modal realization (" + std::to_string(modes) +
+                " modal coordinates over the harmonics)");
+    }
   }
   // Hill's eigenproblem is dense of size 2 n nc: about a second per point at
   // 1200, so larger systems skip it unless the scene insists.
-  if (hill && setup.stability == "auto" && 2 * hb.numUnknowns() > 1200) {
+  if (hill && !hb.isReceptance() && setup.stability == "auto" && 2 * hb.numUnknowns() > 1200) {
     hill = false;
     log::warn("stability not computed: Hill's eigenproblem has " + std::to_string(2 * hb.numUnknowns()) +
               " unknowns per point (set output: stability: true to compute it anyway)");
@@ -157,7 +177,7 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
       if (hill) {
         const auto fl = hbm::hillStability(hb, pt.x, st.omega);
         st.stable = fl.stable ? 1 : 0;
-        st.leading = fl.exponents(0);
+        if (fl.exponents.size() > 0) st.leading = fl.exponents(0), st.hasLeading = true;
       }
       stability.push_back(st);
     }
@@ -190,7 +210,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
       }
       if (hill) {
         const auto& st = stability[i];
-        csv << "," << st.stable << "," << st.leading.real();
+        csv << "," << st.stable << ",";
+        if (st.hasLeading) csv << st.leading.real();
         plotStable.push_back(st.stable);
         unstablePoints += st.stable ? 0 : 1;
       } else {

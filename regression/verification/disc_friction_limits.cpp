@@ -10,6 +10,8 @@
 //  - very stiff stuck contacts tie the shroud faces: the stuck resonance is the
 //    first family of the fixed-shroud cyclic modal analysis (another code path:
 //    the cyclic constraint on the side faces, Anasazi on the full sector);
+//  - with stuck contacts the disc is a linear damped structure: Hill's method on
+//    the reduced model's modal realization finds it stable;
 //  - in between, friction damps: the curve's peak lies below the stuck limit's
 //    peak and between the two limits' resonances, and moves up with the preload;
 //  - gap elements (seed 8.6) at the outermost pairs: with an interference larger
@@ -27,6 +29,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/rom/SectorReceptance.hpp"
@@ -141,11 +144,19 @@ TEST(DiscFriction, LinearLimitsAndFrictionDampingBetweenThem) {
   for (double f : {0.5 * estimate.stuckHz, 0.99 * estimate.stuckHz, 1.2 * estimate.stuckHz}) {
     Timer t;
     const double w = 2 * M_PI * f;
-    const Eigen::VectorXcd x = harmonicOne(*stuck.system, solveAt(stuck, w));
+    const Eigen::VectorXd X = solveAt(stuck, w);
+    const Eigen::VectorXcd x = harmonicOne(*stuck.system, X);
     const auto ref = linearLimits(disc.mesh, disc.models, stuckSpec, w);
     const double err = (x - ref.stuck).norm() / ref.stuck.norm();
     std::printf("huge preload, %.1f Hz: harmonic balance vs stuck linear response %.2e (%.2f s)\n", f, err, t.seconds());
     EXPECT_LT(err, 1e-7);
+    // Stuck contacts make the disc a linear damped structure: Hill's method on the
+    // reduced model's modal realization must find it stable.
+    Timer th;
+    const auto fl = hbm::hillStability(*stuck.system, X, w);
+    std::printf("  Hill's method: %d of %d eigenvalues in |Im| <= w/2, max Re %.4e (%.2f s)\n",
+                int(fl.exponents.size()), int(fl.all.size()), fl.maxRealPart, th.seconds());
+    EXPECT_TRUE(fl.stable);
   }
 
   // 2. No friction (mu = 0) and no normal stiffness (kn = 0): the contact carries only its

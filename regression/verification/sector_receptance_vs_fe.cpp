@@ -180,4 +180,30 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
     }
   }
   EXPECT_LT(worstZ, 1e-8);
+
+  // Their modal realizations (what Hill's method uses) give back the compliance for
+  // every phase, with a pair's two real-form copies as one travelling-wave mode.
+  double worstA = 0;
+  for (long phase = 0; phase < N; ++phase) {
+    const auto [k, sign] = rom::SectorReceptance::nodalDiameter(N, phase);
+    const auto& hm = static_cast<const rom::HybridFrfModel&>(*hybrids[k]);
+    const auto r = hybrid.modalRealization(phase);
+    ASSERT_TRUE(r.has_value());
+    const bool pair = k != 0 && 2 * k != N;
+    EXPECT_EQ(r->numModes(), pair ? hm.modes().numModes() / 2 : hm.modes().numModes()) << "phase " << phase;
+    const std::complex<double> damped(1.0, r->lossFactor);
+    for (double f : {omega, 0.9 * std::sqrt(hm.modes().eigenvalues[0]), 1.5 * std::sqrt(hm.modes().eigenvalues[0])}) {
+      const Eigen::VectorXcd d = (damped * r->eigenvalues.cast<std::complex<double>>()).array() - f * f;
+      const Eigen::MatrixXcd A = r->R / damped + r->U * d.cwiseInverse().asDiagonal() * r->V.transpose();
+      const Eigen::MatrixXcd Aref = hybrid.compliance(f, phase);
+      worstA = std::max(worstA, (A - Aref).norm() / Aref.norm());
+    }
+    if (phase == 0) {
+      const Eigen::MatrixXcd A0 = r->R + r->U * r->eigenvalues.cwiseInverse().asDiagonal() * r->V.transpose();
+      worstA = std::max(worstA, (A0 - hybrid.meanCompliance().cast<std::complex<double>>()).norm() /
+                                    hybrid.meanCompliance().norm());
+    }
+  }
+  std::printf("modal realizations vs the hybrid compliance: %.2e\n", worstA);
+  EXPECT_LT(worstA, 1e-9);
 }

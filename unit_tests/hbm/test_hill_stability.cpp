@@ -4,13 +4,32 @@
 
 #include <cmath>
 #include <cstdio>
+#include <complex>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/BifurcationFlags.hpp"
 #include "cyclone/hbm/HillStability.hpp"
+#include "cyclone/hbm/ReceptanceModel.hpp"
 
 using namespace cyclone;
+
+namespace {
+// Roots of f on (0.01, 4) by bisection in the brackets where it changes sign.
+template <class F>
+std::vector<double> rootsOf(const F& f) {
+  std::vector<double> roots;
+  for (double A = 0.01; A < 4.0; A += 0.01)
+    if ((f(A) > 0) != (f(A + 0.01) > 0)) {
+      double lo = A, hi = A + 0.01;
+      for (int i = 0; i < 60; ++i) ((f(lo) > 0) == (f(0.5 * (lo + hi)) > 0) ? lo : hi) = 0.5 * (lo + hi);
+      roots.push_back(0.5 * (lo + hi));
+    }
+  return roots;
+}
+}  // namespace
 
 TEST(HillStability, LinearOscillatorHasItsDampedEigenvaluesAsExponents) {
   // m x'' + c x' + k x = f: exponents -c/2m +- i sqrt(k/m - (c/2m)^2), whatever the forcing.
@@ -51,13 +70,7 @@ TEST(HillStability, DuffingMiddleBranchIsUnstable) {
     const double s = 1 - W * W + 0.075 * A * A;
     return (s * s + 0.0025 * W * W) * A * A - 0.18 * 0.18;
   };
-  std::vector<double> roots;
-  for (double A = 0.01; A < 4.0; A += 0.01)
-    if ((f(A) > 0) != (f(A + 0.01) > 0)) {
-      double lo = A, hi = A + 0.01;
-      for (int i = 0; i < 60; ++i) ((f(lo) > 0) == (f(0.5 * (lo + hi)) > 0) ? lo : hi) = 0.5 * (lo + hi);
-      roots.push_back(0.5 * (lo + hi));
-    }
+  const std::vector<double> roots = rootsOf(f);
   ASSERT_EQ(roots.size(), 3u);
   int stable = 0, unstable = 0;
   std::vector<double> amplitudes;
@@ -87,6 +100,77 @@ TEST(HillStability, DuffingMiddleBranchIsUnstable) {
   EXPECT_LT(amplitudes[1], amplitudes[2]);
   EXPECT_EQ(stable, 2);
   EXPECT_EQ(unstable, 1);
+}
+
+namespace {
+// A single mode with structural damping as a receptance: A(w) = 1 / ((1 + i eta) k - w^2)
+// (unit mass), what a reduced model of an FE sector looks like to the harmonic balance.
+class StructuralOscillator final : public hbm::ReceptanceModel {
+public:
+  StructuralOscillator(double k, double eta) : k_(k), eta_(eta) {}
+  int numDofs() const override { return 1; }
+  int sectors() const override { return 1; }
+  Eigen::MatrixXcd compliance(double w, long) const override {
+    return Eigen::MatrixXcd::Constant(1, 1, 1.0 / (std::complex<double>(k_, eta_ * k_) - w * w));
+  }
+  Eigen::MatrixXd meanCompliance() const override { return Eigen::MatrixXd::Constant(1, 1, 1.0 / k_); }
+  std::optional<hbm::ModalRealization> modalRealization(long) const override {
+    hbm::ModalRealization r;
+    r.R = Eigen::MatrixXcd::Zero(1, 1);
+    r.U = r.V = Eigen::MatrixXcd::Ones(1, 1);
+    r.eigenvalues = Eigen::VectorXd::Constant(1, k_);
+    r.viscous = Eigen::VectorXd::Zero(1);
+    r.lossFactor = eta_;
+    return r;
+  }
+
+private:
+  double k_, eta_;
+};
+}  // namespace
+
+TEST(HillStability, StructurallyDampedDuffingReceptanceMiddleBranchIsUnstable) {
+  // x'' + (1 + i 0.05) x + 0.1 x^3 = 0.18 cos(1.2 t) in receptance form: three solutions,
+  // single-term starts from [(s)^2 + eta^2] A^2 = P^2, s = 1 - W^2 + 3/4 g A^2. Hill's
+  // method through the modal realization: the middle one (between the folds) unstable
+  // by a real exponent (a saddle), the outer two stable.
+  const double W = 1.2, eta = 0.05, P = 0.18;
+  hbm::HarmonicBalanceSystem sys(std::make_shared<StructuralOscillator>(1.0, eta), hbm::HarmonicSet::upTo(7), 64);
+  sys.addElement(std::make_shared<hbm::CubicSpring>(0.1), Eigen::VectorXd::Ones(1));
+  sys.addExcitation(0, 1, P);
+  auto f = [&](double A) {
+    const double s = 1 - W * W + 0.075 * A * A;
+    return (s * s + eta * eta) * A * A - P * P;
+  };
+  const std::vector<double> roots = rootsOf(f);
+  ASSERT_EQ(roots.size(), 3u);
+  std::vector<bool> stable;
+  double previous = 0;
+  for (double A0 : roots) {
+    const double s = 1 - W * W + 0.075 * A0 * A0, den = s * s + eta * eta;
+    Eigen::VectorXd X = Eigen::VectorXd::Zero(sys.numUnknowns()), R;
+    X(sys.aft().harmonics().cosIndex(1)) = P * s / den;
+    X(sys.aft().harmonics().sinIndex(1)) = P * eta / den;
+    Eigen::MatrixXd J;
+    for (int it = 0; it < 50; ++it) {
+      sys.residual(X, W, R, &J);
+      if (R.norm() < 1e-13) break;
+      X -= J.partialPivLu().solve(R);
+    }
+    ASSERT_LT(R.norm(), 1e-10);
+    const double amplitude = sys.amplitude(X, 0, 1);
+    EXPECT_GT(amplitude, previous);  // three distinct solutions, in order
+    previous = amplitude;
+    const auto fl = hbm::hillStability(sys, X, W);
+    std::printf("receptance, W = %.1f, |x1| = %.5f: leading exponent %+.4e%+.4ei of %d -> %s\n", W, amplitude,
+                fl.exponents(0).real(), fl.exponents(0).imag(), int(fl.exponents.size()),
+                fl.stable ? "stable" : "unstable");
+    stable.push_back(fl.stable);
+    if (!fl.stable) EXPECT_NEAR(fl.exponents(0).imag(), 0.0, 1e-9);
+  }
+  EXPECT_TRUE(stable[0]);
+  EXPECT_FALSE(stable[1]);
+  EXPECT_TRUE(stable[2]);
 }
 
 // Flags along synthetic curves: a fold where the parameter turns (whatever the

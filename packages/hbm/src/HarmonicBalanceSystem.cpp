@@ -334,6 +334,14 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
   addElementForces(X, omega, R, jacobian);
 }
 
+void HarmonicBalanceSystem::nonlinearForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& F,
+                                            Eigen::MatrixXd* jacobian) const {
+  if (X.size() != numUnknowns()) throw Error("harmonic balance: unknown vector of the wrong size");
+  F = Eigen::VectorXd::Zero(numUnknowns());
+  if (jacobian) jacobian->setZero(numUnknowns(), numUnknowns());
+  addElementForces(X, omega, F, jacobian);
+}
+
 void HarmonicBalanceSystem::addElementForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                                              Eigen::MatrixXd* jacobian) const {
   const int n = numDofs(), nc = numCoefficients();

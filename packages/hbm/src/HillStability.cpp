@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "ReceptanceHill.hpp"
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::hbm {
@@ -12,6 +13,7 @@ FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::Ve
   for (const auto& c : sys.elements())
     if (c.element->usesVelocity())
       throw InputError("stability", "Hill's method with velocity-dependent elements is not supported yet");
+  if (sys.isReceptance()) return receptanceHillStability(sys, X, omega);
   const int n = sys.numDofs(), nc = sys.numCoefficients(), m = n * nc;
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
@@ -33,10 +35,11 @@ FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::Ve
   A.block(m, m, m, m) = -lu.solve(D1);
   Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
   const Eigen::VectorXcd all = es.eigenvalues();
+  FloquetExponents out;
+  out.all = all;
   std::vector<int> order(all.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(all(i).imag()) < std::abs(all(j).imag()); });
-  FloquetExponents out;
   out.exponents.resize(2 * n);
   for (int i = 0; i < 2 * n; ++i) out.exponents(i) = all(order[i]);
   std::sort(out.exponents.data(), out.exponents.data() + 2 * n,

@@ -2,6 +2,8 @@
 #include <complex>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 
@@ -15,6 +17,8 @@ Eigen::MatrixXcd ReceptanceModel::dynamicStiffness(double frequency, long phaseI
                 " rad/s is singular (a modal truncation with fewer modes than DOFs?): use the compliance form");
   return Z;
 }
+
+std::optional<ModalRealization> ReceptanceModel::modalRealization(long) const { return std::nullopt; }
 
 MatrixReceptance::MatrixReceptance(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, int sectors,
                                    Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext, Eigen::MatrixXd Knext)
@@ -50,6 +54,25 @@ Eigen::MatrixXd MatrixReceptance::meanCompliance() const {
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(K0);
   if (!lu.isInvertible()) throw InputError("receptance", "K is singular: no static compliance for the mean");
   return lu.inverse();
+}
+
+std::optional<ModalRealization> MatrixReceptance::modalRealization(long p) const {
+  const Eigen::MatrixXcd Kp = phased(K_, Knext_, p), Mp = phased(M_, Mnext_, p), Cp = phased(C_, Cnext_, p);
+  if (Eigen::LLT<Eigen::MatrixXcd>(Mp).info() != Eigen::Success) return std::nullopt;
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> es(Kp, Mp);
+  if (es.info() != Eigen::Success) return std::nullopt;
+  const Eigen::MatrixXcd& Phi = es.eigenvectors();  // Phi^H M_p Phi = I
+  const Eigen::MatrixXcd Cm = Phi.adjoint() * Cp * Phi;
+  const Eigen::MatrixXcd off = Cm - Eigen::MatrixXcd(Cm.diagonal().asDiagonal());
+  if (off.norm() > 1e-9 * std::max(Cm.norm(), 1e-300) && off.norm() > 0) return std::nullopt;
+  ModalRealization r;
+  const auto n = K_.rows();
+  r.R = Eigen::MatrixXcd::Zero(n, n);
+  r.U = Phi;
+  r.V = Phi.conjugate();
+  r.eigenvalues = es.eigenvalues();
+  r.viscous = Cm.diagonal().real();
+  return r;
 }
 
 }  // namespace cyclone::hbm

@@ -1,6 +1,8 @@
 #include "cyclone/rom/SectorReceptance.hpp"
 
+#include <Eigen/SVD>
 #include <complex>
+#include <vector>
 #include <string>
 
 #include "cyclone/core/Error.hpp"
@@ -101,6 +103,67 @@ Eigen::MatrixXcd SectorReceptance::dynamicStiffness(double frequency, long phase
   const Eigen::VectorXcd d = hybrid.modalWeights(frequency);
   const Eigen::MatrixXcd M = Eigen::MatrixXcd(d.cwiseInverse().asDiagonal()) + w.K;
   return w.Rinv - w.G * M.partialPivLu().solve(w.H);
+}
+
+std::optional<hbm::ModalRealization> SectorReceptance::modalRealization(long phaseIndex) const {
+  const long key = ((phaseIndex % sectors_) + sectors_) % sectors_;
+  if (auto it = realizations_.find(key); it != realizations_.end()) return it->second;
+  const auto [k, sign] = nodalDiameter(sectors_, key);
+  const HybridFrfModel* modal = model(k).modalForm();
+  std::optional<hbm::ModalRealization> out;
+  if (modal) {
+    using cd = std::complex<double>;
+    const int n = dofs_;
+    const bool pair = copies(sectors_, k) == 2;
+    const cd si(0, sign);
+    const double eta = modal->lossFactor();
+    const auto& modes = modal->modes();
+    hbm::ModalRealization r;
+    r.lossFactor = eta;
+    // residualCompliance() is R / (1 + i eta); the realization holds the undamped R.
+    const Eigen::MatrixXcd R2 = modal->residualCompliance() * cd(1, eta);
+    r.R = pair ? Eigen::MatrixXcd(R2.topLeftCorner(n, n) + si * R2.bottomLeftCorner(n, n)) : R2;
+    const Eigen::MatrixXd& phi = modes.shapes;
+    if (!pair) {
+      r.U = phi.cast<cd>();
+      r.V = r.U;
+      r.eigenvalues = Eigen::Map<const Eigen::VectorXd>(modes.eigenvalues.data(), modes.numModes());
+    } else {
+      // Group the copies of equal natural frequency; each group's U0 V0^T has rank <= its
+      // size: from the QR of U0 and a small SVD, keep its nonzero singular directions.
+      const Eigen::MatrixXcd U0 = phi.topRows(n).cast<cd>() + si * phi.bottomRows(n).cast<cd>();
+      const Eigen::MatrixXcd V0 = phi.topRows(n).cast<cd>();
+      std::vector<Eigen::VectorXcd> us, vs;
+      std::vector<double> ls;
+      for (int j = 0; j < modes.numModes();) {
+        int e = j + 1;
+        while (e < modes.numModes() && std::abs(modes.eigenvalues[e] - modes.eigenvalues[j]) <=
+                                           1e-6 * std::max(std::abs(modes.eigenvalues[j]), 1e-300))
+          ++e;
+        const int g = e - j;
+        double l = 0;
+        for (int i = j; i < e; ++i) l += modes.eigenvalues[i] / g;
+        const Eigen::HouseholderQR<Eigen::MatrixXcd> qr(U0.middleCols(j, g));
+        const Eigen::MatrixXcd Q = qr.householderQ() * Eigen::MatrixXcd::Identity(n, g);
+        const Eigen::MatrixXcd small = Q.adjoint() * U0.middleCols(j, g) * V0.middleCols(j, g).transpose();  // g x n
+        const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(small, Eigen::ComputeThinU | Eigen::ComputeThinV);
+        const auto& sv = svd.singularValues();
+        for (int i = 0; i < sv.size(); ++i) {
+          if (!(sv(i) > 1e-8 * sv(0))) continue;
+          us.push_back(Q * svd.matrixU().col(i) * sv(i));
+          vs.push_back(svd.matrixV().col(i).conjugate());
+          ls.push_back(l);
+        }
+        j = e;
+      }
+      const int m = int(ls.size());
+      r.U.resize(n, m), r.V.resize(n, m), r.eigenvalues.resize(m);
+      for (int i = 0; i < m; ++i) r.U.col(i) = us[i], r.V.col(i) = vs[i], r.eigenvalues(i) = ls[i];
+    }
+    r.viscous = Eigen::VectorXd::Zero(r.numModes());
+    out = std::move(r);
+  }
+  return realizations_.emplace(key, std::move(out)).first->second;
 }
 
 Eigen::MatrixXd SectorReceptance::meanCompliance() const { return model(0).zeroFrequencyCompliance(); }

@@ -15,6 +15,7 @@ struct CurvePointStability {
   double omega = 0;      ///< the fundamental frequency at the point
   int stable = -1;       ///< 1, 0, or -1 when not computed
   std::complex<double> leading;  ///< the Floquet exponent with the largest real part
+  bool hasLeading = false;       ///< false when Hill's pick left none (a stable point)
 };
 
 /// One flag per point: "" or fold, branch_point, period_doubling, neimark_sacker.

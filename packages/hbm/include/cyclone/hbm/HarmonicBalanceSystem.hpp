@@ -65,6 +65,8 @@ public:
   const CyclicCoupling& cyclic() const { return cyclic_; }
   /// Nodal diameter of harmonic h: h EO mod N folded to 0..N/2 (0 when not cyclic).
   int nodalDiameter(int harmonic) const;
+  /// The inter-sector phase index of harmonic h: h EO mod N in 0..N-1 (0 when not cyclic).
+  long phaseIndex(int harmonic) const;
   /// Coefficients of sector j+1 from those of sector j, per DOF (nc x nc):
   /// the rotation of each harmonic h by -h 2 pi EO / N (identity when not cyclic).
   const Eigen::MatrixXd& nextSectorMap() const { return next_; }
@@ -102,6 +104,8 @@ public:
   /// parameter for force-level studies), and optionally dR/dX.
   void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian,
                 double excitationScale = 1.0) const;
+  /// The elements' force coefficients F_nl(X) and dF_nl/dX alone (both forms).
+  void nonlinearForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& F, Eigen::MatrixXd* jacobian) const;
   /// The solution without the nonlinear elements.
   Eigen::VectorXd linearSolution(double omega, double excitationScale = 1.0) const;
   /// The response of the system linearised about rest (X = 0), i.e. one Newton
@@ -138,7 +142,6 @@ public:
   double amplitude(const Eigen::VectorXd& X, int dof, int harmonic) const;
 
 private:
-  long phaseIndex(int harmonic) const;  ///< h EO mod N in 0..N-1
   void requireMatrixForm(const char* what) const;
   /// Adds the elements' force coefficients to R and their Jacobian to *jacobian.
   void addElementForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian) const;

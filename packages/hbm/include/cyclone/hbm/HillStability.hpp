@@ -7,6 +7,9 @@
 // space. Of its 2 n nc eigenvalues the 2 n with the smallest |Im| are the
 // Floquet exponents (the others repeat them shifted by multiples of i w and are
 // spoiled by the truncation); the solution is stable when all have Re < 0.
+// A receptance (reduced) model has no M, C, K: its modal realization takes
+// their place (ReceptanceHill.cpp), and the exponents are the eigenvalues in
+// the strip |Im lambda| <= w / 2 (why there: ReceptanceHill.cpp).
 #include <Eigen/Dense>
 
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
@@ -14,12 +17,14 @@
 namespace cyclone::hbm {
 
 struct FloquetExponents {
-  Eigen::VectorXcd exponents;  ///< 2 n, sorted by decreasing real part
-  double maxRealPart = 0;
+  Eigen::VectorXcd exponents;  ///< the Floquet exponents picked (2 n in the matrix form), by decreasing real part
+  Eigen::VectorXcd all;        ///< every eigenvalue of the truncated Hill problem
+  double maxRealPart = 0;      ///< -infinity when none is picked
   bool stable = false;
 };
 
-/// Throws InputError for velocity-dependent elements (not supported yet) or singular M.
+/// Throws InputError for velocity-dependent elements (not supported yet), singular M, or a
+/// receptance without a modal realization.
 FloquetExponents hillStability(const HarmonicBalanceSystem& system, const Eigen::VectorXd& X, double omega);
 
 }  // namespace cyclone::hbm

@@ -12,8 +12,27 @@
 // neighbour j+1 moving as X_{j+1} = e^{-i 2 pi p / N} X_j, p the phase index
 // h EO mod N (HarmonicBalanceSystem's convention): the model answers for that p.
 #include <Eigen/Dense>
+#include <optional>
 
 namespace cyclone::hbm {
+
+/// The compliance of one phase index as modes plus a constant part, what Hill's
+/// method needs of a receptance (it has no M, C, K):
+///   A(w) = R / (1 + i eta) + U diag(1 / ((1 + i eta) l_j + i c_j w - w^2)) V^T   for w > 0,
+///   A(0) = R + U diag(1 / l_j) V^T   (the undamped mean compliance, phase 0),
+/// eta the structural loss factor, c_j modal viscous damping. A time-domain
+/// realization needs causal damping: Hill's method gives mode j at harmonic h
+/// the viscous damping c_j + eta l_j / (h w) (eta w_j at h = 0), equal to the
+/// structural one at the harmonic's frequency, so that its matrix at lambda = 0
+/// is the harmonic balance Jacobian and folds fall where the curve turns.
+struct ModalRealization {
+  Eigen::MatrixXcd R;           ///< n x n constant part (the modes not kept), undamped
+  Eigen::MatrixXcd U, V;        ///< n x m
+  Eigen::VectorXd eigenvalues;  ///< l_j = w_j^2, (rad/s)^2
+  Eigen::VectorXd viscous;      ///< c_j in rad/s (size m)
+  double lossFactor = 0;
+  int numModes() const { return int(eigenvalues.size()); }
+};
 
 class ReceptanceModel {
 public:
@@ -28,6 +47,9 @@ public:
   virtual Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const;
   /// The undamped static compliance of the phase-0 (nodal diameter 0) motion: harmonic 0.
   virtual Eigen::MatrixXd meanCompliance() const = 0;
+  /// The modal realization of phase p (see ModalRealization), or none when the model
+  /// has no modal form (then Hill's method cannot be applied to it).
+  virtual std::optional<ModalRealization> modalRealization(long phaseIndex) const;
 };
 
 /// The receptance of a matrix system (and its cyclic coupling, as in
@@ -43,6 +65,9 @@ public:
   int sectors() const override { return sectors_; }
   Eigen::MatrixXcd compliance(double frequency, long phaseIndex) const override;
   Eigen::MatrixXd meanCompliance() const override;
+  /// Modes of (K_p, M_p) with U = Phi, V = conj(Phi); none unless Phi^H C_p Phi is
+  /// diagonal (modal damping) and M_p positive definite.
+  std::optional<ModalRealization> modalRealization(long phaseIndex) const override;
 
 private:
   Eigen::MatrixXcd phased(const Eigen::MatrixXd& A, const Eigen::MatrixXd& Anext, long phaseIndex) const;

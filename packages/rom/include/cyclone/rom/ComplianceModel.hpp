@@ -13,6 +13,8 @@
 
 namespace cyclone::rom {
 
+class HybridFrfModel;
+
 class ComplianceModel {
 public:
   virtual ~ComplianceModel() = default;
@@ -30,6 +32,10 @@ public:
   /// x_r(omega) = A_rf(omega) f: the retained DOFs' response to each load pattern (one
   /// column each). InputError for a model without load patterns.
   virtual Eigen::MatrixXcd loadResponse(double omega) const;
+  /// The model as modes plus a constant part, when it is one (hybrid, truncation, and
+  /// Guyan and Craig-Bampton through their reduced modes): what Hill's method uses.
+  /// Null for the full FE compliance.
+  virtual const HybridFrfModel* modalForm() const { return nullptr; }
 };
 
 }  // namespace cyclone::rom

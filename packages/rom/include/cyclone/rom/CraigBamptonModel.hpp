@@ -30,6 +30,7 @@ public:
   /// The eigenpairs of (K_r, M_r) (boundary + modal coordinates), mass-normalised,
   /// shapes restricted to the boundary (retained) DOFs.
   const RetainedModes& modes() const { return modal_.modes(); }
+  const HybridFrfModel* modalForm() const override { return &modal_; }
   int numInterfaceModes() const { return int(interface_.size()); }
   /// What it was built from (the HDF5 form stores these): K_g, M_g, M_bm and lambda_j of the modes kept.
   const Eigen::MatrixXd& boundaryStiffness() const { return stiffness_; }

@@ -26,6 +26,7 @@ public:
 
   /// The eigenpairs of (K_g, M_g): one per retained DOF, mass-normalised.
   const RetainedModes& modes() const { return modal_.modes(); }
+  const HybridFrfModel* modalForm() const override { return &modal_; }
   const Eigen::MatrixXd& stiffness() const { return stiffness_; }
   const Eigen::MatrixXd& mass() const { return mass_; }
   double lossFactor() const { return modal_.lossFactor(); }

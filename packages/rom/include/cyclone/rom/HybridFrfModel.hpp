@@ -64,6 +64,7 @@ public:
   Eigen::Index numLoads() const override { return modes_.loads.cols(); }
   Eigen::MatrixXcd loadResponse(double omega) const override;
 
+  const HybridFrfModel* modalForm() const override { return this; }
   bool hasStaticCorrection() const { return hasStatic_; }
   /// The split A(w) = R + Phi diag(d(w)) Phi^T: R = A0 / (1 + i eta) - Phi diag(1 / ((1 + i eta)(l_j - sigma))) Phi^T
   /// is the part of the modes not kept (constant in w; zero for a truncation), d_j(w) = 1 / ((1 + i eta) l_j - w^2).

@@ -35,6 +35,11 @@ public:
   Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const override;
   /// Nodal diameter 0's zero-frequency compliance (InputError if that model is missing).
   Eigen::MatrixXd meanCompliance() const override;
+  /// From the nodal diameter's modal form (none for the full FE model): R the undamped
+  /// constant part, U, V the travelling-wave combination of the real-form modes. A
+  /// pair's two real-form copies give one travelling-wave mode (their rank-one sum),
+  /// so a pair counts once, as it does physically.
+  std::optional<hbm::ModalRealization> modalRealization(long phaseIndex) const override;
 
   /// The nodal diameter and the sign of i Q for a phase index (see the file comment).
   static std::pair<int, int> nodalDiameter(int sectors, long phaseIndex);
@@ -47,6 +52,7 @@ private:
   };
   const Woodbury& woodbury(int k, int sign) const;
   mutable std::map<std::pair<int, int>, Woodbury> woodbury_;
+  mutable std::map<long, std::optional<hbm::ModalRealization>> realizations_;
   int sectors_;
   int dofs_ = 0;
   std::map<int, std::shared_ptr<const ComplianceModel>> models_;

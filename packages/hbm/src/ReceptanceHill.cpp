@@ -1,0 +1,204 @@
+// Hill's method on a receptance model. A perturbation e^{lambda t} p(t) is
+// expanded on exponentials e^{i k w t}, k = +-h for every harmonic h of the set
+// (block (h, +) and (h, -); one block for h = 0), so that each block is a
+// plain frequency s = lambda + i k w of one phase's linear model:
+//   dX_b = R_b G_b + U_b q_b,   (l + c s + s^2) q_b = V_b^T G_b,   G = -J dX,
+// J the harmonic balance Jacobian of the element forces in this basis, R_b, U_b,
+// V_b the modal realization of the block's phase (its conjugate for k < 0: the
+// system is real). Eliminating dX = (I + R J)^{-1} U q leaves the quadratic
+// eigenproblem in the modal coordinates
+//   [lambda^2 + lambda (c + 2 i k w) + (l + i c k w - (k w)^2) + V^T J (I + R J)^{-1} U] q = 0,
+// whose matrix at lambda = 0 is singular exactly when the harmonic balance
+// Jacobian is (the determinant lemma): folds are where the curve turns.
+//
+// Which eigenvalues are the Floquet exponents: those in the strip
+// |Im lambda| <= w / 2. Near lambda = 0 Hill's linearisation holds and a fold
+// (a real exponent through 0) is exact (the determinant lemma); period
+// doubling sits on the strip's edge. Far out it does not hold for a hysteretic
+// element (friction): the harmonic balance Jacobian is the element's response
+// to periodic perturbations, not to e^{lambda t} p(t) far off the harmonics. A
+// cyclic test (test_receptance_form) has eigenvalues with Re > 0 at |Im| near
+// 2.4 w, steady in H, on a solution to which a time integration of the
+// perturbed full ring returns, and the default disc's friction-damped curve
+// has them at |Im| of 2 to 7 w. The matrix form's pick (the 2 n of smallest
+// |Im|) leans on every block holding the same system; in a cyclic system
+// harmonic h lives on nodal diameter h EO, an exponent has no shifted copies
+// there, and that pick would take such far eigenvalues. A strip with no
+// eigenvalue in it (the linear stuck disc far below its resonance) leaves no
+// exponent that could grow: stable.
+#include "ReceptanceHill.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <map>
+#include <vector>
+#include <string>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::hbm {
+
+namespace {
+using cd = std::complex<double>;
+
+struct Block {
+  int h = 0, sign = 1;      // exponent k = sign h
+  int first = 0, size = 0;  // its modal coordinates
+};
+}  // namespace
+
+FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+  if (!(omega > 0)) throw InputError("stability", "Hill's method needs a frequency > 0");
+  const auto& H = sys.aft().harmonics();
+  const int n = sys.numDofs(), nc = sys.numCoefficients(), m = n * nc;
+  const ReceptanceModel& model = *sys.receptance();
+
+  // Per DOF, exponent-block values from real coefficients: y = t x, x = ti y.
+  std::vector<Block> blocks;
+  Eigen::MatrixXcd t = Eigen::MatrixXcd::Zero(nc, nc), ti = Eigen::MatrixXcd::Zero(nc, nc);
+  for (int h : H.harmonics()) {
+    const int b = int(blocks.size());
+    if (h == 0) {
+      blocks.push_back({0, 1});
+      t(b, H.cosIndex(0)) = 1, ti(H.cosIndex(0), b) = 1;
+      continue;
+    }
+    blocks.push_back({h, 1});
+    blocks.push_back({h, -1});
+    const int c = H.cosIndex(h), s = H.sinIndex(h);
+    // c cos + s sin = (c - i s)/2 e^{i h w t} + (c + i s)/2 e^{-i h w t}.
+    t(b, c) = 0.5, t(b, s) = cd(0, -0.5), t(b + 1, c) = 0.5, t(b + 1, s) = cd(0, 0.5);
+    ti(c, b) = 1, ti(c, b + 1) = 1, ti(s, b) = cd(0, 1), ti(s, b + 1) = cd(0, -1);
+  }
+  const int nb = int(blocks.size());  // == nc
+
+  Eigen::VectorXd F;
+  Eigen::MatrixXd Jr;
+  sys.nonlinearForces(X, omega, F, &Jr);
+  // J in the exponent basis, laid out block-major (block b, DOF a at b n + a); sparse:
+  // an element couples only its own DOFs.
+  std::vector<Eigen::Triplet<cd>> entries;
+  for (int a = 0; a < n; ++a)
+    for (int c = 0; c < n; ++c) {
+      const auto jb = Jr.block(a * nc, c * nc, nc, nc);
+      if (jb.cwiseAbs().maxCoeff() == 0) continue;
+      const Eigen::MatrixXcd blk = t * jb.cast<cd>() * ti;
+      for (int bi = 0; bi < nb; ++bi)
+        for (int bj = 0; bj < nb; ++bj)
+          if (blk(bi, bj) != cd(0)) entries.emplace_back(bi * n + a, bj * n + c, blk(bi, bj));
+    }
+  Eigen::SparseMatrix<cd, Eigen::RowMajor> J(m, m);
+  J.setFromTriplets(entries.begin(), entries.end());
+  // The same in the real coefficients (for the one large LU, in real arithmetic).
+  std::vector<Eigen::Triplet<double>> realEntries;
+  for (int a = 0; a < n; ++a)
+    for (int c = 0; c < n; ++c)
+      for (int i = 0; i < nc; ++i)
+        for (int j = 0; j < nc; ++j)
+          if (Jr(a * nc + i, c * nc + j) != 0) realEntries.emplace_back(a * nc + i, c * nc + j, Jr(a * nc + i, c * nc + j));
+  Eigen::SparseMatrix<double> Jreal(m, m);
+  Jreal.setFromTriplets(realEntries.begin(), realEntries.end());
+
+  // The realization of every block (time scaled by w: lambda = w mu, l -> l / w^2, c -> c / w).
+  std::map<long, ModalRealization> byPhase;
+  int mt = 0;
+  std::vector<ModalRealization> real(nb);
+  for (int b = 0; b < nb; ++b) {
+    const long p = sys.phaseIndex(blocks[b].h);
+    auto it = byPhase.find(p);
+    if (it == byPhase.end()) {
+      auto r = model.modalRealization(p);
+      if (!r)
+        throw InputError("stability", "the reduced model of nodal diameter " + std::to_string(sys.nodalDiameter(blocks[b].h)) +
+                                          " has no modal form (Hill's method needs one)");
+      if (r->R.rows() != n || r->U.rows() != n || r->V.rows() != n || r->U.cols() != r->numModes() ||
+          r->V.cols() != r->numModes() || (r->viscous.size() != 0 && r->viscous.size() != r->numModes()))
+        throw Error("modal realization of phase " + std::to_string(p) + " has inconsistent sizes");
+      it = byPhase.emplace(p, std::move(*r)).first;
+    }
+    real[b] = it->second;
+    if (blocks[b].sign < 0) {
+      real[b].R = real[b].R.conjugate();
+      real[b].U = real[b].U.conjugate();
+      real[b].V = real[b].V.conjugate();
+    }
+    blocks[b].first = mt, blocks[b].size = real[b].numModes();
+    mt += blocks[b].size;
+  }
+  if (mt == 0) throw InputError("stability", "the reduced model has no modes: no Floquet exponents");
+
+  Eigen::MatrixXcd U = Eigen::MatrixXcd::Zero(m, mt), V = Eigen::MatrixXcd::Zero(m, mt);
+  std::vector<Eigen::MatrixXcd> R(nb);  // the diagonal blocks of the constant part
+  Eigen::VectorXcd d0(mt), d1(mt);
+  for (int b = 0; b < nb; ++b) {
+    const auto& r = real[b];
+    const auto& blk = blocks[b];
+    const double eta = r.lossFactor;
+    const cd rfac = blk.h == 0 ? cd(1) : 1.0 / cd(1, blk.sign * eta);
+    R[b] = rfac * r.R;
+    U.block(b * n, blk.first, n, blk.size) = r.U;
+    V.block(b * n, blk.first, n, blk.size) = r.V;
+    const double k = blk.sign * blk.h;  // in units of w
+    for (int j = 0; j < blk.size; ++j) {
+      const double l = r.eigenvalues(j) / (omega * omega);
+      double c = r.viscous.size() ? r.viscous(j) / omega : 0.0;
+      c += blk.h > 0 ? eta * l / blk.h : eta * std::sqrt(std::max(l, 0.0));
+      d0(blk.first + j) = cd(l - k * k, c * k);
+      d1(blk.first + j) = cd(c, 2 * k);
+    }
+  }
+  // S = (I + R J)^{-1} U, formed in the real coefficients, where R is real (the
+  // blocks +h and -h are conjugate) and the LU a quarter of the complex one's work.
+  Eigen::MatrixXd Rreal(m, m);  // interleaved like X: DOF a, slot i at a nc + i
+  for (int a = 0; a < n; ++a)
+    for (int c = 0; c < n; ++c) {
+      Eigen::VectorXcd d(nb);
+      for (int b = 0; b < nb; ++b) d(b) = R[b](a, c);
+      Rreal.block(a * nc, c * nc, nc, nc) = (ti * d.asDiagonal() * t).real();
+    }
+  Eigen::MatrixXd IRJ = Rreal * Jreal;
+  IRJ.diagonal().array() += 1.0;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(IRJ);
+  Eigen::MatrixXcd Ui(m, mt);  // U in the real coefficients
+  for (int a = 0; a < n; ++a) {
+    Eigen::MatrixXcd rows(nb, mt);
+    for (int b = 0; b < nb; ++b) rows.row(b) = U.row(b * n + a);
+    Ui.middleRows(a * nc, nc) = ti * rows;
+  }
+  Eigen::MatrixXcd Si(m, mt);
+  Si.real() = lu.solve(Eigen::MatrixXd(Ui.real()));
+  Si.imag() = lu.solve(Eigen::MatrixXd(Ui.imag()));
+  Eigen::MatrixXcd S(m, mt);
+  for (int a = 0; a < n; ++a) {
+    const Eigen::MatrixXcd rows = t * Si.middleRows(a * nc, nc);
+    for (int b = 0; b < nb; ++b) S.row(b * n + a) = rows.row(b);
+  }
+  // In scaled time J is divided by w^2, like l.
+  const Eigen::MatrixXcd VJ = V.transpose() * J;
+  Eigen::MatrixXcd D0 = (VJ * S) / (omega * omega);
+  D0.diagonal() += d0;
+
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(2 * mt, 2 * mt);
+  A.block(0, mt, mt, mt).setIdentity();
+  A.block(mt, 0, mt, mt) = -D0;
+  A.block(mt, mt, mt, mt).diagonal() = -d1;
+  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(A, false);
+  if (es.info() != Eigen::Success) throw Error("Hill's method: the eigen-solution did not converge");
+
+  FloquetExponents out;
+  out.all = es.eigenvalues() * omega;
+  std::vector<cd> kept;
+  for (int e = 0; e < out.all.size(); ++e)
+    if (std::abs(out.all(e).imag()) <= 0.5 * omega * (1 + 1e-9)) kept.push_back(out.all(e));
+  std::sort(kept.begin(), kept.end(), [](const cd& a, const cd& b) { return a.real() > b.real(); });
+  out.exponents = Eigen::Map<Eigen::VectorXcd>(kept.data(), Eigen::Index(kept.size()));
+  out.maxRealPart = kept.empty() ? -std::numeric_limits<double>::infinity() : kept.front().real();
+  out.stable = out.maxRealPart < 1e-8 * std::max(1.0, omega);
+  return out;
+}
+
+}  // namespace cyclone::hbm
