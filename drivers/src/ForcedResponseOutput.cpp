@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
@@ -165,11 +166,19 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     log::warn("stability not computed: Hill's eigenproblem has " + std::to_string(2 * hb.numUnknowns()) +
               " unknowns per point (set output: stability: true to compute it anyway)");
   }
-  int unstablePoints = 0;
+  int unstablePoints = 0, undeterminedPoints = 0;
+  // The receptance form's verdicts are checked with twice the AFT samples: a friction
+  // contact's Jacobian moves with where its stick-slip events fall on the sample grid,
+  // and near Re = 0 that can flip the sign of an exponent (the default disc: +-10 /s at
+  // 256..2048 samples on a lightly damped stretch). A point whose verdict changes is
+  // undetermined (stable = 2 in the CSV and HDF5), not called either way.
+  std::unique_ptr<hbm::HarmonicBalanceSystem> finer;
+  if (hill && hb.isReceptance()) finer = hbm::withHarmonics(hb, harmonics, 2 * samples);
   std::map<std::string, int> special;  // fold, branch_point, period_doubling, neimark_sacker
   if (comm->getRank() == 0) {
     // Stability of every point first: the flags need the neighbours.
     std::vector<hbm::CurvePointStability> stability;
+    Timer stabilityTimer;
     for (const auto& pt : branch.points) {
       hbm::CurvePointStability st;
       st.parameter = pt.parameter;
@@ -177,11 +186,20 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
       if (hill) {
         const auto fl = hbm::hillStability(hb, pt.x, st.omega);
         st.stable = fl.stable ? 1 : 0;
+        if (finer && hbm::hillStability(*finer, pt.x, st.omega).stable != fl.stable) st.stable = 2;
         if (fl.exponents.size() > 0) st.leading = fl.exponents(0), st.hasLeading = true;
       }
       stability.push_back(st);
     }
-    const auto flags = hbm::bifurcationFlags(stability);
+    if (hill) {
+      std::ostringstream msg;
+      msg << "stability: " << branch.points.size() << " points by Hill's method in " << stabilityTimer.seconds() << " s";
+      log::info(msg.str());
+    }
+    auto determined = stability;  // an undetermined point neither loses nor regains stability
+    for (auto& st : determined)
+      if (st.stable == 2) st.stable = -1;
+    const auto flags = hbm::bifurcationFlags(determined);
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
     csv.precision(12);
@@ -213,7 +231,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
         csv << "," << st.stable << ",";
         if (st.hasLeading) csv << st.leading.real();
         plotStable.push_back(st.stable);
-        unstablePoints += st.stable ? 0 : 1;
+        unstablePoints += st.stable == 0 ? 1 : 0;
+        undeterminedPoints += st.stable == 2 ? 1 : 0;
       } else {
         csv << ",,";
         plotStable.push_back(1);
@@ -231,8 +250,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     bool labelled[2] = {false, false};
     for (std::size_t i = 0; i + 1 < plotW.size();) {
       std::size_t j = i + 1;
-      while (j + 1 < plotW.size() && plotStable[j] == plotStable[i]) ++j;
-      const bool stablePart = plotStable[i] == 1;
+      while (j + 1 < plotW.size() && (plotStable[j] != 0) == (plotStable[i] != 0)) ++j;
+      const bool stablePart = plotStable[i] != 0;  // undetermined points drawn with the stable ones
       std::string label;
       if (!labelled[stablePart]) {
         label = (hill ? std::string(stablePart ? "stable" : "unstable") + ", " : std::string()) + "H = " +
@@ -264,7 +283,10 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
   summary.written.push_back(outDir + "/" + name + ".svg");
   std::ostringstream line;
   line << name << ": " << branch.points.size() << " points (";
-  if (hill) line << unstablePoints << " unstable by Hill's method";
+  if (hill) {
+    line << unstablePoints << " unstable by Hill's method";
+    if (finer) line << ", " << undeterminedPoints << " undetermined (verdict changes with 2x samples)";
+  }
   else line << "stability not computed";
   line << ") in " << timer.seconds() << " s, " << branch.stopReason;
   for (const auto& [kind, count] : special) line << "; " << count << " " << kind;

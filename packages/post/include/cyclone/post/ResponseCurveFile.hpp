@@ -5,7 +5,7 @@
 //   /omega            [P]            excitation frequency, rad/s
 //   /coefficients     [P x n*nc]     X[dof * nc + c], coefficient order of /harmonics
 //   /harmonics        [H]            the harmonic numbers ([x0] then [cos, sin] per h > 0)
-//   /stable           [P]            1 stable, 0 unstable, -1 not computed
+//   /stable           [P]            1 stable, 0 unstable, -1 not computed, 2 undetermined (Hill's verdict changes with 2x AFT samples)
 //   /parameter        [P]            the continuation parameter (= /omega, or the force scale)
 //   attributes on /: num_dofs, num_coefficients, samples
 #include <Eigen/Dense>
