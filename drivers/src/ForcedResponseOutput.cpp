@@ -291,6 +291,13 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
   line << ") in " << timer.seconds() << " s, " << branch.stopReason;
   for (const auto& [kind, count] : special) line << "; " << count << " " << kind;
   summary.computed.push_back(line.str());
+  if (special.count("turn")) {
+    std::ostringstream msg;
+    msg << name << ": the path turns at " << special["turn"] << " point(s) where Hill's method finds the same stability "
+        << "on both sides: no fold; the continuation jumped or stalled there, and what follows may be another branch";
+    log::warn(msg.str());
+    summary.computed.push_back("warning: " + msg.str());
+  }
   if (!branch.finished)
     log::warn("forced response incomplete: " + branch.stopReason + "; the branch so far is written");
   ForcedResponseResult result;

@@ -52,6 +52,8 @@ std::string SceneSection::getString(const std::string& key, const std::string& f
   markUsed(key);
   if (!has(key)) return fallback;
   if (list_.isType<std::string>(key)) return list_.get<std::string>(key);
+  // YAML reads true and false as booleans; keys such as stability: auto|true|false want the word.
+  if (list_.isType<bool>(key)) return list_.get<bool>(key) ? "true" : "false";
   throw InputError(where(key), "expected a string");
 }
 

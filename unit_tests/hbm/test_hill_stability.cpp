@@ -193,4 +193,12 @@ TEST(BifurcationFlags, FoldsAndTheKindOfEachCrossing) {
   EXPECT_EQ(f[10], "neimark_sacker");
   EXPECT_EQ(f[12], "branch_point");
   EXPECT_EQ(f[1], "");
+  // The path turns, but the stability is the same on both sides: no saddle-node fold.
+  std::vector<CurvePointStability> t = {{1.0, w, 1, {-0.1, 0}}, {1.1, w, 1, {-0.1, 0}}, {1.2, w, 1, {-0.1, 0}},
+                                        {1.1, w, 1, {-0.1, 0}}, {1.0, w, 1, {-0.1, 0}}, {0.9, w, 1, {-0.1, 0}}};
+  EXPECT_EQ(cyclone::hbm::bifurcationFlags(t)[2], "turn");
+  t[3].stable = 0, t[4].stable = 0, t[5].stable = 0;
+  EXPECT_EQ(cyclone::hbm::bifurcationFlags(t)[2], "fold");
+  for (auto& p : t) p.stable = -1;  // not computed: the path alone says fold
+  EXPECT_EQ(cyclone::hbm::bifurcationFlags(t)[2], "fold");
 }

@@ -11,10 +11,11 @@ std::vector<std::string> bifurcationFlags(const std::vector<CurvePointStability>
   // each side (a single step back, as at the end of a range, is no fold).
   auto dp = [&](std::size_t i) { return pts[i].parameter - pts[i - 1].parameter; };
   for (std::size_t i = 2; i + 2 < n; ++i)
-    if (dp(i) * dp(i + 1) < 0 && dp(i - 1) * dp(i) > 0 && dp(i + 1) * dp(i + 2) > 0) flags[i] = "fold";
+    if (dp(i) * dp(i + 1) < 0 && dp(i - 1) * dp(i) > 0 && dp(i + 1) * dp(i + 2) > 0)
+      flags[i] = (pts[i - 1].stable >= 0 && pts[i - 1].stable == pts[i + 1].stable) ? "turn" : "fold";
   auto nearFold = [&](std::size_t i) {
     for (std::size_t j = i > 1 ? i - 2 : 0; j <= i + 1 && j < n; ++j)
-      if (flags[j] == "fold") return true;
+      if (flags[j] == "fold" || flags[j] == "turn") return true;
     return false;
   };
   for (std::size_t i = 1; i < n; ++i) {
