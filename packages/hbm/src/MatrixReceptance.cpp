@@ -64,7 +64,7 @@ std::optional<ModalRealization> MatrixReceptance::modalRealization(long p) const
   const Eigen::MatrixXcd& Phi = es.eigenvectors();  // Phi^H M_p Phi = I
   const Eigen::MatrixXcd Cm = Phi.adjoint() * Cp * Phi;
   const Eigen::MatrixXcd off = Cm - Eigen::MatrixXcd(Cm.diagonal().asDiagonal());
-  if (off.norm() > 1e-9 * std::max(Cm.norm(), 1e-300) && off.norm() > 0) return std::nullopt;
+  if (off.norm() > 1e-9 * Cm.norm()) return std::nullopt;  // not modal damping
   ModalRealization r;
   const auto n = K_.rows();
   r.R = Eigen::MatrixXcd::Zero(n, n);

@@ -79,29 +79,14 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
   Eigen::VectorXd F;
   Eigen::MatrixXd Jr;
   sys.nonlinearForces(X, omega, F, &Jr);
-  // J in the exponent basis, laid out block-major (block b, DOF a at b n + a); sparse:
-  // an element couples only its own DOFs.
-  std::vector<Eigen::Triplet<cd>> entries;
-  for (int a = 0; a < n; ++a)
-    for (int c = 0; c < n; ++c) {
-      const auto jb = Jr.block(a * nc, c * nc, nc, nc);
-      if (jb.cwiseAbs().maxCoeff() == 0) continue;
-      const Eigen::MatrixXcd blk = t * jb.cast<cd>() * ti;
-      for (int bi = 0; bi < nb; ++bi)
-        for (int bj = 0; bj < nb; ++bj)
-          if (blk(bi, bj) != cd(0)) entries.emplace_back(bi * n + a, bj * n + c, blk(bi, bj));
-    }
-  Eigen::SparseMatrix<cd, Eigen::RowMajor> J(m, m);
+  // The element Jacobian is sparse (an element couples only its own DOFs); everything
+  // that meets it is formed in the real coefficients, where the one large LU is real.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < m; ++c)
+      if (Jr(r, c) != 0) entries.emplace_back(r, c, Jr(r, c));
+  Eigen::SparseMatrix<double> J(m, m);
   J.setFromTriplets(entries.begin(), entries.end());
-  // The same in the real coefficients (for the one large LU, in real arithmetic).
-  std::vector<Eigen::Triplet<double>> realEntries;
-  for (int a = 0; a < n; ++a)
-    for (int c = 0; c < n; ++c)
-      for (int i = 0; i < nc; ++i)
-        for (int j = 0; j < nc; ++j)
-          if (Jr(a * nc + i, c * nc + j) != 0) realEntries.emplace_back(a * nc + i, c * nc + j, Jr(a * nc + i, c * nc + j));
-  Eigen::SparseMatrix<double> Jreal(m, m);
-  Jreal.setFromTriplets(realEntries.begin(), realEntries.end());
 
   // The realization of every block (time scaled by w: lambda = w mu, l -> l / w^2, c -> c / w).
   std::map<long, ModalRealization> byPhase;
@@ -151,35 +136,32 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
       d1(blk.first + j) = cd(c, 2 * k);
     }
   }
-  // S = (I + R J)^{-1} U, formed in the real coefficients, where R is real (the
-  // blocks +h and -h are conjugate) and the LU a quarter of the complex one's work.
+  // With T the per-DOF map y = t x to the exponent basis, R_exp = T R T^-1 is real (the
+  // blocks +h and -h are conjugate), and V^T J_exp (I + R_exp J_exp)^{-1} U
+  //   = (V^T T) J (I + R J)^{-1} (T^{-1} U):
+  // U and V enter in the real coefficients (Ui = T^-1 U, Vi = T^T V), the LU is real.
   Eigen::MatrixXd Rreal(m, m);  // interleaved like X: DOF a, slot i at a nc + i
+  Eigen::VectorXcd d(nb);
   for (int a = 0; a < n; ++a)
     for (int c = 0; c < n; ++c) {
-      Eigen::VectorXcd d(nb);
       for (int b = 0; b < nb; ++b) d(b) = R[b](a, c);
       Rreal.block(a * nc, c * nc, nc, nc) = (ti * d.asDiagonal() * t).real();
     }
-  Eigen::MatrixXd IRJ = Rreal * Jreal;
+  Eigen::MatrixXd IRJ = Rreal * J;
   IRJ.diagonal().array() += 1.0;
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(IRJ);
-  Eigen::MatrixXcd Ui(m, mt);  // U in the real coefficients
+  Eigen::MatrixXcd Ui(m, mt), Vi(m, mt), rows(nb, mt);
   for (int a = 0; a < n; ++a) {
-    Eigen::MatrixXcd rows(nb, mt);
     for (int b = 0; b < nb; ++b) rows.row(b) = U.row(b * n + a);
     Ui.middleRows(a * nc, nc) = ti * rows;
+    for (int b = 0; b < nb; ++b) rows.row(b) = V.row(b * n + a);
+    Vi.middleRows(a * nc, nc) = t.transpose() * rows;
   }
-  Eigen::MatrixXcd Si(m, mt);
-  Si.real() = lu.solve(Eigen::MatrixXd(Ui.real()));
-  Si.imag() = lu.solve(Eigen::MatrixXd(Ui.imag()));
-  Eigen::MatrixXcd S(m, mt);
-  for (int a = 0; a < n; ++a) {
-    const Eigen::MatrixXcd rows = t * Si.middleRows(a * nc, nc);
-    for (int b = 0; b < nb; ++b) S.row(b * n + a) = rows.row(b);
-  }
+  Eigen::MatrixXcd S(m, mt);  // (I + R J)^{-1} Ui
+  S.real() = lu.solve(Eigen::MatrixXd(Ui.real()));
+  S.imag() = lu.solve(Eigen::MatrixXd(Ui.imag()));
   // In scaled time J is divided by w^2, like l.
-  const Eigen::MatrixXcd VJ = V.transpose() * J;
-  Eigen::MatrixXcd D0 = (VJ * S) / (omega * omega);
+  Eigen::MatrixXcd D0 = Vi.transpose() * (J * S) / (omega * omega);
   D0.diagonal() += d0;
 
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(2 * mt, 2 * mt);
