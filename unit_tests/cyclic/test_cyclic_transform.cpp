@@ -84,6 +84,32 @@ TEST(CyclicTransform, AxisNodeKeepsOnlyAllowedMotions) {
     EXPECT_EQ(cyclic::cyclicTransform(1, s, k, fixed, s.rotation()).numEquations(), expected[k]) << "k " << k;
 }
 
+// Multiplication by i (the travelling-wave phase) maps unknown 2m to 2m+1 for every
+// 0 < k < N/2, also for an axis node's in-plane pair (k = 1) and with the right face
+// first; k = 0 and N/2 have one copy and no pairs. A numbering with the copies
+// swapped on one node is caught.
+TEST(CyclicTransform, UnknownsPairForTheTravellingWaveSplit) {
+  const int N = 8;
+  cyclic::CyclicSector axis;
+  axis.sectors = N;
+  axis.left = {0, 2};
+  axis.right = {0, 1};
+  const std::vector<char> fixed(9, 0);
+  for (const auto& sector : {threeNodes(N), axis})
+    for (int k = 0; k <= N / 2; ++k) {
+      const auto T = cyclic::cyclicTransform(3, sector, k, fixed, sector.rotation());
+      EXPECT_EQ(cyclic::travellingWavePaired(T), k > 0 && 2 * k < N) << "k " << k;
+    }
+  fe::DofTransform swapped(1, 2);
+  for (int d = 0; d < 3; ++d) {
+    const long long a = 2 * d, b = 2 * d + 1;
+    swapped.set(0, d, 0, {{d == 1 ? b : a, 1.0}});
+    swapped.set(0, d, 1, {{d == 1 ? a : b, 1.0}});
+  }
+  swapped.finalize(6);
+  EXPECT_FALSE(cyclic::travellingWavePaired(swapped));
+}
+
 TEST(CyclicTransform, BadHarmonicIndexAndAsymmetricFixityAreErrors) {
   const auto sector = threeNodes(6);
   const std::vector<char> free(9, 0);

@@ -118,6 +118,64 @@ TEST(ComplexDirectSolver, MatchesDenseComplexLu) {
   EXPECT_LT((X - reference).norm() / reference.norm(), 1e-9);
 }
 
+namespace {
+
+// A cyclic real form [[P, -Q], [Q, P]] with interleaved pairs (2m, 2m+1) = (a, b):
+// P symmetric (the cantilever's matrix), Q antisymmetric on P's pattern.
+Teuchos::RCP<linalg::Matrix> pairedRealForm(const Eigen::MatrixXd& P, double q,
+                                            const Teuchos::RCP<const linalg::Comm>& comm, Eigen::MatrixXd& dense) {
+  const Eigen::Index n = P.rows();
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i + 1; j < n; ++j) Q(i, j) = q * P(i, j) * (1 + 0.1 * double((i + 3 * j) % 7)), Q(j, i) = -Q(i, j);
+  dense.setZero(2 * n, 2 * n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      dense(2 * i, 2 * j) = dense(2 * i + 1, 2 * j + 1) = P(i, j);
+      dense(2 * i + 1, 2 * j) = Q(i, j);
+      dense(2 * i, 2 * j + 1) = -Q(i, j);
+    }
+  auto map = Teuchos::rcp(new linalg::Map(2 * n, 0, comm));
+  auto A = Teuchos::rcp(new linalg::Matrix(map, std::size_t(2 * n)));
+  for (Eigen::Index r = 0; r < 2 * n; ++r)
+    for (Eigen::Index c = 0; c < 2 * n; ++c)
+      if (dense(r, c) != 0) A->insertGlobalValues(r, Teuchos::tuple<linalg::GlobalIndex>(c), Teuchos::tuple(dense(r, c)));
+  A->fillComplete();
+  return A;
+}
+
+}  // namespace
+
+// The forward/backward travelling-wave split (one half-size LU and its transpose
+// solve) against a dense complex LU of the whole real form.
+TEST(ComplexDirectSolver, TravellingWavePairsMatchDenseComplexLuOfTheRealForm) {
+  Cantilever c;
+  const Eigen::MatrixXd Kd = toDense(*c.assembler->stiffness(c.steel)), Md = toDense(*c.assembler->mass(c.steel));
+  const auto comm = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  Eigen::MatrixXd Kr, Mr;
+  const auto K = pairedRealForm(Kd, 0.3, comm, Kr);
+  const auto M = pairedRealForm(Md, 0.2, comm, Mr);
+  const double lambda1 = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(Kr, Mr).eigenvalues()(0);
+  const std::complex<double> a(1.0, 0.01), b(-1.001 * lambda1, 0.0);
+  const solvers::ComplexDirectSolver wave(*K, a, *M, b, solvers::ComplexDirectSolver::Structure::TravellingWavePairs);
+  linalg::MultiVector f(K->getRowMap(), 3), xr(K->getRowMap(), 3), xi(K->getRowMap(), 3);
+  f.randomize();
+  wave.solve(f, xr, xi);
+  const Eigen::MatrixXcd A = a * Kr.cast<std::complex<double>>() + b * Mr.cast<std::complex<double>>();
+  Eigen::MatrixXcd F(A.rows(), 3), X(A.rows(), 3);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < A.rows(); ++i) F(i, j) = f.getData(j)[i], X(i, j) = {xr.getData(j)[i], xi.getData(j)[i]};
+  const Eigen::MatrixXcd reference = A.partialPivLu().solve(F);
+  EXPECT_LT((X - reference).norm() / reference.norm(), 1e-9);
+  // An odd count cannot pair.
+  auto map3 = Teuchos::rcp(new linalg::Map(3, 0, comm));
+  auto I3 = Teuchos::rcp(new linalg::Matrix(map3, 1));
+  for (int r = 0; r < 3; ++r) I3->insertGlobalValues(r, Teuchos::tuple<linalg::GlobalIndex>(r), Teuchos::tuple(1.0));
+  I3->fillComplete();
+  EXPECT_THROW(solvers::ComplexDirectSolver(*I3, a, *I3, b, solvers::ComplexDirectSolver::Structure::TravellingWavePairs),
+               SolverError);
+}
+
 TEST(DirectSolver, UnconstrainedStiffnessIsReportedNotPositiveDefinite) {
   auto mesh = test_support::makeBoxMesh(1.0, 1.0, 1.0, 1, 1, 1, mesh::ElementType::Hex8);
   fe::DofMap dofs(mesh.numNodes());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "cyclone/core/Error.hpp"
 
@@ -10,6 +11,60 @@ namespace cyclone::cyclic {
 using Term = fe::DofTransform::Term;
 
 int copiesFor(int sectors, int k) { return (k == 0 || 2 * k == sectors) ? 1 : 2; }
+
+namespace {
+
+// i times a real-form vector [a; b] of one node (3 + 3 components): [-b; a].
+Eigen::VectorXd timesI(const Eigen::VectorXd& v) {
+  Eigen::VectorXd w(6);
+  w << -v.tail(3), v.head(3);
+  return w;
+}
+
+// An orthonormal basis of the same (i-invariant) null space as v, w = i v, v', i v', ...:
+// the unknowns then pair as (x_a, x_b) like every other node's copies, which the
+// travelling-wave solve needs (travellingWavePaired).
+std::vector<Eigen::VectorXd> travellingWavePairedBasis(std::vector<Eigen::VectorXd> rest) {
+  std::vector<Eigen::VectorXd> out;
+  while (!rest.empty()) {
+    Eigen::VectorXd v = rest.front();
+    rest.erase(rest.begin());
+    for (const auto& u : out) v -= u.dot(v) * u;
+    if (v.norm() < 1e-10) continue;
+    v.normalize();
+    out.push_back(v);
+    out.push_back(timesI(v));  // orthogonal to v (i is antisymmetric) and to all before
+  }
+  return out;
+}
+
+}  // namespace
+
+bool travellingWavePaired(const fe::DofTransform& T) {
+  if (T.copies() != 2 || T.numEquations() % 2 != 0) return false;
+  // T i = i T on every DOF: copy b of (i x) is copy a of x, copy a of (i x) is -copy b of x,
+  // with i x = (-x_{2m+1}, x_{2m}) on the unknowns.
+  for (Index n = 0; n < T.numNodes(); ++n)
+    for (int d = 0; d < 3; ++d) {
+      std::map<long long, double> a, b;
+      for (const auto& t : T.terms(n, d, 0)) a[t.equation] += t.coefficient;
+      for (const auto& t : T.terms(n, d, 1)) b[t.equation] += t.coefficient;
+      const auto coefficient = [](const std::map<long long, double>& m, long long eq) {
+        const auto it = m.find(eq);
+        return it == m.end() ? 0.0 : it->second;
+      };
+      for (const auto* m : {&a, &b})
+        for (const auto& [eq, unused] : *m) {
+          const long long ea = eq - eq % 2, eb = ea + 1;
+          const double scale = std::max({std::abs(coefficient(a, ea)), std::abs(coefficient(a, eb)),
+                                         std::abs(coefficient(b, ea)), std::abs(coefficient(b, eb)), 1e-300});
+          if (std::abs(coefficient(b, eb) - coefficient(a, ea)) > 1e-12 * scale ||
+              std::abs(coefficient(a, eb) + coefficient(b, ea)) > 1e-12 * scale)
+            return false;
+        }
+    }
+  return true;
+}
 
 fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int k, const std::vector<char>& fixed,
                                  const Eigen::Matrix3d& Q) {
@@ -56,14 +111,15 @@ fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int
         for (int copy = 0; copy < copies; ++copy) C(row++, 3 * copy + d) = 1.0;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
     const auto& sv = svd.singularValues();
-    for (int j = 0; j < m; ++j) {
-      if (j < sv.size() && sv(j) > 1e-10) continue;
+    std::vector<Eigen::VectorXd> basis;
+    for (int j = 0; j < m; ++j)
+      if (!(j < sv.size() && sv(j) > 1e-10)) basis.push_back(svd.matrixV().col(j));
+    if (copies == 2) basis = travellingWavePairedBasis(basis);
+    for (const auto& v : basis) {
       const long long eq = next++;
       for (int copy = 0; copy < copies; ++copy)
-        for (int d = 0; d < 3; ++d) {
-          const double v = svd.matrixV()(3 * copy + d, j);
-          if (std::abs(v) > 1e-14) at(n, d, copy).push_back({eq, v});
-        }
+        for (int d = 0; d < 3; ++d)
+          if (std::abs(v(3 * copy + d)) > 1e-14) at(n, d, copy).push_back({eq, v(3 * copy + d)});
     }
   }
   // Right face: rotated, phase-shifted combinations of the left face.

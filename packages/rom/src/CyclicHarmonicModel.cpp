@@ -11,6 +11,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
+#include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "TransposeProduct.hpp"
 
@@ -20,6 +21,8 @@ struct CyclicHarmonicModel::Impl {
   cyclic::HarmonicOperators op;
   RetainedDofSet dofs;
   double eta = 0;
+  // Complex solves on the forward travelling wave (half the size) when the real form pairs.
+  solvers::ComplexDirectSolver::Structure structure = solvers::ComplexDirectSolver::Structure::General;
   Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
   Teuchos::RCP<linalg::MultiVector> F;  // the load patterns (null: none)
 
@@ -52,6 +55,8 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   I.op = cyclic::assembleHarmonicOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
                                            problem.prestress, comm);
   I.eta = problem.lossFactor;
+  if (cyclic::travellingWavePaired(I.op.assembler->transform()))
+    I.structure = solvers::ComplexDirectSolver::Structure::TravellingWavePairs;
 
   const auto& T = I.op.assembler->transform();
   const auto map = I.op.assembler->map();
@@ -108,12 +113,20 @@ const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *
 
 Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   const auto& I = *impl_;
-  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega);
-  linalg::MultiVector xr(I.G->getMap(), I.G->getNumVectors()), xi(I.G->getMap(), I.G->getNumVectors());
-  solver.solve(*I.G, xr, xi);
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
+  // Only copy a's loads are solved for. Copy b's are i times them, and i commutes with
+  // K_k and M_k, so their responses are i times (copy a's reading -b, copy b's reading a).
+  const auto nd = I.dofs.size();
+  const auto Ga = I.G->subView(Teuchos::Range1D(0, std::size_t(nd) - 1));
+  linalg::MultiVector xr(I.G->getMap(), std::size_t(nd)), xi(I.G->getMap(), std::size_t(nd));
+  solver.solve(*Ga, xr, xi);
   Eigen::MatrixXcd A(I.size(), I.size());
-  A.real() = I.retained(xr);
-  A.imag() = I.retained(xi);
+  A.leftCols(nd).real() = I.retained(xr);
+  A.leftCols(nd).imag() = I.retained(xi);
+  if (I.op.copies == 2) {
+    A.block(0, nd, nd, nd) = -A.block(nd, 0, nd, nd);
+    A.block(nd, nd, nd, nd) = A.block(0, 0, nd, nd);
+  }
   return A;
 }
 
@@ -124,7 +137,7 @@ Eigen::Index CyclicHarmonicModel::numLoads() const {
 Eigen::MatrixXcd CyclicHarmonicModel::loadResponse(double omega) const {
   const auto& I = *impl_;
   if (I.F.is_null()) return ComplianceModel::loadResponse(omega);  // the InputError
-  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega);
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
   linalg::MultiVector xr(I.F->getMap(), I.F->getNumVectors()), xi(I.F->getMap(), I.F->getNumVectors());
   solver.solve(*I.F, xr, xi);
   Eigen::MatrixXcd X(I.size(), numLoads());

@@ -168,27 +168,64 @@ void DirectSolver::solve(const linalg::MultiVector& b, linalg::MultiVector& x) c
 
 using ComplexSparse = Eigen::SparseMatrix<std::complex<double>, Eigen::ColMajor, int>;
 
+namespace {
+
+// UMFPACK's LU with its transpose solve (UMFPACK_Aat: Z^T x = b, no conjugate) on the same factors.
+struct UmfPackWithTransposeSolve : Eigen::UmfPackLU<ComplexSparse> {
+  Eigen::MatrixXcd solveTransposed(const Eigen::MatrixXcd& b) const {
+    Eigen::MatrixXcd x(b.rows(), b.cols());
+    for (Eigen::Index j = 0; j < b.cols(); ++j)
+      if (Eigen::umfpack_solve(UMFPACK_Aat, mp_matrix.outerIndexPtr(), mp_matrix.innerIndexPtr(), mp_matrix.valuePtr(),
+                               x.col(j).data(), b.col(j).data(), m_numeric, m_control.data(), m_umfpackInfo.data()))
+        throw SolverError("UMFPACK: the transposed solve failed");
+    return x;
+  }
+};
+
+// Full symmetric matrix from its lower triangle.
+SparseMatrix symmetricFromLower(const SparseMatrix& L) {
+  const SparseMatrix strictlyLower = L.triangularView<Eigen::StrictlyLower>();
+  return L + SparseMatrix(strictlyLower.transpose());
+}
+
+// P + iQ of a paired real form [[P, -Q], [Q, P]] (pairs (2m, 2m+1)): the even rows and
+// columns give P, the odd rows of the even columns give Q.
+ComplexSparse forwardWave(const SparseMatrix& full) {
+  std::vector<Eigen::Triplet<std::complex<double>, int>> entries;
+  entries.reserve(std::size_t(full.nonZeros() / 2));
+  for (int col = 0; col < full.outerSize(); col += 2)
+    for (SparseMatrix::InnerIterator it(full, col); it; ++it)
+      entries.emplace_back(it.row() / 2, col / 2,
+                           it.row() % 2 == 0 ? std::complex<double>(it.value(), 0) : std::complex<double>(0, it.value()));
+  ComplexSparse Z(full.rows() / 2, full.cols() / 2);
+  Z.setFromTriplets(entries.begin(), entries.end());
+  return Z;
+}
+
+}  // namespace
+
 struct ComplexDirectSolver::Impl {
   explicit Impl(const linalg::Matrix& A) : gather(A) {}
   RootGather gather;
+  bool wave = false;
   ComplexSparse matrix;  // UMFPACK's solve reads the matrix again: it must outlive lu
-  Eigen::UmfPackLU<ComplexSparse> lu;
+  UmfPackWithTransposeSolve lu;
 };
 
 ComplexDirectSolver::ComplexDirectSolver(const linalg::Matrix& A, std::complex<double> a, const linalg::Matrix& B,
-                                         std::complex<double> b)
+                                         std::complex<double> b, Structure structure)
     : impl_(std::make_unique<Impl>(A)) {
   auto& I = *impl_;
+  I.wave = structure == Structure::TravellingWavePairs;
+  if (I.wave && A.getGlobalNumRows() % 2 != 0)
+    throw SolverError("travelling-wave solve: an odd number of equations (" + std::to_string(A.getGlobalNumRows()) +
+                      ") cannot pair");
   int ok = 1;
   const SparseMatrix LA = I.gather.lower(A), LB = I.gather.lower(B);
   if (I.gather.root) {
-    // Full symmetric matrices from their lower triangles, combined with complex weights.
-    const auto full = [](const SparseMatrix& L) -> ComplexSparse {
-      const SparseMatrix strictlyLower = L.triangularView<Eigen::StrictlyLower>();
-      const SparseMatrix F = L + SparseMatrix(strictlyLower.transpose());
-      return F.cast<std::complex<double>>();
-    };
-    I.matrix = a * full(LA) + b * full(LB);
+    const SparseMatrix FA = symmetricFromLower(LA), FB = symmetricFromLower(LB);
+    I.matrix = I.wave ? ComplexSparse(a * forwardWave(FA) + b * forwardWave(FB))
+                      : ComplexSparse(a * FA.cast<std::complex<double>>() + b * FB.cast<std::complex<double>>());
     // The pattern is symmetric: symmetric strategy with a METIS ordering of A + A^T.
     I.lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
     I.lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
@@ -209,9 +246,24 @@ void ComplexDirectSolver::solve(const linalg::MultiVector& rhs, linalg::MultiVec
   const auto& I = *impl_;
   const Eigen::MatrixXd b = I.gather.columns(rhs);
   Eigen::MatrixXcd x;
-  if (I.gather.root) {
+  if (I.gather.root && !I.wave) {
     const Eigen::MatrixXcd bc = b.cast<std::complex<double>>();
     x = I.lu.solve(bc);
+  } else if (I.gather.root) {
+    const std::complex<double> i(0, 1);
+    const Eigen::MatrixXcd bc = b.cast<std::complex<double>>();
+    Eigen::MatrixXcd plus(b.rows() / 2, b.cols()), minus(b.rows() / 2, b.cols());
+    for (Eigen::Index m = 0; m < plus.rows(); ++m) {
+      plus.row(m) = 0.5 * (bc.row(2 * m) + i * bc.row(2 * m + 1));
+      minus.row(m) = 0.5 * (bc.row(2 * m) - i * bc.row(2 * m + 1));
+    }
+    const Eigen::MatrixXcd up = I.lu.solve(plus), um = I.lu.solveTransposed(minus);
+    if (I.lu.info() != Eigen::Success) throw SolverError("UMFPACK: the solve failed");
+    x.resize(b.rows(), b.cols());
+    for (Eigen::Index m = 0; m < plus.rows(); ++m) {
+      x.row(2 * m) = up.row(m) + um.row(m);
+      x.row(2 * m + 1) = -i * up.row(m) + i * um.row(m);
+    }
   }
   I.gather.scatter(x.real(), xReal);
   I.gather.scatter(x.imag(), xImag);

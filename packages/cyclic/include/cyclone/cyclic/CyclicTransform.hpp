@@ -18,6 +18,14 @@ namespace cyclone::cyclic {
 /// 1 for k = 0 and k = N/2, else 2.
 int copiesFor(int sectors, int k);
 
+/// True when the unknowns come in pairs (2m, 2m+1) = (x_a, x_b) on which
+/// multiplication by i (the travelling-wave phase, (a, b) -> (-b, a) on every
+/// physical DOF) acts as (x_a, x_b) -> (-x_b, x_a). Then the real-form K_k, M_k
+/// are [[A, -B], [B, A]] on the pairs and decouple into the forward travelling
+/// wave's A + iB (and its transpose for the backward wave): half the size.
+/// cyclicTransform numbers its unknowns so for 0 < k < N/2.
+bool travellingWavePaired(const fe::DofTransform& T);
+
 /// General form: `fixed[3 * node + component]` marks DOFs held at zero; Q maps a
 /// left-face vector onto the right face (the identity for scalar DOFs such as
 /// lumped models). Throws InputError if the fixed DOFs are not cyclically symmetric.
