@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "SceneStages.hpp"
@@ -121,6 +122,7 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
 // One curve of a study: frequency (Hz) and max |x(t)| of the first output DOF per point.
 struct Curve {
   std::vector<double> hz, peak;
+  std::vector<std::size_t> starts{0};  ///< where each sweep starts (continuation::Branch::segmentStarts)
 };
 
 Curve curveOf(ForcedResponseSetup& setup, const continuation::Branch& branch) {
@@ -131,6 +133,7 @@ Curve curveOf(ForcedResponseSetup& setup, const continuation::Branch& branch) {
     c.hz.push_back(setup.apply(pt.parameter).first / (2 * M_PI));
     c.peak.push_back(hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(dof * nc, nc))));
   }
+  c.starts.insert(c.starts.end(), branch.segmentStarts.begin(), branch.segmentStarts.end());
   return c;
 }
 
@@ -501,15 +504,46 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                                                       "study's largest value");
       } else if (name == "loss_factor") varied = variedModels(models, v, 0), m = &varied;
       else if (name == "modes") varied = variedModels(models, -1, int(v)), m = &varied;
-      auto s = makeDiscForcedResponse(mesh, *m, sv);
       std::ostringstream tag;
       tag << "study_" << name << "_" << i;
       Timer t;
-      const auto result = traceOne(s, tag.str());
-      const Curve c = curveOf(s, result.branch);
+      // A value that reproduces the reference scene is the reference curve: its files are
+      // copied, not traced again (the loss factor and modes change the models: always traced).
+      const bool isReference = (name == "preload" && v == spec.contact.preload) ||
+                               (name == "mu" && v == spec.contact.mu) ||
+                               (name == "contact_stiffness" && v == spec.contact.kn && v == spec.contact.kt) ||
+                               (name == "force" && v == 1.0) ||
+                               (name == "clearance" && v == spec.gap.clearance) ||
+                               (name == "harmonics" && sv.harmonics == spec.harmonics);
+      std::optional<ForcedResponseSetup> traced;
+      if (!isReference) traced.emplace(makeDiscForcedResponse(mesh, *m, sv));
+      const auto result = isReference ? reference : traceOne(*traced, tag.str());
+      if (isReference) {
+        if (comm->getRank() == 0)
+          for (const std::string ext : {".csv", ".h5", ".svg"}) {
+            if (!std::filesystem::exists(outDir + "/disc_frc" + ext)) continue;
+            AtomicFile copy(outDir + "/" + tag.str() + ext);
+            std::filesystem::copy_file(outDir + "/disc_frc" + ext, copy.tempPath(),
+                                       std::filesystem::copy_options::overwrite_existing);
+            copy.commit();
+          }
+        for (const std::string ext : {".h5", ".csv", ".svg"}) summary.written.push_back(outDir + "/" + tag.str() + ext);
+        std::ostringstream line;
+        line << tag.str() << ": " << name << " = " << v << " is the reference scene: disc_frc's curve, not traced again";
+        summary.computed.push_back(line.str());
+        log::info(line.str());
+      }
+      const Curve c = curveOf(isReference ? setup : *traced, result.branch);
       std::ostringstream label;
       label << name << " = " << v;
-      plot.addLine(c.hz, c.peak, post::SvgPlot::palette(int(i)), label.str());
+      for (std::size_t k = 0; k < c.starts.size(); ++k) {  // one line per sweep, labelled once
+        const auto a = long(std::min(c.starts[k], c.hz.size()));
+        const auto b = long(k + 1 < c.starts.size() ? std::min(c.starts[k + 1], c.hz.size()) : c.hz.size());
+        if (b - a < 1) continue;
+        plot.addLine(std::vector<double>(c.hz.begin() + a, c.hz.begin() + b),
+                     std::vector<double>(c.peak.begin() + a, c.peak.begin() + b), post::SvgPlot::palette(int(i)),
+                     k == 0 ? label.str() : std::string());
+      }
       ++studyCurves;
       table << v << "," << result.peakOmega / (2 * M_PI) << "," << result.peak << "," << result.branch.points.size()
             << "," << (result.branch.finished ? 1 : 0) << "," << t.seconds() << "\n";

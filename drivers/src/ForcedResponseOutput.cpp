@@ -25,6 +25,15 @@ namespace cyclone::scenes {
 
 namespace {
 
+// [begin, end) of each segment of a branch, as consecutive bounds (first 0, last the size).
+std::vector<std::size_t> segmentBounds(const continuation::Branch& branch) {
+  std::vector<std::size_t> bounds{0};
+  for (std::size_t s : branch.segmentStarts)
+    if (s > bounds.back() && s < branch.points.size()) bounds.push_back(s);
+  bounds.push_back(branch.points.size());
+  return bounds;
+}
+
 // The AFT sample count is checked by doubling it: the largest-response point
 // is solved again with 2N samples and the change of its peak reported (friction
 // and gaps place their events only to within a sample).
@@ -199,7 +208,17 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     auto determined = stability;  // an undetermined point neither loses nor regains stability
     for (auto& st : determined)
       if (st.stable == 2) st.stable = -1;
-    const auto flags = hbm::bifurcationFlags(determined);
+    // Flags per segment: the last point of one sweep and the first of the next are no path.
+    std::vector<std::string> flags;
+    std::vector<int> segmentOf;
+    const auto bounds = segmentBounds(branch);
+    for (std::size_t s = 0; s + 1 < bounds.size(); ++s) {
+      const std::vector<hbm::CurvePointStability> part(determined.begin() + long(bounds[s]),
+                                                       determined.begin() + long(bounds[s + 1]));
+      const auto f = hbm::bifurcationFlags(part);
+      flags.insert(flags.end(), f.begin(), f.end());
+      segmentOf.insert(segmentOf.end(), f.size(), int(s));
+    }
     AtomicFile file(csvPath);
     std::ofstream csv(file.tempPath());
     csv.precision(12);
@@ -211,7 +230,7 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
         if (h > 0) csv << "," << name << "_amp_h" << h;
       csv << "," << name << "_max";
     }
-    csv << ",stable,max_floquet_real,bifurcation\n";
+    csv << ",stable,max_floquet_real,bifurcation,segment\n";
     const int nc = hb.numCoefficients();
     for (std::size_t i = 0; i < branch.points.size(); ++i) {
       const auto& pt = branch.points[i];
@@ -237,7 +256,7 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
         csv << ",,";
         plotStable.push_back(1);
       }
-      csv << "," << flags[i] << "\n";
+      csv << "," << flags[i] << "," << segmentOf[i] << "\n";
       if (!flags[i].empty()) ++special[flags[i]];
     }
     csv.close();
@@ -249,8 +268,13 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     // Stable stretches solid, unstable ones dashed (each stretch shares its end points).
     bool labelled[2] = {false, false};
     for (std::size_t i = 0; i + 1 < plotW.size();) {
+      if (segmentOf[i + 1] != segmentOf[i]) {  // a new sweep: no line across
+        ++i;
+        continue;
+      }
       std::size_t j = i + 1;
-      while (j + 1 < plotW.size() && (plotStable[j] != 0) == (plotStable[i] != 0)) ++j;
+      while (j + 1 < plotW.size() && segmentOf[j + 1] == segmentOf[i] && (plotStable[j] != 0) == (plotStable[i] != 0))
+        ++j;
       const bool stablePart = plotStable[i] != 0;  // undetermined points drawn with the stable ones
       std::string label;
       if (!labelled[stablePart]) {
@@ -275,6 +299,7 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
       curve.parameter.push_back(branch.points[i].parameter);
       curve.coefficients.push_back(branch.points[i].x);
       curve.stable.push_back(hill ? plotStable[i] : -1);
+      curve.segment.push_back(segmentOf[i]);
     }
     post::writeResponseCurveHdf5(outDir + "/" + name + ".h5", curve);
   }

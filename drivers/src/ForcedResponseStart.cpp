@@ -9,6 +9,7 @@
 // the friction stuck, within 1e-3 of the answer. Where no Newton start converges,
 // the response is followed from rest as the excitation grows.
 #include <cmath>
+#include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -54,15 +55,11 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   return start;
 }
 
-continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
-  if (start.x.size() == 0) {
-    continuation::Branch branch;
-    branch.stopReason = start.method;
-    return branch;
-  }
-  double scale = setup.unknownScale;
-  if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
-  if (!(scale > 0) || scale == 1) return continuation::traceBranch(continuationProblem(setup), start.x, setup.continuation);
+namespace {
+
+// One arclength run over setup.continuation's range from a converged start.
+continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::VectorXd& start, double scale) {
+  if (!(scale > 0) || scale == 1) return continuation::traceBranch(continuationProblem(setup), start, setup.continuation);
   // LOCA's arclength mixes the unknowns with the parameter: unknowns of order one keep
   // its steps in proportion (X = scale Y).
   const auto base = continuationProblem(setup);
@@ -74,8 +71,52 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
     base.jacobian(scale * Y, p, J);
     J *= scale;
   };
-  auto branch = continuation::traceBranch(scaled, start.x / scale, setup.continuation);
+  auto branch = continuation::traceBranch(scaled, start / scale, setup.continuation);
   for (auto& point : branch.points) point.x *= scale;
+  return branch;
+}
+
+}  // namespace
+
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+  if (start.x.size() == 0) {
+    continuation::Branch branch;
+    branch.stopReason = start.method;
+    return branch;
+  }
+  double scale = setup.unknownScale;
+  if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
+  auto branch = traceOneSweep(setup, start.x, scale);
+  if (!branch.returnedToStart) return branch;
+
+  // The branch folded back to the start: the rest of the range holds another branch,
+  // which a sweep from the other end finds (as a test rig's downward sweep does).
+  const auto upward = setup.continuation;
+  setup.continuation.from = upward.to, setup.continuation.to = upward.from;
+  const StartingPoint far = findStartingPoint(setup);
+  continuation::Branch down;
+  if (far.x.size() > 0) down = traceOneSweep(setup, far.x, scale);
+  setup.continuation = upward;
+  setup.apply(upward.from);
+  std::ostringstream why;
+  why << "two sweeps: from the start the branch turned back at p = " << branch.reached
+      << " and returned to the start; from the end of the range (" << (far.x.size() > 0 ? far.method : "no start: " + far.method)
+      << ") ";
+  if (down.points.empty()) {
+    why << "nothing traced: " << upward.to << " .. " << branch.reached << " not traced";
+  } else {
+    double lowest = upward.to;  // the farthest the second sweep got towards the start
+    for (const auto& pt : down.points)
+      lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+    const bool covered = upward.to >= upward.from ? lowest <= branch.reached : lowest >= branch.reached;
+    why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
+    if (!covered) why << "; " << branch.reached << " .. " << lowest << " not traced";
+    branch.finished = covered;
+    branch.segmentStarts.push_back(branch.points.size());
+    for (auto& pt : down.points) branch.points.push_back(std::move(pt));
+    branch.failedSteps += down.failedSteps;
+  }
+  branch.stopReason = why.str();
   return branch;
 }
 

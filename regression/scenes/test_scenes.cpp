@@ -98,9 +98,10 @@ int expectNoStableMiddleBranch(const fs::path& dir) {
     const auto col = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) - names.begin(); };
     const long f = col("freq_hz"), st = col("stable");
     if (f == long(names.size()) || st == long(names.size())) continue;  // a study's table, not a curve
-    const long fl = col("bifurcation");
+    const long fl = col("bifurcation"), sg = col("segment");
+    EXPECT_LT(sg, long(names.size())) << name << ": no segment column";
     std::vector<double> hz;
-    std::vector<std::string> verdict, flag;
+    std::vector<std::string> verdict, flag, segment;
     for (std::string line; std::getline(csv, line);) {
       std::vector<std::string> cells;
       std::stringstream ls(line);
@@ -109,14 +110,17 @@ int expectNoStableMiddleBranch(const fs::path& dir) {
       hz.push_back(std::stod(cells.at(f)));
       verdict.push_back(cells.at(st));
       flag.push_back(fl < long(cells.size()) ? cells[fl] : "");
+      segment.push_back(sg < long(cells.size()) ? cells[sg] : "");
     }
     for (std::size_t i = 0; i < hz.size(); ++i)
       EXPECT_TRUE(verdict[i] == "0" || verdict[i] == "1" || verdict[i] == "2") << name << " point " << i << ": '" << verdict[i] << "'";
     for (std::size_t i = 1; i + 1 < hz.size(); ++i) {
-      if (!(hz[i - 1] > hz[i] && hz[i] > hz[i + 1])) continue;
+      // Within one sweep (a second sweep from the range's end starts a new segment).
+      if (!(hz[i - 1] > hz[i] && hz[i] > hz[i + 1]) || segment[i - 1] != segment[i] || segment[i + 1] != segment[i])
+        continue;
       std::size_t a = i, b = i;  // the backward stretch's ends
-      while (a > 0 && hz[a - 1] > hz[a]) --a;
-      while (b + 1 < hz.size() && hz[b + 1] < hz[b]) ++b;
+      while (a > 0 && hz[a - 1] > hz[a] && segment[a - 1] == segment[a]) --a;
+      while (b + 1 < hz.size() && hz[b + 1] < hz[b] && segment[b + 1] == segment[b]) ++b;
       if (flag[a] != "fold" || flag[b] != "fold") continue;
       ++checked;
       EXPECT_NE(verdict[i], "1") << name << ": point " << i << " at " << hz[i] << " Hz lies between two folds";
@@ -306,7 +310,27 @@ TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
                            "      modes: [10]\n";
   scenes::SceneOverrides o;
   o.outputDirectory = dir.string();
-  scenes::runSceneText(yaml, "studies.yaml", o, Tpetra::getDefaultComm());
+  const auto summary = scenes::runSceneText(yaml, "studies.yaml", o, Tpetra::getDefaultComm());
+  // The reference curve covers the sweep (its first sweep folds back to the start at about
+  // 346 Hz; a second sweep from the range's end traces the rest).
+  double sweepFrom = 0, sweepTo = 0;
+  for (const auto& l : summary.computed)
+    if (const auto at = l.find("; sweep "); at != std::string::npos)
+      EXPECT_EQ(std::sscanf(l.c_str() + at, "; sweep %lf -> %lf", &sweepFrom, &sweepTo), 2) << l;
+  ASSERT_GT(sweepTo, sweepFrom);
+  {
+    std::ifstream csv(dir / "disc_frc.csv");
+    std::string line;
+    std::getline(csv, line);
+    double lo = 1e300, hi = -1e300;
+    for (; std::getline(csv, line);) {
+      double point, omega, hz;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &point, &omega, &hz), 3) << line;
+      lo = std::min(lo, hz), hi = std::max(hi, hz);
+    }
+    EXPECT_NEAR(lo, sweepFrom, 1e-6 * sweepTo);
+    EXPECT_NEAR(hi, sweepTo, 1e-6 * sweepTo);
+  }
   // The reference curve's peak (the first output DOF's max |x(t)| column), then each study's value.
   auto studyPeak = [](const fs::path& csvPath) {
     std::ifstream csv(csvPath);
@@ -544,9 +568,11 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
     std::string cell;
     for (int c = 0; c < 14 && std::getline(ss, cell, ','); ++c) v.push_back(std::stod(cell));
     ASSERT_EQ(v.size(), 14u);
-    std::getline(ss, cell);  // the bifurcation column: empty or a kind
+    std::getline(ss, cell, ',');  // the bifurcation column: empty or a kind
     if (cell == "fold") folds.push_back(v[1]);
     else EXPECT_EQ(cell, "") << line;
+    std::getline(ss, cell);  // the segment: one sweep
+    EXPECT_EQ(cell, "0") << line;
     if (v[4] > best) best = v[4], bestW = v[1];
     stability.push_back(int(v[12]));
     ++rows;
@@ -570,6 +596,7 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   // and a real HDF5 client (h5dump) reads it.
   const auto curve = post::readResponseCurveHdf5((dir / "frc.h5").string());
   ASSERT_EQ(int(curve.omega.size()), rows);
+  EXPECT_EQ(curve.segment, std::vector<int>(std::size_t(rows), 0));  // one sweep
   EXPECT_EQ(curve.numDofs, 1);
   EXPECT_EQ(curve.harmonics, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
   double h5best = 0;

@@ -61,3 +61,14 @@ TEST(BranchTurn, GradualTurnAroundIsCaughtAtItsTip) {
   EXPECT_EQ(retraced(path, point(0.35, 0.35)), 5);  // back on the segment 0.3 -> 0.4: kink at index 5
   EXPECT_EQ(retraced(path, point(0.41, 0.43)), -1);
 }
+
+// A corrector that lands far from its predictor: the step is more than
+// kJumpRatio times the one before it. LOCA's adaptive step grows by at most
+// 1.5x, so a regular path never comes close.
+TEST(BranchTurn, CorrectorJumpIsAStepFarLongerThanTheLast) {
+  const auto a = point(0, 0), b = point(0.1, 0.0);
+  EXPECT_FALSE(branchJump(a, b, point(0.25, 0.0)));    // 1.5x: LOCA's largest growth
+  EXPECT_FALSE(branchJump(a, b, point(0.1, 0.45)));    // a sharp bend, 4.5x
+  EXPECT_TRUE(branchJump(a, b, point(0.05, -0.6)));    // back and far off: another branch
+  EXPECT_FALSE(branchJump(a, a, point(1, 1)));         // no step before: no measure
+}

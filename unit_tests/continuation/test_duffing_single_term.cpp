@@ -5,7 +5,9 @@
 // Parameters of the issue: m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18: peak 2.8416 at W = 1.2667.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 
@@ -80,4 +82,34 @@ TEST(ArclengthContinuation, DuffingSingleTermThroughBothFolds) {
   EXPECT_EQ(folds, 2);
   EXPECT_NEAR(Amax / Apeak, 1.0, 2e-3);  // the discrete branch samples the peak within a step
   EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
+}
+
+// A branch that folds back and runs out at the bound it started from has not
+// traced the rest of the range: p = x (2 - x) from p = 0 rises to its fold at
+// p = 1 (x = 1) and returns to p = 0 (x = 2); the range asked for is 0..2.
+TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
+  continuation::ContinuationProblem fold;
+  fold.size = 1;
+  fold.residual = [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F.resize(1);
+    F(0) = p - x(0) * (2 - x(0));
+  };
+  fold.jacobian = [](const Eigen::VectorXd& x, double, Eigen::MatrixXd& J) {
+    J.resize(1, 1);
+    J(0, 0) = -(2 - 2 * x(0));
+  };
+  continuation::ContinuationOptions o;
+  o.from = 0;
+  o.to = 2;
+  o.initialStep = 0.01;
+  o.maxStep = 0.05;
+  const auto branch = continuation::traceBranch(fold, Eigen::VectorXd::Zero(1), o);
+  EXPECT_FALSE(branch.finished);
+  EXPECT_NE(branch.stopReason.find("returned to the start of the range"), std::string::npos) << branch.stopReason;
+  EXPECT_NE(branch.stopReason.find("not traced"), std::string::npos) << branch.stopReason;
+  double top = 0;
+  for (const auto& pt : branch.points) top = std::max(top, pt.parameter);
+  EXPECT_NEAR(top, 1.0, 1e-3);  // the fold
+  ASSERT_FALSE(branch.points.empty());
+  EXPECT_NEAR(branch.points.back().x(0), 2.0, 1e-6);  // back at p = 0 on the other half
 }

@@ -27,14 +27,20 @@ struct BranchTurnedBack : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A corrector that converged far from its predictor (BranchTurn.hpp: branchJump): the
+// point is dropped and the run restarts from the last point with a smaller step.
+struct CorrectorJumped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class Interface : public LOCA::LAPACK::Interface {
 public:
   /// before: the branch's point before x0 when LOCA resumes a branch (nullptr at its start),
   /// so that a first step back along it is caught too.
   Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch,
-            const BranchPoint* before, double lo, double hi, bool check)
+            const BranchPoint* before, double lo, double hi, bool check, bool jumpCheck)
       : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(before), lo_(lo), hi_(hi),
-        check_(check) {
+        check_(check), jumpCheck_(jumpCheck) {
     for (int i = 0; i < x0.size(); ++i) guess_(i) = x0(i);
   }
   const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
@@ -69,6 +75,16 @@ public:
     std::vector<const BranchPoint*> path;
     if (before_) path.push_back(before_);
     for (std::size_t i = 0; i + 1 < branch_.points.size(); ++i) path.push_back(&branch_.points[i]);
+    // Both steps inside this run: a run's first step (LOCA's initial step) has no
+    // relation to the step size the run before it had cut down to.
+    const std::size_t n = branch_.points.size();
+    if (jumpCheck_ && n >= 3 && branchJump(branch_.points[n - 3], branch_.points[n - 2], branch_.points[n - 1])) {
+      branch_.points.pop_back();
+      std::ostringstream msg;
+      msg << "the corrector jumped to another branch from p = " << branch_.points.back().parameter << " (to p = "
+          << conParam << ")";
+      throw CorrectorJumped(msg.str());
+    }
     // LOCA's last step overshoots the range's bound and then steps back onto it: not a flip.
     const double last = path.empty() ? p_ : path.back()->parameter;
     const int kink = check_ && last >= lo_ && last <= hi_ ? retracedFrom(path, branch_.points.back()) : -1;
@@ -111,7 +127,7 @@ private:
   Branch& branch_;
   const BranchPoint* before_;
   double lo_, hi_;
-  bool check_;
+  bool check_, jumpCheck_;
   static constexpr int kRetraceSteps = 3;
   int retracing_ = 0, kinkPoint_ = 0;
   Timer sinceLog_, total_;
@@ -154,7 +170,7 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
     p.addParameter("p", p0);
     const BranchPoint* before = keepStart || branch.points.size() < 2 ? nullptr : &branch.points[branch.points.size() - 2];
     Interface iface(problem, x0, p0, run, before, std::min(o.from, o.to), std::max(o.from, o.to),
-                    o.stopWhereItTurnsBack);
+                    o.stopWhereItTurnsBack, o.restartWhereTheCorrectorJumps);
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
     group->setParams(p);
     auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
@@ -167,6 +183,9 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
     } catch (const BranchTurnedBack& e) {
       run.stopReason = e.what();
       turnedBack = true;
+    } catch (const CorrectorJumped& e) {
+      run.stopReason = e.what();
+      threw = true;  // restarted like a failed evaluation: from the last point, a quarter of the step
     } catch (const std::exception& e) {
       run.stopReason = std::string("continuation stopped by an exception: ") + e.what();
       threw = true;
@@ -318,6 +337,23 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
     why << branch.stopReason << "; " << branch.points.size() - kept << " point(s) outside the range dropped";
     branch.points.resize(kept);
     branch.stopReason = why.str();
+  }
+  // A branch that folds back and runs out at the bound it started from (LOCA calls
+  // that the end of its range) has not traced the range beyond its turn.
+  if (branch.finished && branch.points.size() >= 2) {
+    double reached = o.from;
+    for (const auto& pt : branch.points)
+      reached = o.to >= o.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+    const double end = branch.points.back().parameter;
+    if (std::abs(end - o.from) < std::abs(end - o.to)) {
+      branch.finished = false;
+      branch.returnedToStart = true;
+      branch.reached = reached;
+      std::ostringstream why;
+      why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << end
+          << "): " << reached << " .. " << o.to << " not traced (the branch so far is kept)";
+      branch.stopReason = why.str();
+    }
   }
   return branch;
 }

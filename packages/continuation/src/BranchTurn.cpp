@@ -32,6 +32,11 @@ double turnCosine(const BranchPoint& a, const BranchPoint& b, const BranchPoint&
   return ((b.x - a.x).dot(c.x - b.x) + (b.parameter - a.parameter) * (c.parameter - b.parameter)) / (n1 * n2);
 }
 
+bool branchJump(const BranchPoint& a, const BranchPoint& b, const BranchPoint& c) {
+  const double before = distance(a, b);
+  return before > 0 && distance(b, c) > kJumpRatio * before;
+}
+
 int retracedFrom(const std::vector<const BranchPoint*>& path, const BranchPoint& c) {
   const int n = int(path.size());
   if (n < 2) return -1;

@@ -13,7 +13,8 @@ using namespace hdf5;
 
 void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
   const std::size_t P = c.omega.size(), m = std::size_t(c.numDofs) * c.numCoefficients;
-  if (c.coefficients.size() != P || c.stable.size() != P) throw Error("response curve: inconsistent point counts");
+  if (c.coefficients.size() != P || c.stable.size() != P || (!c.segment.empty() && c.segment.size() != P))
+    throw Error("response curve: inconsistent point counts");
   AtomicFile file(path);
   try {
     H5::Exception::dontPrint();
@@ -21,6 +22,7 @@ void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
     writeVector(h5, "omega", c.omega, H5::PredType::NATIVE_DOUBLE);
     writeVector(h5, "harmonics", c.harmonics, H5::PredType::NATIVE_INT);
     writeVector(h5, "stable", c.stable, H5::PredType::NATIVE_INT);
+    writeVector(h5, "segment", c.segment.empty() ? std::vector<int>(P, 0) : c.segment, H5::PredType::NATIVE_INT);
     writeVector(h5, "parameter", c.parameter.empty() ? c.omega : c.parameter, H5::PredType::NATIVE_DOUBLE);
     std::vector<double> flat(P * m);
     for (std::size_t p = 0; p < P; ++p) {
@@ -48,6 +50,9 @@ ResponseCurve readResponseCurveHdf5(const std::string& path) {
     c.harmonics = readVector<int>(h5, "harmonics", H5::PredType::NATIVE_INT);
     c.stable = readVector<int>(h5, "stable", H5::PredType::NATIVE_INT);
     c.parameter = readVector<double>(h5, "parameter", H5::PredType::NATIVE_DOUBLE);
+    // Files written before segments existed hold one sweep.
+    c.segment = h5.nameExists("segment") ? readVector<int>(h5, "segment", H5::PredType::NATIVE_INT)
+                                         : std::vector<int>(c.omega.size(), 0);
     c.numDofs = readIntAttribute(h5, "num_dofs");
     c.numCoefficients = readIntAttribute(h5, "num_coefficients");
     c.samples = readIntAttribute(h5, "samples");

@@ -36,6 +36,11 @@ struct ContinuationOptions {
   /// force ramp of NLvib's example 03) looks the same. On for the FE disc scenes,
   /// whose H = 3 curve LOCA otherwise walked back to the start, calling it finished.
   bool stopWhereItTurnsBack = false;
+  /// Drop a point whose step is far longer than the step before it (BranchTurn.hpp:
+  /// branchJump: the corrector left the predictor's neighbourhood for another branch)
+  /// and restart from the last point with a quarter of the step; after 6 restarts
+  /// without progress the curve ends there with that reason.
+  bool restartWhereTheCorrectorJumps = true;
 };
 
 struct BranchPoint {
@@ -48,6 +53,14 @@ struct Branch {
   bool finished = false;  ///< reached the end of the range
   std::string stopReason;
   int failedSteps = 0;
+  /// The branch folded back and ran out at the bound it started from; `reached` is the
+  /// farthest parameter it got to (the range beyond was not traced).
+  bool returnedToStart = false;
+  double reached = 0;
+  /// Where later segments start in `points` (empty: one segment). A curve traced again
+  /// from the other end of the range (scenes::traceForcedResponse) is a second segment:
+  /// consecutive points across a start are not neighbours on a path.
+  std::vector<std::size_t> segmentStarts;
 };
 
 /// Traces from x0 (a solution, or a good guess, at p = options.from; it is

@@ -21,6 +21,16 @@ double turnStep(const BranchPoint& a, const BranchPoint& b);
 /// Cosine of the turn between the steps a -> b and b -> c in (x, p).
 double turnCosine(const BranchPoint& a, const BranchPoint& b, const BranchPoint& c);
 
+/// True when the step b -> c is more than kJumpRatio times as long as a -> b in
+/// (x, p). LOCA's adaptive arclength step grows by at most 1.5x per step
+/// (aggressiveness 0.5), and a corrector that stays near its predictor makes a
+/// chord about as long as the step; a chord five times the last one means
+/// Newton converged onto another branch (seen on an 8-sector friction disc: the
+/// mean normal displacement fell 5x in one step while the frequency went 18 Hz
+/// back).
+constexpr double kJumpRatio = 5.0;
+bool branchJump(const BranchPoint& a, const BranchPoint& b, const BranchPoint& c);
+
 /// path: the points traced so far, oldest first (the last 50 segments are
 /// searched); c: the new point after path.back(). -1 if c continues the
 /// branch; otherwise the index in path of the last point that still moved

@@ -7,6 +7,8 @@
 //   /harmonics        [H]            the harmonic numbers ([x0] then [cos, sin] per h > 0)
 //   /stable           [P]            1 stable, 0 unstable, -1 not computed, 2 undetermined (Hill's verdict changes with 2x AFT samples)
 //   /parameter        [P]            the continuation parameter (= /omega, or the force scale)
+//   /segment          [P]            the sweep each point belongs to (0; 1 for a second sweep from
+//                                    the range's end when the first folded back to its start)
 //   attributes on /: num_dofs, num_coefficients, samples
 #include <Eigen/Dense>
 #include <string>
@@ -21,6 +23,7 @@ struct ResponseCurve {
   std::vector<double> parameter;  ///< empty: the same as omega
   std::vector<Eigen::VectorXd> coefficients;
   std::vector<int> stable;
+  std::vector<int> segment;  ///< empty on writing: all 0
 };
 
 /// Written under a temporary name and renamed when complete.
