@@ -114,13 +114,16 @@ int expectNoStableMiddleBranch(const fs::path& dir) {
     }
     for (std::size_t i = 0; i < hz.size(); ++i)
       EXPECT_TRUE(verdict[i] == "0" || verdict[i] == "1" || verdict[i] == "2") << name << " point " << i << ": '" << verdict[i] << "'";
+    // Backward: against the sweep's direction, within one sweep (the first sweeps up; a
+    // second one, from the range's end, sweeps down).
+    const auto back = [&](std::size_t j, std::size_t k) {  // the step j -> k (neighbours)
+      return segment[j] == segment[k] && (segment[j] == "0" ? hz[k] < hz[j] : hz[k] > hz[j]);
+    };
     for (std::size_t i = 1; i + 1 < hz.size(); ++i) {
-      // Within one sweep (a second sweep from the range's end starts a new segment).
-      if (!(hz[i - 1] > hz[i] && hz[i] > hz[i + 1]) || segment[i - 1] != segment[i] || segment[i + 1] != segment[i])
-        continue;
+      if (!back(i - 1, i) || !back(i, i + 1)) continue;
       std::size_t a = i, b = i;  // the backward stretch's ends
-      while (a > 0 && hz[a - 1] > hz[a] && segment[a - 1] == segment[a]) --a;
-      while (b + 1 < hz.size() && hz[b + 1] < hz[b] && segment[b + 1] == segment[b]) ++b;
+      while (a > 0 && back(a - 1, a)) --a;
+      while (b + 1 < hz.size() && back(b, b + 1)) ++b;
       if (flag[a] != "fold" || flag[b] != "fold") continue;
       ++checked;
       EXPECT_NE(verdict[i], "1") << name << ": point " << i << " at " << hz[i] << " Hz lies between two folds";
