@@ -387,6 +387,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   opt.minStep = cs.getDouble("min_step", 1e-7);
   opt.maxSteps = cs.getInt("max_points", 2000);
   opt.tolerance = cs.getDouble("tolerance", 1e-8);
+  opt.lineSearch = readLineSearch(cs);
   cs.rejectUnknownKeys();
 
   // The reference system: the range from its resonance estimate unless given.

@@ -337,6 +337,15 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 // balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
 }  // namespace
 
+continuation::ContinuationOptions::LineSearch readLineSearch(SceneSection& cs) {
+  using LS = continuation::ContinuationOptions::LineSearch;
+  const std::string name = cs.getString("line_search", "full_step");
+  if (name == "full_step") return LS::FullStep;
+  if (name == "backtrack") return LS::Backtrack;
+  if (name == "polynomial") return LS::Polynomial;
+  throw InputError(cs.where("line_search"), "'" + name + "': must be full_step, backtrack or polynomial");
+}
+
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   auto sys = scene.section("system");
   const int n = sys.getInt("dofs", 0);
@@ -557,6 +566,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   opt.maxStep = cs.getDouble("max_step", 0.05);
   opt.maxSteps = cs.getInt("max_points", 5000);
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
+  opt.lineSearch = readLineSearch(cs);
   if (!(opt.tolerance > 0 && opt.tolerance < 1))
     throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");
   cs.rejectUnknownKeys();

@@ -53,35 +53,42 @@ TEST(ArclengthContinuation, DuffingSingleTermThroughBothFolds) {
   const double W0 = 0.5, s0 = k - m * W0 * W0;  // a near-linear start: the Newton solve refines it
   Eigen::VectorXd x0(2);
   x0 << P * s0 / (s0 * s0 + c * c * W0 * W0), P * c * W0 / (s0 * s0 + c * c * W0 * W0);
-  const auto branch = continuation::traceBranch(duffing(), x0, o);
-  ASSERT_TRUE(branch.finished) << branch.stopReason;
-  ASSERT_GT(branch.points.size(), 50u);
-  // Every point solves the system; the amplitude peak matches the closed form; the
-  // parameter turns back exactly twice (the two folds of the hardening curve).
-  double Amax = 0, Wmax = 0;
-  int folds = 0;
-  for (std::size_t i = 0; i < branch.points.size(); ++i) {
-    const auto& pt = branch.points[i];
-    Eigen::VectorXd F;
-    duffing().residual(pt.x, pt.parameter, F);
-    EXPECT_LT(F.norm(), 1e-9) << "point " << i;
-    const double A = pt.x.norm();
-    if (A > Amax) Amax = A, Wmax = pt.parameter;
-    // (The last point is clamped onto the range end by LOCA, possibly stepping back.)
-    if (i >= 2 && i + 1 < branch.points.size()) {
-      const double d1 = branch.points[i - 1].parameter - branch.points[i - 2].parameter;
-      const double d2 = pt.parameter - branch.points[i - 1].parameter;
-      if (std::abs(d1) > 1e-12 && std::abs(d2) > 1e-12 && (d1 > 0) != (d2 > 0)) {
-        ++folds;
-        std::printf("turning point near W = %.5f, A = %.5f\n", pt.parameter, pt.x.norm());
+  // The same curve with each of NOX's line searches in LOCA's corrector (a scene's
+  // continuation/line_search): on a smooth system they agree.
+  using LS = continuation::ContinuationOptions::LineSearch;
+  for (const LS search : {LS::FullStep, LS::Backtrack, LS::Polynomial}) {
+    SCOPED_TRACE("line search " + std::to_string(int(search)));
+    o.lineSearch = search;
+    const auto branch = continuation::traceBranch(duffing(), x0, o);
+    ASSERT_TRUE(branch.finished) << branch.stopReason;
+    ASSERT_GT(branch.points.size(), 50u);
+    // Every point solves the system; the amplitude peak matches the closed form; the
+    // parameter turns back exactly twice (the two folds of the hardening curve).
+    double Amax = 0, Wmax = 0;
+    int folds = 0;
+    for (std::size_t i = 0; i < branch.points.size(); ++i) {
+      const auto& pt = branch.points[i];
+      Eigen::VectorXd F;
+      duffing().residual(pt.x, pt.parameter, F);
+      EXPECT_LT(F.norm(), 1e-9) << "point " << i;
+      const double A = pt.x.norm();
+      if (A > Amax) Amax = A, Wmax = pt.parameter;
+      // (The last point is clamped onto the range end by LOCA, possibly stepping back.)
+      if (i >= 2 && i + 1 < branch.points.size()) {
+        const double d1 = branch.points[i - 1].parameter - branch.points[i - 2].parameter;
+        const double d2 = pt.parameter - branch.points[i - 1].parameter;
+        if (std::abs(d1) > 1e-12 && std::abs(d2) > 1e-12 && (d1 > 0) != (d2 > 0)) {
+          ++folds;
+          std::printf("turning point near W = %.5f, A = %.5f\n", pt.parameter, pt.x.norm());
+        }
       }
     }
+    std::printf("single-term Duffing: %zu points, peak %.5f at W = %.5f (closed form %.5f at %.5f), %d folds\n",
+                branch.points.size(), Amax, Wmax, Apeak, Wpeak, folds);
+    EXPECT_EQ(folds, 2);
+    EXPECT_NEAR(Amax / Apeak, 1.0, 2e-3);  // the discrete branch samples the peak within a step
+    EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
   }
-  std::printf("single-term Duffing: %zu points, peak %.5f at W = %.5f (closed form %.5f at %.5f), %d folds\n",
-              branch.points.size(), Amax, Wmax, Apeak, Wpeak, folds);
-  EXPECT_EQ(folds, 2);
-  EXPECT_NEAR(Amax / Apeak, 1.0, 2e-3);  // the discrete branch samples the peak within a step
-  EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
 }
 
 // A branch that folds back and runs out at the bound it started from has not

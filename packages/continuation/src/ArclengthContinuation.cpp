@@ -164,6 +164,9 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   step.set("Min Step Size", o.minStep);
   step.set("Max Step Size", o.maxStep);
   params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  if (o.lineSearch != ContinuationOptions::LineSearch::FullStep)  // else LOCA's default, untouched
+    params->sublist("NOX").sublist("Line Search").set(
+        "Method", std::string(o.lineSearch == ContinuationOptions::LineSearch::Backtrack ? "Backtrack" : "Polynomial"));
   auto globalData = LOCA::createGlobalData(params);
   {
     LOCA::ParameterVector p;

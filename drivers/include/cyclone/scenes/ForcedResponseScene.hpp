@@ -86,6 +86,10 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
 
+/// continuation/line_search: full_step (the default), backtrack or polynomial; anything
+/// else is an InputError naming the key.
+continuation::ContinuationOptions::LineSearch readLineSearch(SceneSection& continuationSection);
+
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
 /// The same from a scene file.

@@ -41,6 +41,12 @@ struct ContinuationOptions {
   /// and restart from the last point with a quarter of the step; after 6 restarts
   /// without progress the curve ends there with that reason.
   bool restartWhereTheCorrectorJumps = true;
+  /// NOX's line search in LOCA's corrector. Full steps are LOCA's default; a
+  /// backtracking or polynomial line search keeps Newton from cycling at the kinks
+  /// of many friction contacts (the default disc at H = 3, with 1024 AFT samples,
+  /// passes 1216 Hz only with one: docs/scenes.md).
+  enum class LineSearch { FullStep, Backtrack, Polynomial };
+  LineSearch lineSearch = LineSearch::FullStep;
 };
 
 struct BranchPoint {
