@@ -42,9 +42,8 @@ struct ContinuationOptions {
   /// without progress the curve ends there with that reason.
   bool restartWhereTheCorrectorJumps = true;
   /// NOX's line search in LOCA's corrector. Full steps are LOCA's default; a
-  /// backtracking or polynomial line search keeps Newton from cycling at the kinks
-  /// of many friction contacts (the default disc at H = 3, with 1024 AFT samples,
-  /// passes 1216 Hz only with one: docs/scenes.md).
+  /// backtracking or polynomial line search can keep Newton from cycling at the
+  /// kinks of many friction contacts (docs/scenes.md: the default disc at H = 3).
   enum class LineSearch { FullStep, Backtrack, Polynomial };
   LineSearch lineSearch = LineSearch::FullStep;
 };
