@@ -72,3 +72,32 @@ TEST(BranchTurn, CorrectorJumpIsAStepFarLongerThanTheLast) {
   EXPECT_TRUE(branchJump(a, b, point(0.05, -0.6)));    // back and far off: another branch
   EXPECT_FALSE(branchJump(a, a, point(1, 1)));         // no step before: no measure
 }
+
+// A step that lands back on the path traced before, far behind along it, is a
+// jump, moving either way; a step back about its own length behind (a retrace
+// at a kink), continuing along the last segment, a fold's other half and a step
+// off the path are not.
+TEST(BranchTurn, LandingOnThePathFarBehindIsAJump) {
+  std::vector<BranchPoint> path;
+  for (int i = 0; i <= 10; ++i) path.push_back(point(0.1 * i, 0.0));       // p = 0 .. 1 at x = 0,
+  for (int i = 1; i <= 10; ++i) path.push_back(point(1.0, 0.1 * i));       // x = 0 .. 1 at p = 1,
+  for (int i = 1; i <= 5; ++i) path.push_back(point(1.0 - 0.1 * i, 1.0));  // p = 1 .. 0.5 at x = 1
+  std::vector<const BranchPoint *> ptrs;
+  for (const auto& q : path) ptrs.push_back(&q);
+  // b = (0.5, 1); arclength back to (0.45, 0): 0.55 + 1 + 0.5 = 2.05 > 2 x 1.0
+  // (the chord).
+  EXPECT_TRUE(landsOnTracedPath(ptrs, point(0.45, 0.0)));
+  EXPECT_TRUE(landsOnTracedPath(ptrs, point(0.3, 0.05)));   // near it (within a tenth of the step)
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.75, 1.0)));  // back a step along the path: a retrace
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.4, 1.0)));   // on along the last segment
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.55, 0.9)));  // a fold's other half, a step off
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.5, 0.5)));   // off the path
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.9, 0.0)));   // on it but only 1.6 behind for a 1.08 chord
+  // Creeping steps at a kink after regular steps of 0.1, to and fro: a step of
+  // 6e-4 inside the cluster lands 1.6e-3 behind along it, more than two of its
+  // own length but far less than two regular steps.
+  for (double p : {0.499, 0.4995, 0.4992}) path.push_back(point(p, 1.0));
+  ptrs.clear();
+  for (const auto& q : path) ptrs.push_back(&q);
+  EXPECT_FALSE(landsOnTracedPath(ptrs, point(0.4998, 1.0)));
+}

@@ -120,3 +120,36 @@ TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
   ASSERT_FALSE(branch.points.empty());
   EXPECT_NEAR(branch.points.back().x(0), 2.0, 1e-6);  // back at p = 0 on the other half
 }
+
+// A corner of the path that turns by more than 90 degrees while p moves on, as
+// a friction contact changing state makes: x = 3 (p - 1) up to p = 1, x = -3 (p
+// - 1) after. The hyperplane normal to the incoming direction, (1, 3), meets
+// neither piece beyond the corner (their directions' cosine is -0.8), so no
+// arclength step passes however small; a step at fixed p past the corner does
+// (bridgeKink). Every point is checked against the closed form.
+TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassedAtFixedParameter) {
+  auto shape = [](double p) { return p < 1 ? 3 * (p - 1) : -3 * (p - 1); };
+  continuation::ContinuationProblem corner;
+  corner.size = 1;
+  corner.residual = [&](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F.resize(1);
+    F(0) = x(0) - shape(p);
+  };
+  corner.jacobian = [](const Eigen::VectorXd&, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Ones(1, 1); };
+  continuation::ContinuationOptions o;
+  o.from = 0;
+  o.to = 2;
+  o.initialStep = 0.01;
+  o.maxStep = 0.05;
+  o.stopWhereItTurnsBack = true;
+  const auto branch = continuation::traceBranch(corner, Eigen::VectorXd::Constant(1, -3.0), o);
+  EXPECT_TRUE(branch.finished) << branch.stopReason;
+  ASSERT_FALSE(branch.points.empty());
+  EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
+  double previous = -1;
+  for (const auto& pt : branch.points) {
+    EXPECT_NEAR(pt.x(0), shape(pt.parameter), 1e-8) << "p = " << pt.parameter;
+    EXPECT_GT(pt.parameter, previous);  // never back along the path
+    previous = pt.parameter;
+  }
+}

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace cyclone::continuation {
@@ -35,12 +36,13 @@ struct CorrectorJumped : std::runtime_error {
 
 class Interface : public LOCA::LAPACK::Interface {
 public:
-  /// before: the branch's point before x0 when LOCA resumes a branch (nullptr at its start),
-  /// so that a first step back along it is caught too.
+  /// before: the branch's points before x0 when LOCA resumes a branch (empty at
+  /// its start), oldest first, so that a first step back along them, or onto
+  /// them, is caught too.
   Interface(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, Branch& branch,
-            const BranchPoint* before, double lo, double hi, bool check, bool jumpCheck)
-      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(before), lo_(lo), hi_(hi),
-        check_(check), jumpCheck_(jumpCheck) {
+            std::vector<const BranchPoint*> before, double lo, double hi, bool check, bool jumpCheck)
+      : problem_(problem), guess_(int(x0.size())), p_(p0), branch_(branch), before_(std::move(before)), lo_(lo),
+        hi_(hi), check_(check), jumpCheck_(jumpCheck) {
     for (int i = 0; i < x0.size(); ++i) guess_(i) = x0(i);
   }
   const NOX::LAPACK::Vector& getInitialGuess() override { return guess_; }
@@ -72,8 +74,7 @@ public:
   void setParams(const LOCA::ParameterVector& p) override { p_ = p.getValue("p"); }
   void printSolution(const NOX::LAPACK::Vector& x, const double conParam) override {
     branch_.points.push_back({conParam, toEigen(x)});
-    std::vector<const BranchPoint*> path;
-    if (before_) path.push_back(before_);
+    std::vector<const BranchPoint*> path = before_;
     for (std::size_t i = 0; i + 1 < branch_.points.size(); ++i) path.push_back(&branch_.points[i]);
     // Both steps inside this run: a run's first step (LOCA's initial step) has no
     // relation to the step size the run before it had cut down to. (Measuring it
@@ -81,6 +82,11 @@ public:
     // chord of every restart, at a quarter of the step each time, exceeded 5 times
     // that step: LOCA's first step is not the size it is given.)
     const std::size_t n = branch_.points.size();
+    // (A step that lands back on the path far behind, landsOnTracedPath, is not taken
+    // for a jump here: tried, it caught the default disc's H = 3 jump from 1230.6 back
+    // to 1207.3 Hz, but it also stopped an excitation ramp of the 8-sector test disc
+    // at a tiny step, p 0.010741 -> 0.010753, so that sweep had no start. Such a jump
+    // now shows as a stretch traced twice; bridgeKink's candidates are checked.)
     if (jumpCheck_ && n >= 3 && branchJump(branch_.points[n - 3], branch_.points[n - 2], branch_.points[n - 1])) {
       branch_.points.pop_back();
       std::ostringstream msg;
@@ -96,7 +102,7 @@ public:
     if (kink < 0) {
       retracing_ = 0;
     } else if (retracing_++ == 0) {
-      kinkPoint_ = kink - (before_ ? 1 : 0);  // index in this run's points (path[0] is before_ when given)
+      kinkPoint_ = kink - int(before_.size());  // index in this run's points (before_ comes first in path)
     }
     if (retracing_ >= kRetraceSteps) {
       branch_.points.resize(std::size_t(std::max(kinkPoint_ + 1, 1)));
@@ -128,7 +134,7 @@ private:
   NOX::LAPACK::Vector guess_;
   double p_;
   Branch& branch_;
-  const BranchPoint* before_;
+  std::vector<const BranchPoint*> before_;
   double lo_, hi_;
   bool check_, jumpCheck_;
   static constexpr int kRetraceSteps = 3;
@@ -146,8 +152,9 @@ namespace {
 // first step of size `initialStep` (sign: the direction of p). Appends the
 // points (the start itself only when `keepStart`) and sets the stop fields.
 void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0, double initialStep,
-             const ContinuationOptions& o, bool keepStart, Branch& branch, bool& threw, bool& turnedBack) {
-  threw = false, turnedBack = false;
+             const ContinuationOptions& o, bool keepStart, Branch& branch, bool& threw, bool& turnedBack,
+             bool& stalled) {
+  threw = false, turnedBack = false, stalled = false;
   Branch run;
   auto params = Teuchos::rcp(new Teuchos::ParameterList);
   auto& stepper = params->sublist("LOCA").sublist("Stepper");
@@ -174,7 +181,10 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   {
     LOCA::ParameterVector p;
     p.addParameter("p", p0);
-    const BranchPoint* before = keepStart || branch.points.size() < 2 ? nullptr : &branch.points[branch.points.size() - 2];
+    std::vector<const BranchPoint*> before;  // the branch's last 50 points before x0 (its last point)
+    if (!keepStart)
+      for (std::size_t i = branch.points.size() > 51 ? branch.points.size() - 51 : 0; i + 1 < branch.points.size(); ++i)
+        before.push_back(&branch.points[i]);
     Interface iface(problem, x0, p0, run, before, std::min(o.from, o.to), std::max(o.from, o.to),
                     o.stopWhereItTurnsBack, o.restartWhereTheCorrectorJumps);
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
@@ -200,6 +210,9 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
       threw = true;
     }
     branch.finished = status == LOCA::Abstract::Iterator::Finished;
+    // LOCA's step fell below its minimum (not an exception, not the step
+    // count): a corner no arclength step passes (bridgeKink).
+    stalled = !branch.finished && !threw && !turnedBack && int(branch.points.size() + run.points.size()) < o.maxSteps;
     branch.failedSteps += stepperObject.getNumFailedSteps();
     branch.stopReason = run.stopReason.empty()
                             ? (branch.finished ? "end of the parameter range reached"
@@ -211,72 +224,138 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   for (std::size_t i = keepStart ? 0 : 1; i < run.points.size(); ++i) branch.points.push_back(run.points[i]);
 }
 
-// One pseudo-arclength step past a kink, predicted along the secant over the
-// last regular step length L (through the creeping points at the kink):
-// Newton on [F(x, p); t . (z - z_pred)] = 0 with dF/dp by central differences,
-// for steps L, L/2, 2 L, L/4. The first converged point that does not go back
-// along the traced path (BranchTurn) is appended; at a fold it lands on the
-// other half. A point more than kJumpRatio h from the kink is another branch and
-// is not taken. False if none does.
-bool bridgeKink(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch) {
+// The way into a kink where the arclength steps stopped: the last regular step
+// length L (the longest of the last 10 steps, through the creeping points at
+// the kink), the point a about L before the kink point b, the unit secant a ->
+// b, and the path so far (its last 50 segments).
+struct KinkApproach {
+  double L = 0;
+  BranchPoint a, b;
+  Eigen::VectorXd tx;
+  double tp = 0;
+  double lo = 0, hi = 0;
+  std::vector<const BranchPoint*> path;
+};
+
+std::optional<KinkApproach> approachToKink(const ContinuationOptions& o, const Branch& branch) {
   const auto& pts = branch.points;
   const std::size_t n = pts.size();
   const std::size_t first = n > 11 ? n - 11 : 0;
-  double L = 0;
-  for (std::size_t i = first + 1; i < n; ++i) L = std::max(L, turnStep(pts[i - 1], pts[i]));
-  if (!(L > 0)) return false;
+  KinkApproach k;
+  for (std::size_t i = first + 1; i < n; ++i) k.L = std::max(k.L, turnStep(pts[i - 1], pts[i]));
+  if (!(k.L > 0)) return std::nullopt;
   std::size_t ia = n - 2;
-  while (ia > first && turnStep(pts[ia], pts[n - 1]) < L) --ia;
-  const BranchPoint& a = pts[ia];
-  const BranchPoint b = pts[n - 1];
-  const double chord = turnStep(a, b);
-  const Eigen::VectorXd tx = (b.x - a.x) / chord;
-  const double tp = (b.parameter - a.parameter) / chord;
-  const double lo = std::min(o.from, o.to), hi = std::max(o.from, o.to);
+  while (ia > first && turnStep(pts[ia], pts[n - 1]) < k.L) --ia;
+  k.a = pts[ia];
+  k.b = pts[n - 1];
+  const double chord = turnStep(k.a, k.b);
+  k.tx = (k.b.x - k.a.x) / chord;
+  k.tp = (k.b.parameter - k.a.parameter) / chord;
+  k.lo = std::min(o.from, o.to), k.hi = std::max(o.from, o.to);
+  for (std::size_t i = n > 51 ? n - 51 : 0; i < n; ++i) k.path.push_back(&pts[i]);
+  return k;
+}
+
+// A point past the kink that continues the branch: in the range, not back along
+// or onto the path traced (BranchTurn.hpp), and not farther than kJumpRatio
+// times the step it was given (that is another branch).
+bool continuesPast(const KinkApproach& k, const BranchPoint& c, double step) {
+  return c.parameter >= k.lo && c.parameter <= k.hi && retracedFrom(k.path, c) < 0 && !landsOnTracedPath(k.path, c) &&
+         turnStep(k.b, c) <= kJumpRatio * step;
+}
+
+// One pseudo-arclength step past the kink along the secant: Newton on
+// [F(x, p); t . (z - z_pred)] = 0 with dF/dp by central differences, for steps
+// L, L/2, 2 L, L/4; the first point that continues the branch. At a fold it
+// lands on the other half.
+std::optional<BranchPoint> secantStepOverKink(const ContinuationProblem& problem, const ContinuationOptions& o,
+                                              const KinkApproach& k) {
   const int m = problem.size;
-  std::vector<const BranchPoint*> path;
-  for (std::size_t i = n > 51 ? n - 51 : 0; i < n; ++i) path.push_back(&pts[i]);
-  for (double h : {L, 0.5 * L, 2 * L, 0.25 * L}) {
-    Eigen::VectorXd x = b.x + h * tx;
-    double p = b.parameter + h * tp;
+  for (double h : {k.L, 0.5 * k.L, 2 * k.L, 0.25 * k.L}) {
+    Eigen::VectorXd x = k.b.x + h * k.tx;
+    double p = k.b.parameter + h * k.tp;
     bool converged = false;
     Eigen::VectorXd F(m), Fp(m), Fm(m);
     Eigen::MatrixXd J(m, m), A(m + 1, m + 1);
     Eigen::VectorXd R(m + 1);
     for (int it = 0; it < 30 && !converged; ++it) {
+      const double eps = 1e-7 * std::max(1.0, std::abs(p));
       try {
         problem.residual(x, p, F);
-        const double eps = 1e-7 * std::max(1.0, std::abs(p));
         problem.residual(x, p + eps, Fp);
         problem.residual(x, p - eps, Fm);
         problem.jacobian(x, p, J);
       } catch (...) {
         break;
       }
-      const double arc = tx.dot(x - b.x) + tp * (p - b.parameter) - h;
+      const double arc = k.tx.dot(x - k.b.x) + k.tp * (p - k.b.parameter) - h;
       if (F.norm() <= o.tolerance && std::abs(arc) <= 1e-10 * h) {
         converged = true;
         break;
       }
       A.topLeftCorner(m, m) = J;
-      A.topRightCorner(m, 1) = (Fp - Fm) / (2 * 1e-7 * std::max(1.0, std::abs(p)));
-      A.bottomLeftCorner(1, m) = tx.transpose();
-      A(m, m) = tp;
+      A.topRightCorner(m, 1) = (Fp - Fm) / (2 * eps);
+      A.bottomLeftCorner(1, m) = k.tx.transpose();
+      A(m, m) = k.tp;
       R << F, arc;
       const Eigen::VectorXd dz = A.partialPivLu().solve(R);
       if (!dz.allFinite()) break;
       x -= dz.head(m), p -= dz(m);
     }
-    if (!converged || p < lo || p > hi) continue;
-    const BranchPoint c{p, x};
-    if (retracedFrom(path, c) >= 0) continue;
-    // Newton on the secant's hyperplane can converge far from the step it was given: that
-    // is another branch (as for LOCA's steps, BranchTurn.hpp), not the way over the kink.
-    if (turnStep(b, c) > kJumpRatio * h) continue;
-    branch.points.push_back(c);
-    return true;
+    if (converged && continuesPast(k, BranchPoint{p, x}, h)) return BranchPoint{p, x};
   }
-  return false;
+  return std::nullopt;
+}
+
+// A corner of the path (a friction contact changing state there) that turns by
+// more than 90 degrees in (x, p): no hyperplane normal to the incoming
+// direction meets the path beyond it, so no arclength corrector converges
+// however small the step. Where p still moves on through the corner (the
+// default disc at H = 3: dx/dp about 270 before, 60 after), Newton at a fixed p
+// just past it does: a step in the natural parameter, of 1/4, 1, 1/16 of the
+// secant's change of p. The other direction of p is tried last, for a fold at
+// the corner.
+std::optional<BranchPoint> fixedParameterStepOverKink(const ContinuationProblem& problem, const ContinuationOptions& o,
+                                                      const KinkApproach& k) {
+  const double dp = std::abs(k.b.parameter - k.a.parameter);
+  const double forward = k.b.parameter >= k.a.parameter ? 1.0 : -1.0;
+  if (!(dp > 0)) return std::nullopt;
+  for (double sign : {forward, -forward})
+    for (double f : {0.25, 1.0, 0.0625}) {
+      const double p = k.b.parameter + sign * f * dp;
+      if (p < k.lo || p > k.hi) continue;
+      Eigen::VectorXd x = k.b.x;
+      if (!solveNewton(problem, x, p, o.tolerance, 12).converged) continue;  // 2-7 iterations where it passes
+      if (continuesPast(k, BranchPoint{p, x}, k.L)) return BranchPoint{p, x};
+    }
+  return std::nullopt;
+}
+
+// A step over the kink at the branch's end, appended; false if none is found.
+// Where LOCA stalled at tiny steps the arclength corrector already failed close
+// by: the fixed-parameter step first; where it turned back, the secant step
+// first.
+bool bridgeKink(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch, bool stalled) {
+  const auto k = approachToKink(o, branch);
+  if (!k) return false;
+  Timer timer;  // each candidate is a Newton solve: seconds to minutes on a large system
+  std::ostringstream at;
+  at << "continuation: a kink at p = " << k->b.parameter << " (the arclength steps " << (stalled ? "stalled" : "turned back")
+     << ")";
+  log::info(at.str() + ": trying a step at a fixed parameter, then a secant step");
+  auto c = fixedParameterStepOverKink(problem, o, *k);
+  if (!c) c = secantStepOverKink(problem, o, *k);
+  std::ostringstream result;
+  result << at.str() << ": ";
+  if (c)
+    result << "stepped over to p = " << c->parameter;
+  else
+    result << "no step over it";
+  result << " (" << timer.seconds() << " s)";
+  log::info(result.str());
+  if (!c) return false;
+  branch.points.push_back(*c);
+  return true;
 }
 
 }  // namespace
@@ -301,24 +380,25 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
   // fell below its minimum at a kink of many friction contacts was tried: each
   // restart failed the same way and the run took minutes longer.)
   const double forward = o.to >= o.from ? 1.0 : -1.0;
-  bool threw = false, turnedBack = false;
-  runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw, turnedBack);
+  bool threw = false, turnedBack = false, stalled = false;
+  runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw, turnedBack, stalled);
   double step = o.initialStep;
   int restarts = 0, bridges = 0;
-  while ((threw || turnedBack) && branch.points.size() >= 2) {
+  while ((threw || turnedBack || (stalled && o.stopWhereItTurnsBack)) && branch.points.size() >= 2) {
     const std::size_t before = branch.points.size();
-    if (turnedBack) {
-      // Step over the kink by a secant arclength step (bridgeKink); LOCA
-      // resumes from there.
-      if (++bridges > 20 || !bridgeKink(problem, o, branch)) {
-        branch.stopReason += " (a kink the predictor could not pass, nor a secant step over it): the branch so "
-                             "far is kept";
+    if (turnedBack || stalled) {
+      // Step over the kink (bridgeKink: a secant arclength step or a step at a fixed
+      // parameter); LOCA resumes from there.
+      if (++bridges > 20 || !bridgeKink(problem, o, branch, stalled)) {
+        branch.stopReason +=
+            " (a kink the arclength steps could not pass, nor a secant or fixed-parameter step over it): the branch "
+            "so far is kept";
         break;
       }
       const auto& last = branch.points.back();
       const double moving = last.parameter - branch.points[branch.points.size() - 2].parameter;
       runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * o.initialStep, o, false, branch, threw,
-              turnedBack);
+              turnedBack, stalled);
       continue;
     }
     if (++restarts > 6) break;
@@ -326,13 +406,14 @@ Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& gu
     if (step < o.minStep) break;
     const auto& last = branch.points.back();
     const double moving = last.parameter - branch.points[branch.points.size() - 2].parameter;
-    runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw, turnedBack);
+    runLoca(problem, last.x, last.parameter, (moving >= 0 ? 1.0 : -1.0) * step, o, false, branch, threw, turnedBack,
+            stalled);
     if (branch.points.size() > before) step = o.initialStep, restarts = 0;  // progress: the next cut starts afresh
   }
   if (bridges > 0 && branch.finished) {
     std::ostringstream why;
-    why << branch.stopReason << " (" << bridges << " kink(s) where the predictor turned back, stepped over by a "
-        << "secant step)";
+    why << branch.stopReason << " (" << bridges << " kink(s) where the arclength steps turned back or stalled, "
+        << "stepped over by a secant or fixed-parameter step)";
     branch.stopReason = why.str();
   }
   // LOCA ends a run at the range's bound by a last step that may overshoot it, and a

@@ -63,4 +63,30 @@ int retracedFrom(const std::vector<const BranchPoint*>& path, const BranchPoint&
   return -1;
 }
 
+bool landsOnTracedPath(const std::vector<const BranchPoint*>& path, const BranchPoint& c) {
+  const int n = int(path.size());
+  if (n < 3) return false;
+  const BranchPoint& b = *path[std::size_t(n - 1)];
+  const double step = distance(b, c);
+  // The regular step: creeping steps at a kink cluster points, and a step back
+  // inside the cluster is the retrace check's business.
+  double regular = step;
+  for (int i = std::max(1, n - 10); i < n; ++i)
+    regular = std::max(regular, distance(*path[std::size_t(i - 1)], *path[std::size_t(i)]));
+  double behind = distance(*path[std::size_t(n - 2)], b);  // arclength from path[i + 1] to b
+  for (int i = n - 3; i >= std::max(0, n - 51); --i) {
+    const BranchPoint &s0 = *path[std::size_t(i)], &s1 = *path[std::size_t(i + 1)];
+    const double length = distance(s0, s1);
+    if (length > 0 && distanceToSegment(s0, s1, c) < 0.1 * std::max(step, length)) {
+      const double t =
+          std::clamp(((c.x - s0.x).dot(s1.x - s0.x) + (c.parameter - s0.parameter) * (s1.parameter - s0.parameter)) /
+                         (length * length),
+                     0.0, 1.0);
+      if (behind + (1 - t) * length > kLandingArclengthRatio * regular) return true;
+    }
+    behind += length;
+  }
+  return false;
+}
+
 }  // namespace cyclone::continuation

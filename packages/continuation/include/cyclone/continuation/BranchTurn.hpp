@@ -37,4 +37,19 @@ bool branchJump(const BranchPoint& a, const BranchPoint& b, const BranchPoint& c
 /// forward along the retraced segment (the kink: the points after it went back).
 int retracedFrom(const std::vector<const BranchPoint*>& path, const BranchPoint& c);
 
+/// True when c, the point after path.back(), lies on a segment of the path
+/// traced before (within a tenth of the longer of the step and the segment; the
+/// last segment, which c continues, excepted) at a place more than
+/// kLandingArclengthRatio times the regular step back along the path (the
+/// longer of c's step and the last 9 steps), whichever way c moves. A step back
+/// at a kink lands about a step behind along the path, or inside the cluster of
+/// creeping steps there (the retrace check's business); a path does not come
+/// back onto itself otherwise. LOCA's corrector can, from the far side of a
+/// kink where the tangent is poor: on the default disc at H = 3 from 1230.6 Hz
+/// back onto the branch at 1207.3 Hz (a chord of a tenth or less of the path's length
+/// in between), then forward along the old path again. Screens the steps over a
+/// kink (ArclengthContinuation.cpp: bridgeKink).
+constexpr double kLandingArclengthRatio = 2.0;
+bool landsOnTracedPath(const std::vector<const BranchPoint*>& path, const BranchPoint& c);
+
 }  // namespace cyclone::continuation
