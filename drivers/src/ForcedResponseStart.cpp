@@ -87,11 +87,16 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
   double scale = setup.unknownScale;
   if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
   auto branch = traceOneSweep(setup, start.x, scale);
-  if (!branch.returnedToStart) return branch;
+  if (branch.finished || branch.points.empty()) return branch;
 
-  // The branch folded back to the start: the rest of the range holds another branch,
-  // which a sweep from the other end finds (as a test rig's downward sweep does).
+  // The branch folded back to the start, or stopped short of the end: the rest of the
+  // range holds another branch, or the same one past what stopped the sweep, which a
+  // sweep from the other end finds (as a test rig's downward sweep does).
   const auto upward = setup.continuation;
+  double reached = upward.from;  // the farthest the first sweep got
+  for (const auto& pt : branch.points)
+    reached = upward.to >= upward.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+  if (branch.returnedToStart) reached = branch.reached;
   setup.continuation.from = upward.to, setup.continuation.to = upward.from;
   const StartingPoint far = findStartingPoint(setup);
   continuation::Branch down;
@@ -99,18 +104,21 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
   setup.continuation = upward;
   setup.apply(upward.from);
   std::ostringstream why;
-  why << "two sweeps: from the start the branch turned back at p = " << branch.reached
-      << " and returned to the start; from the end of the range (" << (far.x.size() > 0 ? far.method : "no start: " + far.method)
+  if (branch.returnedToStart)
+    why << "two sweeps: from the start the branch turned back at p = " << reached << " and returned to the start";
+  else
+    why << "two sweeps: from the start the branch stopped at p = " << reached << " (" << branch.stopReason << ")";
+  why << "; from the end of the range (" << (far.x.size() > 0 ? far.method : "no start: " + far.method)
       << ") ";
   if (down.points.empty()) {
-    why << "nothing traced: " << upward.to << " .. " << branch.reached << " not traced";
+    why << "nothing traced: " << upward.to << " .. " << reached << " not traced";
   } else {
     double lowest = upward.to;  // the farthest the second sweep got towards the start
     for (const auto& pt : down.points)
       lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
-    const bool covered = upward.to >= upward.from ? lowest <= branch.reached : lowest >= branch.reached;
+    const bool covered = upward.to >= upward.from ? lowest <= reached : lowest >= reached;
     why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
-    if (!covered) why << "; " << branch.reached << " .. " << lowest << " not traced";
+    if (!covered) why << "; " << reached << " .. " << lowest << " not traced";
     branch.finished = covered;
     branch.segmentStarts.push_back(branch.points.size());
     for (auto& pt : down.points) branch.points.push_back(std::move(pt));

@@ -82,7 +82,10 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 
 /// The curve a scene describes: arclength continuation over the range from a
 /// starting point (by default findStartingPoint's; an empty one gives an empty branch
-/// whose stop reason is its method). The scene runner and the tests both trace here.
+/// whose stop reason is its method). A sweep that does not reach the end of the range
+/// (it returned to its start, or stopped with a reason) is followed by a second sweep
+/// from the range's end, a second segment of the branch (Branch::segmentStarts); the
+/// stop reason says how far each got. The scene runner and the tests both trace here.
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
 
