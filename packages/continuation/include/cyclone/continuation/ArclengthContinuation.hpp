@@ -30,9 +30,10 @@ struct ContinuationOptions {
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
   bool arcLengthScaling = true;
-  /// Stop a run that goes back along its own path for a few points (BranchTurn.hpp)
-  /// and try a secant step over the kink; the curve ends with that reason if the
-  /// step fails. Off by default: a true fold whose two halves nearly coincide (the
+  /// Stop a run that goes back along its own path for a few points (BranchTurn.hpp),
+  /// or whose step fell below the minimum, and try a step over the kink (at a fixed
+  /// parameter, then a secant arclength step); the curve ends with that reason if
+  /// neither passes. Off by default: a true fold whose two halves nearly coincide (the
   /// force ramp of NLvib's example 03) looks the same. On for the FE disc scenes,
   /// whose H = 3 curve LOCA otherwise walked back to the start, calling it finished.
   bool stopWhereItTurnsBack = false;
