@@ -304,12 +304,15 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   const DiscModelSpec modelSpec = readModelSpec(scene, r, builtInSectors, cache);
   std::vector<int> nds;
   DiscResponseSpec spec;
+  int harmonicsCheckTo = 0;
   if (forcedResponse) {
     spec = readResponseSpec(d);
+    const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
+    harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
     if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors) {
-      // Also the nodal diameter of harmonic H + 1, for the curve's harmonics check.
+      // Also the nodal diameters of the harmonics the curve's harmonics check adds.
       auto checked = spec.harmonics;
-      checked.push_back(*std::max_element(checked.begin(), checked.end()) + 1);
+      for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, harmonicsCheckTo); ++h) checked.push_back(h);
       nds = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, checked);
     }
     if (r.has("nodal_diameters"))
@@ -430,6 +433,9 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto traceOne = [&](ForcedResponseSetup& s, const std::string& name) {
     s.omegaUnit = 2 * M_PI * fromHz;
     s.stability = stability;
+    // The reference curve's peak is checked up to harmonics_check_to; a study's curves
+    // with one more harmonic (each level costs a peak search).
+    s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : 0;
     s.continuation = opt;
     s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
     const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/continuation/PeakSearch.hpp"
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -62,40 +63,183 @@ std::string samplesCheck(ForcedResponseSetup& setup, const continuation::BranchP
   return out.str();
 }
 
-// The harmonic truncation is checked by raising H by one: the largest-response
-// point is solved again with harmonics 0..H+1 (the same list plus H + 1) and
-// the change of its peak reported. Not possible when the system has nothing
-// for harmonic H + 1 (a reduced model without that nodal diameter): said so.
-std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
+// The largest response of DOF `dof` along a frequency curve near the solution X at
+// `hz`: the peak search at fixed frequencies (PeakSearch.hpp), which passes the
+// corners of friction paths where an arclength corrector stalls. Its parameter is the
+// frequency in Hz (what its messages name). The window (+-5 %) holds the shift of a
+// friction-damped peak between harmonic truncations.
+continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& system, const Eigen::VectorXd& X,
+                                          double hz, double excitationScale, int dof, double tolerance) {
+  const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
+  continuation::ContinuationProblem problem = byOmega;
+  problem.residual = [byOmega](const Eigen::VectorXd& x, double f, Eigen::VectorXd& R) {
+    byOmega.residual(x, 2 * M_PI * f, R);
+  };
+  problem.jacobian = [byOmega](const Eigen::VectorXd& x, double f, Eigen::MatrixXd& J) {
+    byOmega.jacobian(x, 2 * M_PI * f, J);
+  };
+  const int nc = system.numCoefficients();
+  const auto& H = system.aft().harmonics();
+  continuation::PeakSearchOptions o;
+  o.step = 1e-3 * hz, o.maxStep = 5e-3 * hz, o.minStep = 1e-8 * hz;
+  o.window = 0.05 * hz, o.parameterTolerance = 1e-5 * hz;
+  o.tolerance = tolerance;
+  return continuation::findLocalPeak(
+      problem, X, hz, [&](const Eigen::VectorXd& x) { return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc))); },
+      o);
+}
+
+// One level of the harmonics check on a frequency curve.
+struct PeakLevel {
+  int maxHarmonic = 0;
+  continuation::PeakSearchResult peak;
+  double seconds = 0;
+};
+
+// The peak of the curve with H, then with H + 1, H + 2, ... up to `upTo`, each level's
+// search started from the one before's peak (its solution carried to one more
+// harmonic). Stops at a level whose peak is not found (a fold, no solution).
+std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
+                                       double scale, int dof, double tolerance, int upTo) {
+  std::vector<PeakLevel> levels;
+  std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem;
+  const hbm::HarmonicBalanceSystem* system = &hb;
+  hbm::HarmonicSet set = hb.aft().harmonics();
+  Eigen::VectorXd X = x;
+  for (int H = set.maxHarmonic(); H <= upTo; ++H) {
+    Timer timer;
+    if (H > set.maxHarmonic()) {
+      std::vector<int> list = set.harmonics();
+      list.push_back(H);
+      const hbm::HarmonicSet raised(list);
+      raisedSystem = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+      X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
+      set = raised, system = raisedSystem.get();
+    }
+    PeakLevel level;
+    level.maxHarmonic = H;
+    level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
+    level.seconds = timer.seconds();
+    levels.push_back(level);
+    if (!level.peak.found) break;
+    X = level.peak.x, hz = level.peak.parameter;
+  }
+  return levels;
+}
+
+// <name>_harmonics.csv: the peak per harmonic truncation, its change from the level
+// before, and what each level cost.
+void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::string& path) {
+  AtomicFile file(path);
+  std::ofstream out(file.tempPath());
+  out.precision(10);
+  out << "max_harmonic,found,peak_max_abs_dof" << dof << ",freq_hz,relative_change,frequency_change,solves,seconds,note\n";
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const auto& l = levels[i];
+    out << l.maxHarmonic << "," << (l.peak.found ? 1 : 0) << ",";
+    if (l.peak.x.size() == 0) {  // no solution at all: nothing to compare
+      out << ",,,," << l.peak.solves << "," << l.seconds << "," << l.peak.reason << "\n";
+      continue;
+    }
+    out << l.peak.value << "," << l.peak.parameter << ",";
+    if (i > 0) {
+      const auto& b = levels[i - 1].peak;
+      out << std::abs(l.peak.value / b.value - 1) << "," << std::abs(l.peak.parameter / b.parameter - 1);
+    } else {
+      out << ",";
+    }
+    std::string note = l.peak.reason;
+    for (char& c : note)
+      if (c == ',') c = ';';
+    out << "," << l.peak.solves << "," << l.seconds << "," << note << "\n";
+  }
+  out.close();
+  if (!out) throw Error("cannot write " + path);
+  file.commit();
+}
+
+// The response at the point itself with harmonics 0..H+1: Newton from its solution
+// carried over, at the same parameter.
+std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
   const auto [w, scale] = setup.apply(pt.parameter);
   const auto& hb = *setup.system;
   const auto& H = hb.aft().harmonics();
   const int dof = setup.outputDofs.front(), next = H.maxHarmonic() + 1;
-  std::vector<int> list = H.harmonics();
-  list.push_back(next);
   std::ostringstream out;
   out << "harmonics check: H " << H.maxHarmonic() << " -> " << next;
-  try {
-    const hbm::HarmonicSet raised(list);
-    const auto refined =
-        hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
-    const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
-    Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
-    const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
-    if (!newton.converged) {
-      out << ": no solution at the peak (residual " << newton.residualNorm << ")";
-      log::warn(out.str());
-      return out.str();
-    }
-    const int nc = refined->numCoefficients();
-    const double after = hbm::peakMagnitude(raised, Eigen::VectorXd(X.segment(dof * nc, nc)));
-    const double change = std::abs(after / peak - 1);
-    out << " changes the peak max|x| of DOF " << dof << " by " << change << " (relative)";
-    if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
-  } catch (const std::exception& e) {
-    out << ": not possible (" << e.what() << ")";
+  std::vector<int> list = H.harmonics();
+  list.push_back(next);
+  const hbm::HarmonicSet raised(list);
+  const auto refined = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+  const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
+  Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
+  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  if (!newton.converged) {
+    out << ": no solution at the peak (residual " << newton.residualNorm << ")";
+    log::warn(out.str());
+    return out.str();
   }
+  const int nc = refined->numCoefficients();
+  const double after = hbm::peakMagnitude(raised, Eigen::VectorXd(X.segment(dof * nc, nc)));
+  const double change = std::abs(after / peak - 1);
+  out << " changes the peak max|x| of DOF " << dof << " by " << change << " (relative)";
+  if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
   return out.str();
+}
+
+// The harmonic truncation is checked by raising H: on a frequency curve the peaks
+// with H, H + 1, ... (up to setup.harmonicsCheckTo) are compared, each found by the
+// peak search (PeakSearch.hpp: fixed-frequency steps uphill, then golden section). A
+// peak that moves in frequency changes the response at a fixed frequency far more
+// than the peak itself, so the change at the traced point alone says little there.
+// Other parameters (force, preload, ...), and a frequency curve whose largest point is
+// no interior peak (it rises at the end of the range), compare the point with
+// harmonics 0..H+1. Not possible when the system has nothing for a raised harmonic (a
+// reduced model without that nodal diameter): said so.
+std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak,
+                           const std::string& csvPath, SceneSummary& summary) {
+  try {
+    if (setup.parameter != ForcedResponseSetup::Parameter::Omega) return pointHarmonicsCheck(setup, pt, peak);
+    Timer timer;
+    const auto [w, scale] = setup.apply(pt.parameter);
+    const auto& hb = *setup.system;
+    const int dof = setup.outputDofs.front();
+    const int upTo = std::max(setup.harmonicsCheckTo, hb.aft().harmonics().maxHarmonic() + 1);
+    const auto levels = peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo);
+    writePeakLevels(levels, dof, csvPath);
+    summary.written.push_back(csvPath);
+    if (!levels.front().peak.found)  // no interior peak with the curve's own harmonics
+      return pointHarmonicsCheck(setup, pt, peak) + " (no peak search: " + levels.front().peak.reason + ")";
+    std::ostringstream out;
+    out << "harmonics check: peak max|x| of DOF " << dof << " by harmonics:";
+    out.precision(6);
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      const auto& l = levels[i];
+      out << (i ? "; " : " ") << "H " << l.maxHarmonic << " ";
+      if (l.peak.found) out << l.peak.value << " at " << l.peak.parameter << " Hz";
+      else if (l.peak.x.size() == 0) out << "not found (" << l.peak.reason << ")";
+      else out << "not found (" << l.peak.reason << "; best point " << l.peak.value << " at " << l.peak.parameter
+               << " Hz)";
+    }
+    // The change between the last two levels whose peaks were both found.
+    std::size_t j = levels.size() - 1;
+    while (j >= 1 && !(levels[j].peak.found && levels[j - 1].peak.found)) --j;
+    if (j >= 1) {
+      const auto &before = levels[j - 1].peak, &after = levels[j].peak;
+      const double change = std::abs(after.value / before.value - 1);
+      out << "; H " << levels[j - 1].maxHarmonic << " -> " << levels[j].maxHarmonic << " changes the peak by "
+          << change << " (relative), its frequency by " << std::abs(after.parameter / before.parameter - 1) << "; "
+          << timer.seconds() << " s";
+      if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
+      else log::info(out.str());
+    } else {
+      out << "; " << timer.seconds() << " s";
+      log::warn(out.str() + ": the harmonic convergence of the peak is not known");
+    }
+    return out.str();
+  } catch (const std::exception& e) {
+    return std::string("harmonics check: not possible (") + e.what() + ")";
+  }
 }
 
 }  // namespace
@@ -337,7 +481,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     // Both checks at the largest-response point.
     result.samplesCheck = samplesCheck(setup, branch.points[ip], plotMax[ip]);
     summary.computed.push_back(result.samplesCheck);  // rank 0
-    result.harmonicsCheck = harmonicsCheck(setup, branch.points[ip], plotMax[ip]);
+    result.harmonicsCheck =
+        harmonicsCheck(setup, branch.points[ip], plotMax[ip], outDir + "/" + name + "_harmonics.csv", summary);
     summary.computed.push_back(result.harmonicsCheck);
   }
   return result;

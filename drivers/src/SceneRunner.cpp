@@ -50,6 +50,15 @@ namespace cyclone::scenes {
 
 const char* demoScene() { return demoSceneYaml(); }
 
+int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic) {
+  const int upTo = section.getInt("harmonics_check_to", 0);
+  if (section.has("harmonics_check_to") && upTo <= maxHarmonic)
+    throw InputError(section.where("harmonics_check_to"),
+                     "must exceed the curve's highest harmonic " + std::to_string(maxHarmonic) + ", got " +
+                         std::to_string(upTo) + " (the check raises H from there)");
+  return upTo;
+}
+
 fe::IsotropicElastic readMaterial(SceneSection m) {
   fe::IsotropicElastic material;
   material.name = m.getString("name", material.name);
@@ -578,6 +587,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   setup.stability = out.getString("stability", "auto");
   if (setup.stability != "auto" && setup.stability != "true" && setup.stability != "false")
     throw InputError(out.where("stability"), "must be auto, true or false");
+  setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic());
   out.rejectUnknownKeys();
   for (int d : dofs)
     if (d < 0 || d >= n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");

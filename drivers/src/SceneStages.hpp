@@ -33,6 +33,11 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
 
 fe::IsotropicElastic readMaterial(SceneSection section);
 
+/// `harmonics_check_to` of a forced-response section: the highest harmonic the
+/// harmonics check of a frequency curve raises H to (0 when absent: H + 1); given,
+/// it must exceed the curve's H.
+int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic);
+
 /// report.md in the output directory: the run's summary, its figures (the SVGs the
 /// stages wrote), the studies' tables and the stages' error against run time.
 void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary);

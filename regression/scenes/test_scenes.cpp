@@ -657,6 +657,11 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                        "      cos: 1.0\n      engine_order: 3\n",
                 dir);
   EXPECT_NE(msg.find("one travelling wave"), std::string::npos) << msg;
+  msg = failure(base + mk + force + "  harmonics: [2]\n  continuation:\n    from: 0.5\n    to: 1.5\n"
+                       "  output:\n    harmonics_check_to: 2\n",
+                dir);
+  EXPECT_NE(msg.find("output/harmonics_check_to"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must exceed the curve's highest harmonic 2"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frc.csv"));
 }
 
@@ -722,6 +727,79 @@ TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {
   const auto curve = post::readResponseCurveHdf5((dirF / "frc.h5").string());
   ASSERT_EQ(curve.parameter.size(), force.size());
   EXPECT_DOUBLE_EQ(curve.parameter.back(), force.back()[3]);
+}
+
+// The harmonics check of a frequency curve compares peaks, each found by the peak
+// search at fixed frequencies (PeakSearch.hpp), from H up to harmonics_check_to:
+// here the Duffing oscillator x'' + 0.05 x' + x + 0.1 x^3 = 0.18 cos(W t) from
+// H = 1 to 3. References: H = 1 is the single-term closed form (s = c^2 / 2m); H = 2
+// adds nothing to an odd oscillator without a static load (the same peak); H = 3 is
+// the largest point of an independent arclength trace with H = 3 and small steps
+// (the search finds the continuous maximum, so it may exceed the sampled one only by
+// what the sampling misses), and the same search started from that trace's own
+// largest point.
+TEST(Scenes, HarmonicsCheckComparesPeaksFoundBySearchWithTheReferences) {
+  log::setQuiet(true);
+  auto scene = [](const std::string& harmonics, const std::string& extra) {
+    return std::string("cyclone:\n  analysis: forced_response\n"
+                       "  system:\n    dofs: 1\n    M: [1.0]\n    C: [0.05]\n    K: [1.0]\n"
+                       "  nonlinear_elements:\n    hardening:\n      type: cubic\n      direction: [1.0]\n"
+                       "      k3: 0.1\n"
+                       "  excitation:\n    force:\n      dof: 0\n      harmonic: 1\n      cos: 0.18\n"
+                       "  harmonics: [") +
+           harmonics +
+           "]\n  samples: 64\n"
+           "  continuation:\n    parameter: omega\n    from: 0.9\n    to: 1.4\n    initial_step: 0.002\n"
+           "    max_step: 0.002\n"
+           "  output:\n    dofs: [0]\n    stability: false\n" +
+           extra;
+  };
+  const auto dirLow = freshDir("harmonics_check_low"), dirH3 = freshDir("harmonics_check_h3");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dirLow.string();
+  const auto summary = scenes::runSceneText(scene("1", "    harmonics_check_to: 3\n"), "h1.yaml", o,
+                                            Tpetra::getDefaultComm());
+  o.outputDirectory = dirH3.string();
+  scenes::runSceneText(scene("3", ""), "h3.yaml", o, Tpetra::getDefaultComm());
+  // Columns: max_harmonic, found, peak, freq_hz, relative_change, frequency_change, solves, seconds, note
+  const auto levels = readCsv(dirLow / "frc_harmonics.csv"), own = readCsv(dirH3 / "frc_harmonics.csv");
+  ASSERT_EQ(levels.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(levels[i][0], i + 1);
+    EXPECT_EQ(levels[i][1], 1) << "H = " << i + 1 << " peak not found";
+  }
+  const double m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18, sPeak = c * c / (2 * m);
+  double Wpeak = 1.2, Apeak = 0;
+  for (int i = 0; i < 500; ++i) {
+    Apeak = P / std::sqrt(sPeak * sPeak + c * c * Wpeak * Wpeak);
+    Wpeak = std::sqrt((k + 0.75 * g * Apeak * Apeak - sPeak) / m);
+  }
+  const double W = 2 * M_PI;
+  // The searches stop at brackets 1e-5 of the frequency wide: near the flat top that
+  // leaves about 1e-8 of the peak value (0.5 A''/A df^2).
+  EXPECT_NEAR(levels[0][2] / Apeak, 1.0, 1e-7);
+  EXPECT_NEAR(levels[0][3] * W / Wpeak, 1.0, 1e-4);
+  EXPECT_NEAR(levels[1][2] / levels[0][2], 1.0, 1e-7);
+  EXPECT_NEAR(levels[1][3] / levels[0][3], 1.0, 1e-4);
+  // H = 3 against the traced H = 3 curve (columns: point, omega, freq, h0, amp_h1..h3, max, ...).
+  const auto curve = readCsv(dirH3 / "frc.csv");
+  double traced = 0, tracedW = 0;
+  for (const auto& row : curve)
+    if (row[7] > traced) traced = row[7], tracedW = row[1];
+  std::printf("Duffing peaks: H = 1 %.9f at %.6f (closed form %.9f at %.6f); H = 2 %.9f; H = 3 %.9f at %.6f, "
+              "traced %.9f at %.6f, from the trace's own point %.9f\n",
+              levels[0][2], levels[0][3] * W, Apeak, Wpeak, levels[1][2], levels[2][2], levels[2][3] * W, traced,
+              tracedW, own[0][2]);
+  EXPECT_GE(levels[2][2], traced * (1 - 1e-9));
+  EXPECT_NEAR(levels[2][2] / traced, 1.0, 1e-4);
+  EXPECT_NEAR(levels[2][3] * W / tracedW, 1.0, 2e-3);
+  ASSERT_FALSE(own.empty());
+  EXPECT_EQ(own[0][0], 3);
+  EXPECT_NEAR(own[0][2] / levels[2][2], 1.0, 1e-7);
+  // The summary says what changed from H = 2 to 3.
+  bool said = false;
+  for (const auto& line : summary.computed) said = said || line.find("H 2 -> 3 changes the peak by") != std::string::npos;
+  EXPECT_TRUE(said);
 }
 
 // A force given by amplitude and phase is the same force as its cos/sin form:
