@@ -434,8 +434,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     s.omegaUnit = 2 * M_PI * fromHz;
     s.stability = stability;
     // The reference curve's peak is checked up to harmonics_check_to; a study's curves
-    // with one more harmonic (each level costs a peak search).
-    s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : 0;
+    // are not (each level costs peak searches; the stage's error is the reference's).
+    s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : -1;
     s.continuation = opt;
     s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
     const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);
@@ -570,7 +570,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   d.rejectUnknownKeys();
   if (studyCurves > 0)
     summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),
-                              "as the forced response, per curve"});
+                              "the samples check per curve (summary); the harmonic truncation: the reference curve's check"});
 }
 
 }  // namespace cyclone::scenes

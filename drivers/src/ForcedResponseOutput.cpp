@@ -66,10 +66,12 @@ std::string samplesCheck(ForcedResponseSetup& setup, const continuation::BranchP
 // The largest response of DOF `dof` along a frequency curve near the solution X at
 // `hz`: the peak search at fixed frequencies (PeakSearch.hpp), which passes the
 // corners of friction paths where an arclength corrector stalls. Its parameter is the
-// frequency in Hz (what its messages name). The window (+-5 %) holds the shift of a
-// friction-damped peak between harmonic truncations.
+// frequency in Hz (what its messages name). The window (+-5 %, and `offset` more for
+// a start that far from the peak it seeks) holds the shift of a friction-damped peak
+// between harmonic truncations.
 continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& system, const Eigen::VectorXd& X,
-                                          double hz, double excitationScale, int dof, double tolerance) {
+                                          double hz, double excitationScale, int dof, double tolerance,
+                                          double offset = 0) {
   const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
   continuation::ContinuationProblem problem = byOmega;
   problem.residual = [byOmega](const Eigen::VectorXd& x, double f, Eigen::VectorXd& R) {
@@ -82,8 +84,11 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   const auto& H = system.aft().harmonics();
   continuation::PeakSearchOptions o;
   o.step = 1e-3 * hz, o.maxStep = 5e-3 * hz, o.minStep = 1e-8 * hz;
-  o.window = 0.05 * hz, o.parameterTolerance = 1e-5 * hz;
+  o.window = 0.05 * hz + std::abs(offset), o.parameterTolerance = 1e-5 * hz;
   o.tolerance = tolerance;
+  // From a neighbour's prediction Newton converges in a few iterations; one that does not
+  // within 20 is cut (a step) or replaced (a flank start at a level's start), not waited for.
+  o.maxNewtonIterations = 20;
   return continuation::findLocalPeak(
       problem, X, hz, [&](const Eigen::VectorXd& x) { return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc))); },
       o);
@@ -94,35 +99,79 @@ struct PeakLevel {
   int maxHarmonic = 0;
   continuation::PeakSearchResult peak;
   double seconds = 0;
+  double startHz = 0;  ///< where the search started (the level below's peak, or its flank)
 };
 
+// Solutions of one harmonic set at frequencies (Hz) near its peak: the traced curve's
+// points, a peak search's path.
+using SolvedPoints = std::vector<std::pair<double, Eigen::VectorXd>>;
+
+// A start for the raised system on the level below's flank, where the two differ
+// less than at a peak that moves with H: the level below's solutions (`lower`) at
+// least 0.5 % of the frequency from its peak, nearest first, each carried up and
+// solved at its frequency (at most 6 tried). Empty when none converges.
+std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& lowerSystem,
+                                              const hbm::HarmonicBalanceSystem& raised, SolvedPoints lower,
+                                              double peakHz, double scale, double tolerance) {
+  const auto byOmega = continuationProblem(raised, ForcedResponseSetup::Parameter::Omega, 0, scale);
+  std::sort(lower.begin(), lower.end(), [peakHz](const auto& a, const auto& b) {
+    return std::abs(a.first - peakHz) < std::abs(b.first - peakHz);
+  });
+  int tried = 0;
+  for (const auto& [f, x] : lower) {
+    if (std::abs(f - peakHz) < 5e-3 * peakHz) continue;
+    if (++tried > 6) break;
+    Eigen::VectorXd y =
+        hbm::transferCoefficients(x, lowerSystem.numDofs(), lowerSystem.aft().harmonics(), raised.aft().harmonics());
+    if (continuation::solveNewton(byOmega, y, 2 * M_PI * f, tolerance, 10).converged) return {f, y};
+  }
+  return {0, Eigen::VectorXd()};
+}
+
 // The peak of the curve with H, then with H + 1, H + 2, ... up to `upTo`, each level's
-// search started from the one before's peak (its solution carried to one more
-// harmonic). Stops at a level whose peak is not found (a fold, no solution).
+// search started from the one below's peak (its solution carried to one more
+// harmonic), or from the level below's flank when Newton finds nothing there (its
+// search path; for the first raised level also `curve`, the traced points). Stops at
+// a level whose peak is not found (a fold, no solution).
 std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
-                                       double scale, int dof, double tolerance, int upTo) {
+                                       double scale, int dof, double tolerance, int upTo, const SolvedPoints& curve) {
   std::vector<PeakLevel> levels;
-  std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem;
+  std::unique_ptr<hbm::HarmonicBalanceSystem> lowerSystem, raisedSystem;
   const hbm::HarmonicBalanceSystem* system = &hb;
   hbm::HarmonicSet set = hb.aft().harmonics();
   Eigen::VectorXd X = x;
+  SolvedPoints lowerPoints;
   for (int H = set.maxHarmonic(); H <= upTo; ++H) {
     Timer timer;
+    const hbm::HarmonicBalanceSystem* lower = system;
     if (H > set.maxHarmonic()) {
       std::vector<int> list = set.harmonics();
       list.push_back(H);
       const hbm::HarmonicSet raised(list);
+      lowerSystem = std::move(raisedSystem);  // keeps `lower` alive
       raisedSystem = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
       X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
       set = raised, system = raisedSystem.get();
     }
     PeakLevel level;
     level.maxHarmonic = H;
+    level.startHz = hz;
     level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
+    if (level.peak.x.size() == 0 && system != lower) {
+      const auto [f, start] = flankStart(*lower, *system, lowerPoints, hz, scale, tolerance);
+      if (start.size() > 0) {
+        level.startHz = f;
+        level.peak = searchPeak(*system, start, f, scale, dof, tolerance, f - hz);
+      } else {
+        level.peak.reason += ", nor from the level below's solutions on its flank";
+      }
+    }
     level.seconds = timer.seconds();
     levels.push_back(level);
     if (!level.peak.found) break;
     X = level.peak.x, hz = level.peak.parameter;
+    lowerPoints = level.peak.path;
+    if (levels.size() == 1) lowerPoints.insert(lowerPoints.end(), curve.begin(), curve.end());
   }
   return levels;
 }
@@ -149,6 +198,11 @@ void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::s
       out << ",";
     }
     std::string note = l.peak.reason;
+    if (i > 0 && l.startHz != levels[i - 1].peak.parameter) {
+      std::ostringstream from;
+      from << "started on the flank at " << l.startHz << " Hz" << (note.empty() ? "" : "; ");
+      note = from.str() + note;
+    }
     for (char& c : note)
       if (c == ',') c = ';';
     out << "," << l.peak.solves << "," << l.seconds << "," << note << "\n";
@@ -196,8 +250,9 @@ std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::
 // no interior peak (it rises at the end of the range), compare the point with
 // harmonics 0..H+1. Not possible when the system has nothing for a raised harmonic (a
 // reduced model without that nodal diameter): said so.
-std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak,
-                           const std::string& csvPath, SceneSummary& summary) {
+std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
+                           double peak, const std::string& csvPath, SceneSummary& summary) {
+  const auto& pt = branch.points[ip];
   try {
     if (setup.parameter != ForcedResponseSetup::Parameter::Omega) return pointHarmonicsCheck(setup, pt, peak);
     Timer timer;
@@ -205,7 +260,15 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
     const auto& hb = *setup.system;
     const int dof = setup.outputDofs.front();
     const int upTo = std::max(setup.harmonicsCheckTo, hb.aft().harmonics().maxHarmonic() + 1);
-    const auto levels = peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo);
+    // The traced points within 5 % of the peak: flank starts for the first raised level.
+    SolvedPoints curve;
+    for (const auto& p : branch.points) {
+      const double f = setup.apply(p.parameter).first / (2 * M_PI);
+      if (std::abs(f / (w / (2 * M_PI)) - 1) <= 0.05) curve.emplace_back(f, p.x);
+    }
+    setup.apply(pt.parameter);
+    const auto levels =
+        peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo, curve);
     writePeakLevels(levels, dof, csvPath);
     summary.written.push_back(csvPath);
     if (!levels.front().peak.found)  // no interior peak with the curve's own harmonics
@@ -217,6 +280,8 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
       const auto& l = levels[i];
       out << (i ? "; " : " ") << "H " << l.maxHarmonic << " ";
       if (l.peak.found) out << l.peak.value << " at " << l.peak.parameter << " Hz";
+      if (l.peak.found && i > 0 && l.startHz != levels[i - 1].peak.parameter)
+        out << " (searched from the flank at " << l.startHz << " Hz)";
       else if (l.peak.x.size() == 0) out << "not found (" << l.peak.reason << ")";
       else out << "not found (" << l.peak.reason << "; best point " << l.peak.value << " at " << l.peak.parameter
                << " Hz)";
@@ -481,9 +546,11 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     // Both checks at the largest-response point.
     result.samplesCheck = samplesCheck(setup, branch.points[ip], plotMax[ip]);
     summary.computed.push_back(result.samplesCheck);  // rank 0
-    result.harmonicsCheck =
-        harmonicsCheck(setup, branch.points[ip], plotMax[ip], outDir + "/" + name + "_harmonics.csv", summary);
-    summary.computed.push_back(result.harmonicsCheck);
+    if (setup.harmonicsCheckTo >= 0) {
+      result.harmonicsCheck =
+          harmonicsCheck(setup, branch, ip, plotMax[ip], outDir + "/" + name + "_harmonics.csv", summary);
+      summary.computed.push_back(result.harmonicsCheck);
+    }
   }
   return result;
 }

@@ -72,6 +72,10 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
       r << "## Forced response\n\nHarmonic balance (AFT) traced by pseudo-arclength continuation (`" << frc
         << ".csv`: amplitudes per harmonic, max |x(t)|, bifurcation flags; `" << frc
         << ".h5`: every coefficient).\n\n![forced response](" << frc << ".svg)\n\n";
+      if (exists(outDir, std::string(frc) + "_harmonics.csv"))
+        r << "The peak by harmonic truncation (`" << frc << "_harmonics.csv`: each level's peak found by a search at "
+          << "fixed frequencies from the level below's, its change from that level, and its cost):\n\n"
+          << csvTable(outDir + "/" + frc + "_harmonics.csv", 20) << "\n";
       if (exists(outDir, std::string(frc) + "_contacts.csv"))
         r << "Contacts at the peak (`" << frc << "_contacts.csv`):\n\n"
           << csvTable(outDir + "/" + frc + "_contacts.csv", 60) << "\n";

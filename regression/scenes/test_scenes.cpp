@@ -145,15 +145,55 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
   for (const char* f : {"mesh.exo", "mesh.inp", "static.exo", "frequencies.csv", "modes_10000rpm.exo",
                         "campbell.svg", "safe.svg", "resonances.csv", "rom_check.svg", "disc_frc.csv",
                         "disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
-                        "disc_time_response.svg", "study_preload.svg", "study_preload.csv", "report.md"})
+                        "disc_time_response.svg", "study_preload.svg", "study_preload.csv", "report.md",
+                        "disc_frc_harmonics.csv"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   {
     std::ifstream report(dir / "report.md");
     const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
     for (const char* section : {"## Error estimate against run time", "![SAFE diagram](safe.svg)",
                                 "![reduced model check](rom_check.svg)", "![forced response](disc_frc.svg)",
-                                "### preload"})
+                                "### preload", "The peak by harmonic truncation (`disc_frc_harmonics.csv`"})
       EXPECT_NE(text.find(section), std::string::npos) << section;
+  }
+  // The harmonics check's peaks (harmonics_check_to: 3): the H = 1 level, found by the
+  // search from the curve's largest point, lies at or just above that point (the curve
+  // samples the continuous peak); the levels above are there, found or with a reason.
+  {
+    std::ifstream curve(dir / "disc_frc.csv");
+    std::string line, header;
+    std::getline(curve, header);
+    const std::string maxColumn = header.substr(0, header.find("_max,"));  // up to the first DOF's max
+    const int column = int(std::count(maxColumn.begin(), maxColumn.end(), ','));
+    double traced = 0;
+    while (std::getline(curve, line)) {
+      std::stringstream cells(line);
+      std::string cell;
+      for (int c = 0; c <= column; ++c) std::getline(cells, cell, ',');
+      traced = std::max(traced, std::stod(cell));
+    }
+    std::ifstream levels(dir / "disc_frc_harmonics.csv");
+    std::getline(levels, line);
+    std::vector<std::string> rows;
+    while (std::getline(levels, line)) rows.push_back(line);
+    ASSERT_GE(rows.size(), 2u);  // a level not found ends the list
+    ASSERT_LE(rows.size(), 3u);
+    int H = 0, found = 0;
+    double peak = 0, hz = 0;
+    ASSERT_EQ(std::sscanf(rows[0].c_str(), "%d,%d,%lf,%lf", &H, &found, &peak, &hz), 4) << rows[0];
+    EXPECT_EQ(H, 1);
+    EXPECT_EQ(found, 1);
+    std::printf("demo peak: traced %.6e, searched %.6e at %.2f Hz\n", traced, peak, hz);
+    EXPECT_GE(peak, traced * (1 - 1e-9));
+    EXPECT_LE(peak, 1.05 * traced);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      ASSERT_EQ(std::sscanf(rows[i].c_str(), "%d,%d", &H, &found), 2) << rows[i];
+      EXPECT_EQ(H, int(i) + 1);
+      if (!found) {
+        EXPECT_EQ(i + 1, rows.size()) << "a level not found ends the list";
+        EXPECT_GT(rows[i].size(), 20u) << "a level not found says why: " << rows[i];
+      }
+    }
   }
   // Friction dissipates: every contact's energy per cycle at the peak is >= 0, some > 0.
   std::map<int, double> energies;

@@ -51,6 +51,16 @@ TEST(PeakSearch, LinearOscillatorPeakMatchesClosedForm) {
     std::printf("linear oscillator from W = %.4f: peak %.9f at W = %.9f (closed form %.9f at %.9f), %d solves\n", W0,
                 r.value, r.parameter, Apeak, Wpeak, r.solves);
     ASSERT_TRUE(r.found) << r.reason;
+    // The path: every accepted point solves the system, the best among them.
+    ASSERT_FALSE(r.path.empty());
+    bool bestOnPath = false;
+    for (const auto& [W, x] : r.path) {
+      Eigen::VectorXd F;
+      oscillator(0).residual(x, W, F);
+      EXPECT_LT(F.norm(), 1e-9);
+      bestOnPath = bestOnPath || (W == r.parameter && x == r.x);
+    }
+    EXPECT_TRUE(bestOnPath);
     EXPECT_NEAR(r.parameter, Wpeak, 1e-6);
     EXPECT_NEAR(r.value / Apeak, 1.0, 1e-9);  // flat at the top: the value is far better than the parameter
   }

@@ -43,6 +43,7 @@ PeakSearchResult findLocalPeak(const ContinuationProblem& problem, const Eigen::
   };
   auto accept = [&](const Solved& s) {  // only points on the path count for the best
     if (s.g > best.g) best = s;
+    out.path.emplace_back(s.p, s.x);
   };
   auto finish = [&](bool found, const std::string& reason) {
     out.found = found, out.reason = reason;

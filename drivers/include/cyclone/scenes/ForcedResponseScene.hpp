@@ -38,7 +38,7 @@ struct ForcedResponseSetup {
   std::vector<std::string> dofNames;  ///< system: dof_names, or dof0, dof1, ...
   std::string stability = "auto";  ///< Hill's method per point: auto (small systems), true, false
   /// The harmonics check of a frequency curve finds the peak with H, H + 1, ... up to this
-  /// (0: H + 1), each level by a peak search from the one before.
+  /// (0: H + 1), each level by a peak search from the one before; < 0: no harmonics check.
   int harmonicsCheckTo = 0;
 
   /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.

@@ -10,6 +10,8 @@
 #include <Eigen/Dense>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 
@@ -31,6 +33,9 @@ struct PeakSearchResult {
   Eigen::VectorXd x;                ///< its solution
   std::string reason;               ///< why not found (a fold, the window's edge, no solution at p0)
   int solves = 0;                   ///< Newton solves
+  /// Every solution the search accepted (p, x), in the order solved: points on the path
+  /// near the peak (e.g. starts for the same search on a refined system).
+  std::vector<std::pair<double, Eigen::VectorXd>> path;
 };
 
 /// x0: a solution or a close guess at p0 (solved first). measure: g(x), e.g. the peak
