@@ -279,12 +279,16 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const auto& l = levels[i];
       out << (i ? "; " : " ") << "H " << l.maxHarmonic << " ";
-      if (l.peak.found) out << l.peak.value << " at " << l.peak.parameter << " Hz";
-      if (l.peak.found && i > 0 && l.startHz != levels[i - 1].peak.parameter)
-        out << " (searched from the flank at " << l.startHz << " Hz)";
-      else if (l.peak.x.size() == 0) out << "not found (" << l.peak.reason << ")";
-      else out << "not found (" << l.peak.reason << "; best point " << l.peak.value << " at " << l.peak.parameter
-               << " Hz)";
+      if (l.peak.found) {
+        out << l.peak.value << " at " << l.peak.parameter << " Hz";
+        if (i > 0 && l.startHz != levels[i - 1].peak.parameter)
+          out << " (searched from the flank at " << l.startHz << " Hz)";
+      } else if (l.peak.x.size() == 0) {
+        out << "not found (" << l.peak.reason << ")";
+      } else {
+        out << "not found (" << l.peak.reason << "; best point " << l.peak.value << " at " << l.peak.parameter
+            << " Hz)";
+      }
     }
     // The change between the last two levels whose peaks were both found.
     std::size_t j = levels.size() - 1;

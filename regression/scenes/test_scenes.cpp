@@ -838,7 +838,12 @@ TEST(Scenes, HarmonicsCheckComparesPeaksFoundBySearchWithTheReferences) {
   EXPECT_NEAR(own[0][2] / levels[2][2], 1.0, 1e-7);
   // The summary says what changed from H = 2 to 3.
   bool said = false;
-  for (const auto& line : summary.computed) said = said || line.find("H 2 -> 3 changes the peak by") != std::string::npos;
+  for (const auto& line : summary.computed)
+    if (line.find("H 2 -> 3 changes the peak by") != std::string::npos) {
+      said = true;
+      EXPECT_EQ(line.find("not found"), std::string::npos) << line;  // every level was found
+      EXPECT_NE(line.find("H 3 2.87634"), std::string::npos) << line;
+    }
   EXPECT_TRUE(said);
 }
 
