@@ -142,3 +142,26 @@ TEST(PeakSearch, ASolutionOnAnotherBranchIsNotTakenForTheNextPoint) {
   EXPECT_LT(r.parameter, 1e-3);
   EXPECT_LT(-r.value, 0.05);  // on the branch x = sqrt(p), near its end
 }
+
+// A measure that is negative everywhere, highest at the start: the start is the
+// best point (not a left-over initial value), and with its neighbours lower the
+// search brackets it there: g = -1 - (p - 0.3)^2 along x = p.
+TEST(PeakSearch, NegativeMeasurePeakAtTheStart) {
+  continuation::ContinuationProblem p;
+  p.size = 1;
+  p.residual = [](const Eigen::VectorXd& x, double q, Eigen::VectorXd& F) {
+    F.resize(1);
+    F(0) = x(0) - q;
+  };
+  p.jacobian = [](const Eigen::VectorXd&, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Ones(1, 1); };
+  continuation::PeakSearchOptions o;
+  o.step = 0.01, o.maxStep = 0.05, o.window = 1, o.parameterTolerance = 1e-8;
+  const auto r = continuation::findLocalPeak(
+      p, Eigen::VectorXd::Constant(1, 0.3), 0.3, [](const Eigen::VectorXd& x) { return -1 - std::pow(x(0) - 0.3, 2); },
+      o);
+  ASSERT_TRUE(r.found) << r.reason;
+  EXPECT_NEAR(r.parameter, 0.3, 1e-8);
+  EXPECT_NEAR(r.value, -1.0, 1e-15);
+  ASSERT_EQ(r.x.size(), 1);
+  EXPECT_NEAR(r.x(0), 0.3, 1e-8);
+}

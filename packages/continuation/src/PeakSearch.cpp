@@ -1,6 +1,7 @@
 #include "cyclone/continuation/PeakSearch.hpp"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -32,7 +33,7 @@ PeakSearchResult findLocalPeak(const ContinuationProblem& problem, const Eigen::
     throw InputError("peak search", "needs 0 < minStep, 0 < step <= maxStep, window > 0, parameterTolerance > 0");
   PeakSearchResult out;
   Solved best;
-  best.g = -1;
+  best.g = -std::numeric_limits<double>::infinity();  // any measure, negative ones too
   auto solveAt = [&](double p, Eigen::VectorXd guess) -> std::optional<Solved> {
     ++out.solves;
     if (!solveNewton(problem, guess, p, o.tolerance, o.maxNewtonIterations).converged) return std::nullopt;
