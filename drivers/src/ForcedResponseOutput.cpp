@@ -63,6 +63,17 @@ std::string samplesCheck(ForcedResponseSetup& setup, const continuation::BranchP
   return out.str();
 }
 
+// `set` and one harmonic more (h), with at least the system's samples.
+hbm::HarmonicSet withHarmonic(const hbm::HarmonicSet& set, int h) {
+  std::vector<int> list = set.harmonics();
+  list.push_back(h);
+  return hbm::HarmonicSet(list);
+}
+std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
+                                                         const hbm::HarmonicSet& raised) {
+  return hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+}
+
 // The largest response of DOF `dof` along a frequency curve near the solution X at
 // `hz`: the peak search at fixed frequencies (PeakSearch.hpp), which passes the
 // corners of friction paths where an arclength corrector stalls. Its parameter is the
@@ -89,9 +100,10 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   // From a neighbour's prediction Newton converges in a few iterations; one that does not
   // within 20 is cut (a step) or replaced (a flank start at a level's start), not waited for.
   o.maxNewtonIterations = 20;
-  return continuation::findLocalPeak(
-      problem, X, hz, [&](const Eigen::VectorXd& x) { return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc))); },
-      o);
+  const auto measure = [&](const Eigen::VectorXd& x) {
+    return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc)));
+  };
+  return continuation::findLocalPeak(problem, X, hz, measure, o);
 }
 
 // One level of the harmonics check on a frequency curve.
@@ -136,7 +148,7 @@ std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& 
 std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
                                        double scale, int dof, double tolerance, int upTo, const SolvedPoints& curve) {
   std::vector<PeakLevel> levels;
-  std::unique_ptr<hbm::HarmonicBalanceSystem> lowerSystem, raisedSystem;
+  std::unique_ptr<hbm::HarmonicBalanceSystem> lowerSystem, current;
   const hbm::HarmonicBalanceSystem* system = &hb;
   hbm::HarmonicSet set = hb.aft().harmonics();
   Eigen::VectorXd X = x;
@@ -145,13 +157,11 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
     Timer timer;
     const hbm::HarmonicBalanceSystem* lower = system;
     if (H > set.maxHarmonic()) {
-      std::vector<int> list = set.harmonics();
-      list.push_back(H);
-      const hbm::HarmonicSet raised(list);
-      lowerSystem = std::move(raisedSystem);  // keeps `lower` alive
-      raisedSystem = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+      const hbm::HarmonicSet raised = withHarmonic(set, H);
+      lowerSystem = std::move(current);  // keeps `lower` alive
+      current = raisedSystem(hb, raised);
       X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
-      set = raised, system = raisedSystem.get();
+      set = raised, system = current.get();
     }
     PeakLevel level;
     level.maxHarmonic = H;
@@ -182,7 +192,8 @@ void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::s
   AtomicFile file(path);
   std::ofstream out(file.tempPath());
   out.precision(10);
-  out << "max_harmonic,found,peak_max_abs_dof" << dof << ",freq_hz,relative_change,frequency_change,solves,seconds,note\n";
+  out << "max_harmonic,found,peak_max_abs_dof" << dof
+      << ",freq_hz,relative_change,frequency_change,solves,seconds,note\n";
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const auto& l = levels[i];
     out << l.maxHarmonic << "," << (l.peak.found ? 1 : 0) << ",";
@@ -221,10 +232,8 @@ std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::
   const int dof = setup.outputDofs.front(), next = H.maxHarmonic() + 1;
   std::ostringstream out;
   out << "harmonics check: H " << H.maxHarmonic() << " -> " << next;
-  std::vector<int> list = H.harmonics();
-  list.push_back(next);
-  const hbm::HarmonicSet raised(list);
-  const auto refined = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+  const hbm::HarmonicSet raised = withHarmonic(H, next);
+  const auto refined = raisedSystem(hb, raised);
   const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
   Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
   const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
