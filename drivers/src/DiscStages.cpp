@@ -383,14 +383,11 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     throw InputError(d.where("stability"), "must be auto, true or false");
   auto cs = d.section("continuation");
   continuation::ContinuationOptions opt;
-  opt.initialStep = cs.getDouble("initial_step", 0.002);
-  opt.maxStep = cs.getDouble("max_step", 0.02);
-  opt.arcLengthScaling = false;  // the unknowns are scaled to order one (makeDiscForcedResponse)
-  opt.stopWhereItTurnsBack = true;  // never a false "range finished" after walking back from a kink
-  opt.minStep = cs.getDouble("min_step", 1e-7);
-  opt.maxSteps = cs.getInt("max_points", 2000);
+  opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7, opt.maxSteps = 2000;  // defaults
+  readContinuationSteps(cs, opt);
+  opt.arcLengthScaling = false;  // loca: the unknowns are scaled to order one (makeDiscForcedResponse)
+  opt.stopWhereItTurnsBack = true;  // loca: never a false "range finished" after walking back from a kink
   opt.tolerance = cs.getDouble("tolerance", 1e-8);
-  opt.lineSearch = readLineSearch(cs);
   cs.rejectUnknownKeys();
 
   // The reference system: the range from its resonance estimate unless given.

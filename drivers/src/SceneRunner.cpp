@@ -346,13 +346,38 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 // balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
 }  // namespace
 
-continuation::ContinuationOptions::LineSearch readLineSearch(SceneSection& cs) {
-  using LS = continuation::ContinuationOptions::LineSearch;
+void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt) {
+  using Options = continuation::ContinuationOptions;
+  const std::string engine = cs.getString("engine", "loca");
+  if (engine == "predictor_corrector")
+    opt.engine = Options::Engine::PredictorCorrector;
+  else if (engine == "loca")
+    opt.engine = Options::Engine::Loca;
+  else
+    throw InputError(cs.where("engine"), "'" + engine + "': must be predictor_corrector or loca");
+  opt.initialStep = cs.getDouble("initial_step", opt.initialStep);  // the caller's defaults
+  opt.minStep = cs.getDouble("min_step", opt.minStep);
+  opt.maxStep = cs.getDouble("max_step", opt.maxStep);
+  opt.maxSteps = cs.getInt("max_points", opt.maxSteps);
+  opt.turnAngle = cs.getDouble("turn_angle", opt.turnAngle);
+  if (!(opt.initialStep > 0)) throw InputError(cs.where("initial_step"), "must be positive");
+  if (!(opt.minStep > 0)) throw InputError(cs.where("min_step"), "must be positive");
+  if (!(opt.maxStep >= opt.minStep)) throw InputError(cs.where("max_step"), "must be at least min_step");
+  if (opt.maxSteps < 2) throw InputError(cs.where("max_points"), "must be at least 2");
+  if (!(opt.turnAngle > 0 && opt.turnAngle < 1.5))
+    throw InputError(cs.where("turn_angle"), "must lie in (0, 1.5) radians");
+  using LS = Options::LineSearch;
   const std::string name = cs.getString("line_search", "full_step");
-  if (name == "full_step") return LS::FullStep;
-  if (name == "backtrack") return LS::Backtrack;
-  if (name == "polynomial") return LS::Polynomial;
-  throw InputError(cs.where("line_search"), "'" + name + "': must be full_step, backtrack or polynomial");
+  if (name == "full_step")
+    opt.lineSearch = LS::FullStep;
+  else if (name == "backtrack")
+    opt.lineSearch = LS::Backtrack;
+  else if (name == "polynomial")
+    opt.lineSearch = LS::Polynomial;
+  else
+    throw InputError(cs.where("line_search"), "'" + name + "': must be full_step, backtrack or polynomial");
+  if (cs.has("line_search") && opt.engine != Options::Engine::Loca)
+    throw InputError(cs.where("line_search"), "is for engine: loca (the predictor-corrector backtracks by itself)");
 }
 
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
@@ -570,12 +595,8 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   }
   opt.from = cs.requireDouble("from");
   opt.to = cs.requireDouble("to");
-  opt.initialStep = cs.getDouble("initial_step", 0.01);
-  opt.minStep = cs.getDouble("min_step", 1e-6);
-  opt.maxStep = cs.getDouble("max_step", 0.05);
-  opt.maxSteps = cs.getInt("max_points", 5000);
+  readContinuationSteps(cs, opt);
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
-  opt.lineSearch = readLineSearch(cs);
   if (!(opt.tolerance > 0 && opt.tolerance < 1))
     throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");
   cs.rejectUnknownKeys();
@@ -697,6 +718,15 @@ continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup
     setup.system->residual(X, w, R, &J, s);
     J = f.cwiseInverse().asDiagonal() * J;
   };
+  // A frequency curve's resonance peaks (of the first output DOF's max |x(t)|, the
+  // summary's peak) are located exactly on the path, not left between two samples.
+  if (setup.parameter == ForcedResponseSetup::Parameter::Omega && !setup.outputDofs.empty()) {
+    const int dof = setup.outputDofs.front(), nc = setup.system->numCoefficients();
+    const hbm::HarmonicSet harmonics = setup.system->aft().harmonics();
+    problem.measure = [harmonics, dof, nc](const Eigen::VectorXd& X) {
+      return hbm::peakMagnitude(harmonics, Eigen::VectorXd(X.segment(dof * nc, nc)));
+    };
+  }
   return problem;
 }
 

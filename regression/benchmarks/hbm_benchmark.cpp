@@ -6,7 +6,9 @@
 // number of time samples N: the time of one residual + Jacobian and its
 // shares (element AFT and marching, linear operator, assembly of the element
 // blocks), the dense LU of the Jacobian, and then a whole resonance curve
-// traced by LOCA with its time per point.
+// traced with default settings (only the range given) by each continuation
+// engine, with its points, Newton iterations and the time split into residuals,
+// Jacobians and factorisations.
 //   build/regression/hbm_benchmark [max H (default 7)]
 #include <cmath>
 #include <cstdio>
@@ -108,17 +110,28 @@ int main(int argc, char** argv) {
       Eigen::VectorXd R;
       s->residual(X, p, R, &J);
     };
-    continuation::ContinuationOptions o;
-    o.from = 0.9, o.to = 1.6, o.initialStep = 0.05, o.maxStep = 0.2;
-    Timer t;
-    const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
-    const double secs = t.seconds();
-    double peak = 0, peakW = 0;
-    for (const auto& pt : branch.points)
-      if (s->amplitude(pt.x, 0, 1) > peak) peak = s->amplitude(pt.x, 0, 1), peakW = pt.parameter;
-    std::printf("  H = %d, N = %d: %zu points in %.2f s (%.3f s per point), peak |x1| of DOF 0 %.5f at %.4f; %s\n", H,
-                N, branch.points.size(), secs, secs / std::max<std::size_t>(1, branch.points.size()), peak, peakW,
-                branch.stopReason.c_str());
+    using Engine = continuation::ContinuationOptions::Engine;
+    for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+      continuation::ContinuationOptions o;
+      o.engine = engine;
+      o.from = 0.9, o.to = 1.6;
+      Timer t;
+      const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
+      const double secs = t.seconds();
+      double peak = 0, peakW = 0;
+      for (const auto& pt : branch.points)
+        if (s->amplitude(pt.x, 0, 1) > peak) peak = s->amplitude(pt.x, 0, 1), peakW = pt.parameter;
+      const auto& st = branch.statistics;
+      std::printf("  H = %d, N = %d, %-19s: %4zu points in %6.2f s (%.4f s per point), peak |x1| of DOF 0 %.5f at "
+                  "%.4f; %s\n",
+                  H, N, engine == Engine::Loca ? "LOCA" : "predictor-corrector", branch.points.size(), secs,
+                  secs / std::max<std::size_t>(1, branch.points.size()), peak, peakW, branch.stopReason.c_str());
+      if (engine == Engine::PredictorCorrector)
+        std::printf("      %d Newton iterations (%.2f per point), %d steps cut; residuals %.2f s, Jacobians %.2f s, "
+                    "factorisations %.2f s\n",
+                    st.newtonIterations, double(st.newtonIterations) / std::max<std::size_t>(1, branch.points.size()),
+                    st.rejectedSteps, st.residualSeconds, st.jacobianSeconds, st.factorSeconds);
+    }
   }
   return 0;
 }

@@ -673,6 +673,18 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                 dir);
   EXPECT_NE(msg.find("continuation/line_search"), std::string::npos) << msg;
   EXPECT_NE(msg.find("full_step, backtrack or polynomial"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
+                       "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n  continuation:\n    from: 0.5\n"
+                       "    to: 1.5\n    engine: arclength\n",
+                dir);
+  EXPECT_NE(msg.find("continuation/engine"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("predictor_corrector or loca"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
+                       "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n  continuation:\n    from: 0.5\n"
+                       "    to: 1.5\n    min_step: 0.1\n    max_step: 0.01\n",
+                dir);
+  EXPECT_NE(msg.find("continuation/max_step"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("at least min_step"), std::string::npos) << msg;
   // Friction and cyclic keys: the element's parameter, W_next without a ring,
   // a cyclic system without (or with two different) engine orders.
   const std::string mk = "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n";

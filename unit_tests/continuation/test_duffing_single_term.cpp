@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "SingleTermOscillator.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 
 using namespace cyclone;
@@ -16,21 +17,7 @@ using namespace cyclone;
 namespace {
 const double m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18;
 
-continuation::ContinuationProblem duffing() {
-  continuation::ContinuationProblem p;
-  p.size = 2;
-  p.residual = [](const Eigen::VectorXd& x, double W, Eigen::VectorXd& F) {
-    const double a = x(0), b = x(1), r2 = a * a + b * b, s = k - m * W * W + 0.75 * g * r2;
-    F.resize(2);
-    F << s * a + c * W * b - P, s * b - c * W * a;
-  };
-  p.jacobian = [](const Eigen::VectorXd& x, double W, Eigen::MatrixXd& J) {
-    const double a = x(0), b = x(1), s = k - m * W * W + 0.75 * g * (a * a + b * b);
-    J.resize(2, 2);
-    J << s + 1.5 * g * a * a, c * W + 1.5 * g * a * b, -c * W + 1.5 * g * a * b, s + 1.5 * g * b * b;
-  };
-  return p;
-}
+continuation::ContinuationProblem duffing() { return test_support::singleTermOscillator(m, c, k, g, P); }
 }  // namespace
 
 TEST(ArclengthContinuation, DuffingSingleTermThroughBothFolds) {
@@ -48,6 +35,7 @@ TEST(ArclengthContinuation, DuffingSingleTermThroughBothFolds) {
   continuation::ContinuationOptions o;
   o.from = 0.5;
   o.to = 2.0;
+  o.engine = continuation::ContinuationOptions::Engine::Loca;  // LOCA's line searches
   o.initialStep = 0.01;
   o.maxStep = 0.05;
   const double W0 = 0.5, s0 = k - m * W0 * W0;  // a near-linear start: the Newton solve refines it
@@ -105,29 +93,35 @@ TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
     J.resize(1, 1);
     J(0, 0) = -(2 - 2 * x(0));
   };
-  continuation::ContinuationOptions o;
-  o.from = 0;
-  o.to = 2;
-  o.initialStep = 0.01;
-  o.maxStep = 0.05;
-  const auto branch = continuation::traceBranch(fold, Eigen::VectorXd::Zero(1), o);
-  EXPECT_FALSE(branch.finished);
-  EXPECT_NE(branch.stopReason.find("returned to the start of the range"), std::string::npos) << branch.stopReason;
-  EXPECT_NE(branch.stopReason.find("not traced"), std::string::npos) << branch.stopReason;
-  double top = 0;
-  for (const auto& pt : branch.points) top = std::max(top, pt.parameter);
-  EXPECT_NEAR(top, 1.0, 1e-3);  // the fold
-  ASSERT_FALSE(branch.points.empty());
-  EXPECT_NEAR(branch.points.back().x(0), 2.0, 1e-6);  // back at p = 0 on the other half
+  using Engine = continuation::ContinuationOptions::Engine;
+  for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+    SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
+    continuation::ContinuationOptions o;
+    o.engine = engine;
+    o.from = 0;
+    o.to = 2;
+    o.initialStep = 0.01;
+    o.maxStep = 0.05;
+    const auto branch = continuation::traceBranch(fold, Eigen::VectorXd::Zero(1), o);
+    EXPECT_FALSE(branch.finished);
+    EXPECT_NE(branch.stopReason.find("returned to the start of the range"), std::string::npos) << branch.stopReason;
+    EXPECT_NE(branch.stopReason.find("not traced"), std::string::npos) << branch.stopReason;
+    double top = 0;
+    for (const auto& pt : branch.points) top = std::max(top, pt.parameter);
+    EXPECT_NEAR(top, 1.0, 1e-3);  // the fold
+    ASSERT_FALSE(branch.points.empty());
+    EXPECT_NEAR(branch.points.back().x(0), 2.0, 1e-6);  // back at p = 0 on the other half
+  }
 }
 
 // A corner of the path that turns by more than 90 degrees while p moves on, as
 // a friction contact changing state makes: x = 3 (p - 1) up to p = 1, x = -3 (p
 // - 1) after. The hyperplane normal to the incoming direction, (1, 3), meets
 // neither piece beyond the corner (their directions' cosine is -0.8), so no
-// arclength step passes however small; a step at fixed p past the corner does
-// (bridgeKink). Every point is checked against the closed form.
-TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassedAtFixedParameter) {
+// arclength step with that corrector passes however small. Both engines pass it by
+// a step at fixed p past the corner (the predictor-corrector's last resort, LOCA's
+// bridgeKink). Every point is checked against the closed form.
+TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassed) {
   auto shape = [](double p) { return p < 1 ? 3 * (p - 1) : -3 * (p - 1); };
   continuation::ContinuationProblem corner;
   corner.size = 1;
@@ -136,20 +130,25 @@ TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassedAtFixedParam
     F(0) = x(0) - shape(p);
   };
   corner.jacobian = [](const Eigen::VectorXd&, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Ones(1, 1); };
-  continuation::ContinuationOptions o;
-  o.from = 0;
-  o.to = 2;
-  o.initialStep = 0.01;
-  o.maxStep = 0.05;
-  o.stopWhereItTurnsBack = true;
-  const auto branch = continuation::traceBranch(corner, Eigen::VectorXd::Constant(1, -3.0), o);
-  EXPECT_TRUE(branch.finished) << branch.stopReason;
-  ASSERT_FALSE(branch.points.empty());
-  EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
-  double previous = -1;
-  for (const auto& pt : branch.points) {
-    EXPECT_NEAR(pt.x(0), shape(pt.parameter), 1e-8) << "p = " << pt.parameter;
-    EXPECT_GT(pt.parameter, previous);  // never back along the path
-    previous = pt.parameter;
+  using Engine = continuation::ContinuationOptions::Engine;
+  for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+    SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
+    continuation::ContinuationOptions o;
+    o.engine = engine;
+    o.from = 0;
+    o.to = 2;
+    o.initialStep = 0.01;
+    o.maxStep = 0.05;
+    o.stopWhereItTurnsBack = true;
+    const auto branch = continuation::traceBranch(corner, Eigen::VectorXd::Constant(1, -3.0), o);
+    EXPECT_TRUE(branch.finished) << branch.stopReason;
+    ASSERT_FALSE(branch.points.empty());
+    EXPECT_NEAR(branch.points.back().parameter, 2.0, 1e-9);
+    double previous = -1;
+    for (const auto& pt : branch.points) {
+      EXPECT_NEAR(pt.x(0), shape(pt.parameter), 1e-8) << "p = " << pt.parameter;
+      EXPECT_GT(pt.parameter, previous);  // never back along the path
+      previous = pt.parameter;
+    }
   }
 }

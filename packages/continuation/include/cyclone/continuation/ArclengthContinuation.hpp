@@ -1,9 +1,14 @@
 #pragma once
-// Pseudo-arclength continuation of a dense nonlinear system F(x; p) = 0 in one
-// parameter p, through turning points, with LOCA (LOCA::LAPACK: the harmonic
-// balance systems of reduced models are dense and small). Newton by NOX inside
-// each step; the step size adapts and is cut when Newton fails or the residual
-// throws; the branch up to a failure is kept.
+// Continuation of a dense nonlinear system F(x; p) = 0 in one parameter p,
+// through turning points and the corners of friction contacts, by one of two
+// engines (docs/architecture.md, "Continuation"):
+//  - Cyclone's predictor-corrector (PredictorCorrector.cpp): unknowns
+//    scaled by their current size, a tangent predictor, a pseudo-arclength corrector
+//    with a spherical one as the fallback at sharp turns, steps from Newton's
+//    iteration count and the turning angle;
+//  - LOCA's stepper (LOCA::LAPACK, LocaContinuation.cpp; the default for now): a
+//    hyperplane corrector and LOCA's adaptive step, with kink bridging around it.
+// The branch up to a failure is kept, with the reason it stopped.
 #include <Eigen/Dense>
 #include <functional>
 #include <string>
@@ -17,36 +22,61 @@ struct ContinuationProblem {
   std::function<void(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F)> residual;
   /// dF/dx(x; p), size x size.
   std::function<void(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J)> jacobian;
+  /// Optional response measure g(x) (e.g. the peak magnitude of a response DOF). The
+  /// predictor-corrector locates each local maximum of g along the path to 1e-5 of
+  /// the steps around it and adds it as a point: a curve's peak is then a solution,
+  /// not the best of its samples.
+  std::function<double(const Eigen::VectorXd& x)> measure;
 };
 
 struct ContinuationOptions {
+  /// LOCA stays the default until every scene and verification is traced with the
+  /// predictor-corrector (docs/architecture.md, "Continuation").
+  enum class Engine { PredictorCorrector, Loca };
+  Engine engine = Engine::Loca;
   double from = 0, to = 1;          ///< parameter range (either direction)
-  double initialStep = 0.01;        ///< arclength units (scaled with the solution)
+  /// Arclength steps. PredictorCorrector: in the scaled (x / ||x||, p / |to - from|)
+  /// space, so 0.1 is a tenth of the range or a 10 % change of the solution. Loca: in
+  /// LOCA's units (the unknowns' RMS and the parameter).
+  double initialStep = 0.01;
   double minStep = 1e-6, maxStep = 0.05;
   int maxSteps = 5000;
   double tolerance = 1e-10;         ///< Newton: ||F||_2
   int maxNewtonIterations = 15;
+  /// PredictorCorrector: the turn of the tangent per step the step size aims at
+  /// (radians). A half circle of the response (the phase through a resonance) takes
+  /// about pi / turnAngle points.
+  double turnAngle = 0.12;
   /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
-  bool arcLengthScaling = true;
+  bool arcLengthScaling = true;  // Loca only
   /// Stop a run that goes back along its own path for a few points (BranchTurn.hpp),
   /// or whose step fell below the minimum, and try a step over the kink (at a fixed
   /// parameter, then a secant arclength step); the curve ends with that reason if
   /// neither passes. Off by default: a true fold whose two halves nearly coincide (the
   /// force ramp of NLvib's example 03) looks the same. On for the FE disc scenes,
   /// whose H = 3 curve LOCA otherwise walked back to the start, calling it finished.
-  bool stopWhereItTurnsBack = false;
+  bool stopWhereItTurnsBack = false;  // Loca only (the predictor-corrector never turns back)
   /// Drop a point whose step is far longer than the step before it (BranchTurn.hpp:
   /// branchJump: the corrector left the predictor's neighbourhood for another branch)
   /// and restart from the last point with a quarter of the step; after 6 restarts
   /// without progress the curve ends there with that reason.
-  bool restartWhereTheCorrectorJumps = true;
+  bool restartWhereTheCorrectorJumps = true;  // Loca only
   /// NOX's line search in LOCA's corrector. Full steps are LOCA's default; a
   /// backtracking or polynomial line search can keep Newton from cycling at the
   /// kinks of many friction contacts (docs/scenes.md: the default disc at H = 3).
   enum class LineSearch { FullStep, Backtrack, Polynomial };
-  LineSearch lineSearch = LineSearch::FullStep;
+  LineSearch lineSearch = LineSearch::FullStep;  // Loca only
+};
+
+/// What a curve cost: counts and seconds of the engine's work.
+struct ContinuationStatistics {
+  int newtonIterations = 0;  ///< corrector iterations, all steps (rejected ones too)
+  int rejectedSteps = 0;     ///< corrections that failed or were refused (the step was cut)
+  int sphericalSteps = 0;    ///< steps taken by the spherical corrector (sharp turns)
+  long residuals = 0, jacobians = 0, factorizations = 0;
+  double residualSeconds = 0, jacobianSeconds = 0, factorSeconds = 0, seconds = 0;
 };
 
 struct BranchPoint {
@@ -67,6 +97,7 @@ struct Branch {
   /// from the other end of the range (scenes::traceForcedResponse) is a second segment:
   /// consecutive points across a start are not neighbours on a path.
   std::vector<std::size_t> segmentStarts;
+  ContinuationStatistics statistics;  ///< PredictorCorrector only
 };
 
 /// Traces from x0 (a solution, or a good guess, at p = options.from; it is

@@ -1,5 +1,6 @@
-// LOCA::LAPACK glue: the only translation unit with LOCA headers.
-#include "cyclone/continuation/ArclengthContinuation.hpp"
+// LOCA::LAPACK glue: the only translation unit with LOCA headers. The LOCA engine
+// of traceBranch (ContinuationOptions::Engine::Loca).
+#include "ContinuationEngines.hpp"
 
 #include <sstream>
 #include <stdexcept>
@@ -360,17 +361,13 @@ bool bridgeKink(const ContinuationProblem& problem, const ContinuationOptions& o
 
 }  // namespace
 
-Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
+Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
+                           const ContinuationOptions& o) {
   Branch branch;
   Eigen::VectorXd x0 = guess;
   const auto start = solveNewton(problem, x0, o.from, o.tolerance, 100);
   if (!start.converged) {
-    std::ostringstream why;
-    why << "no converged solution at the start of the range: Newton with line search from the guess stopped at ||R|| = "
-        << start.residualNorm << " (tolerance " << o.tolerance
-        << "; round-off of very different forces, e.g. a huge preload against a tiny excitation, needs a looser "
-           "continuation tolerance)";
-    branch.stopReason = why.str();
+    branch.stopReason = noConvergedStart(start, o.tolerance);
     return branch;
   }
   // A failed evaluation inside LOCA (e.g. a parameter leaving its domain in a

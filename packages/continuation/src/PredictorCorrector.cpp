@@ -1,0 +1,494 @@
+// Cyclone's continuation engine (ContinuationOptions::Engine::PredictorCorrector).
+//
+// Where the steps are measured: x over the current solution's norm and p over the
+// range, so a step is a relative change of the response or a fraction of the range
+// (NLvib's dynamic scaling, tmdsimpy's DynamicCtoP; docs/architecture.md says why
+// this is not LOCA's stepper). Each step: a tangent predictor; Newton on F = 0 with
+// the pseudo-arclength hyperplane through the predictor; where that fails or lands
+// far away, on the sphere of the step's radius around the last point, which meets a
+// path that turns by more than 90 degrees (a stick-slip corner) where no hyperplane
+// does. The next step grows or shrinks with Newton's iteration count and the
+// tangent's turn. A step that goes back onto the path already traced is refused.
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "ContinuationEngines.hpp"
+#include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+
+namespace cyclone::continuation {
+
+namespace {
+
+struct Point {
+  Eigen::VectorXd x;
+  double p = 0;
+};
+
+// Distances in the scaled space: ||dx||^2 / sx^2 + dp^2 / sp^2.
+struct Metric {
+  double sx = 1, sp = 1;
+  double dot(const Point& a, const Point& b) const { return a.x.dot(b.x) / (sx * sx) + a.p * b.p / (sp * sp); }
+  double norm(const Point& a) const { return std::sqrt(dot(a, a)); }
+  Point difference(const Point& a, const Point& b) const { return {a.x - b.x, a.p - b.p}; }
+};
+
+enum class Constraint { Plane, Sphere };
+
+struct Correction {
+  bool converged = false;
+  int iterations = 0;
+  Point z;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;  // of the last bordered Jacobian
+  bool factored = false;                    // lu holds one (no iteration: the predictor solved it)
+};
+
+class Tracer {
+public:
+  Tracer(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch)
+      : problem_(problem), o_(o), branch_(branch), n_(problem.size) {}
+
+  void run(const Eigen::VectorXd& guess);
+
+private:
+  bool residual(const Point& z, Eigen::VectorXd& F) {
+    Timer t;
+    ++stats().residuals;
+    bool ok = true;
+    try {
+      problem_.residual(z.x, z.p, F);
+      ok = F.allFinite();
+    } catch (...) {
+      ok = false;
+    }
+    stats().residualSeconds += t.seconds();
+    return ok;
+  }
+  // [J, dF/dp] at z (dF/dp by a forward difference from F = F(z)).
+  bool jacobian(const Point& z, const Eigen::VectorXd& F, Eigen::MatrixXd& A) {
+    Timer t;
+    ++stats().jacobians;
+    Eigen::MatrixXd J;
+    bool ok = true;
+    try {
+      problem_.jacobian(z.x, z.p, J);
+      ok = J.allFinite();
+    } catch (...) {
+      ok = false;
+    }
+    stats().jacobianSeconds += t.seconds();
+    if (!ok) return false;
+    const double eps = 1.5e-8 * std::max(std::abs(z.p), metric_.sp);
+    Eigen::VectorXd Fe;
+    if (!residual({z.x, z.p + eps}, Fe)) return false;
+    A.resize(n_ + 1, n_ + 1);
+    A.topLeftCorner(n_, n_) = J;
+    A.topRightCorner(n_, 1) = (Fe - F) / eps;
+    return true;
+  }
+  void factor(const Eigen::MatrixXd& A, Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
+    Timer t;
+    ++stats().factorizations;
+    lu.compute(A);
+    stats().factorSeconds += t.seconds();
+  }
+  ContinuationStatistics& stats() { return branch_.statistics; }
+
+  // The unit tangent at z (metric_), oriented along `along` (a direction in (x, p)).
+  bool tangentFrom(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu, const Point& along, Point& t) const {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
+    rhs(n_) = 1;
+    const Eigen::VectorXd v = lu.solve(rhs);
+    if (!v.allFinite()) return false;
+    t = {v.head(n_), v(n_)};
+    const double norm = metric_.norm(t);
+    if (!(norm > 0)) return false;
+    const double s = metric_.dot(t, along) < 0 ? -1.0 : 1.0;
+    t.x *= s / norm, t.p *= s / norm;
+    return true;
+  }
+  bool freshTangent(const Point& z, const Point& along, Point& t) {
+    Eigen::VectorXd F;
+    Eigen::MatrixXd A;
+    if (!residual(z, F) || !jacobian(z, F, A)) return false;
+    A.bottomLeftCorner(1, n_) = (along.x / (metric_.sx * metric_.sx)).transpose();
+    A(n_, n_) = along.p / (metric_.sp * metric_.sp);
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    factor(A, lu);
+    return tangentFrom(lu, along, t);
+  }
+
+  Correction correct(Constraint kind, const Point& z0, const Point& t0, double ds);
+  void append(const Point& z) {
+    branch_.points.push_back({z.p, z.x});
+    measures_.push_back(problem_.measure ? problem_.measure(z.x) : 0.0);
+  }
+  void refinePeak(const Point& t0);
+  bool onTracedPath(const Point& z, double ds) const;
+  bool fixedParameterStep(const Point& z0, const Point& t0, Point& z1);
+  void rescale(const Point& z);
+  void endAt(double p, const Point& inside, const Point& outside);
+  void progress();
+
+  const ContinuationProblem& problem_;
+  const ContinuationOptions& o_;
+  Branch& branch_;
+  const int n_;
+  Metric metric_;
+  double largestNorm_ = 0, sxFloor_ = 0;
+  std::vector<double> measures_;  // problem_.measure at each point
+  Timer total_, sinceLog_;
+};
+
+// Newton on [F(z); g(z)] = 0 from the predictor z0 + ds t0 (ds < 0: behind z0, for
+// the peak's refinement): g the hyperplane through
+// the predictor normal to t0, or the sphere of radius ds around z0 (g scaled to
+// unit gradient). Full Newton steps, backtracked while ||F|| grows; a run that moves
+// 4 steps away from the predictor, or whose ||F|| grew three times, has failed.
+Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, double ds) {
+  Correction c;
+  const Point predictor{z0.x + ds * t0.x, z0.p + ds * t0.p};
+  Point z = predictor;
+  const double sx2 = metric_.sx * metric_.sx, sp2 = metric_.sp * metric_.sp;
+  auto constraint = [&](const Point& y) {
+    if (kind == Constraint::Plane) return metric_.dot(t0, metric_.difference(y, predictor));
+    const double r = metric_.norm(metric_.difference(y, z0));
+    return (r * r - ds * ds) / (2 * ds);
+  };
+  Eigen::VectorXd F, Ft, rhs(n_ + 1);
+  Eigen::MatrixXd A;
+  if (!residual(z, F)) return c;
+  int growths = 0;
+  const int maxIterations = std::min(o_.maxNewtonIterations, 12);
+  for (; c.iterations <= maxIterations; ++c.iterations) {
+    const double g = constraint(z);
+    if (F.norm() <= o_.tolerance && std::abs(g) <= 1e-6 * std::abs(ds)) {
+      c.converged = c.iterations > 0 || kind == Constraint::Plane;
+      // One more step with the last factorisation (a residual and a solve, no
+      // Jacobian): Newton stops just under the tolerance, and near a resonance a
+      // residual of 1e-10 is an error of 1e-7 in x.
+      if (c.factored) {
+        rhs << -F, -g;
+        const Eigen::VectorXd d = c.lu.solve(rhs);
+        const Point polished{z.x + d.head(n_), z.p + d(n_)};
+        if (d.allFinite() && residual(polished, Ft) && Ft.norm() < F.norm()) z = polished;
+      }
+      break;
+    }
+    if (c.iterations == maxIterations) break;
+    ++stats().newtonIterations;
+    if (!jacobian(z, F, A)) return c;
+    if (kind == Constraint::Plane) {
+      A.bottomLeftCorner(1, n_) = (t0.x / sx2).transpose();
+      A(n_, n_) = t0.p / sp2;
+    } else {
+      A.bottomLeftCorner(1, n_) = ((z.x - z0.x) / (sx2 * ds)).transpose();
+      A(n_, n_) = (z.p - z0.p) / (sp2 * ds);
+    }
+    factor(A, c.lu);
+    c.factored = true;
+    rhs << -F, -g;
+    const Eigen::VectorXd d = c.lu.solve(rhs);
+    if (!d.allFinite()) return c;
+    Point next;
+    bool decreased = false;
+    for (double a = 1; a >= 0.125; a *= 0.5) {  // backtracking while ||F|| grows
+      next = {z.x + a * d.head(n_), z.p + a * d(n_)};
+      if (residual(next, Ft) && Ft.norm() < F.norm()) {
+        decreased = true;
+        break;
+      }
+    }
+    if (!decreased) {  // a full step that grows ||F|| (a kink of the nonsmooth residual)
+      next = {z.x + d.head(n_), z.p + d(n_)};
+      if (++growths > 2 || !residual(next, Ft)) return c;
+    }
+    z = std::move(next);
+    F = Ft;
+    if (metric_.norm(metric_.difference(z, predictor)) > 4 * std::abs(ds)) return c;
+  }
+  c.z = std::move(z);
+  return c;
+}
+
+// True when z lies on one of the last 20 segments of the path already traced
+// (within 2 % of the step: a corrector that went back lands on the path, up to the
+// chords' sagitta, about 1.5 % of a step at the aimed turn; the far side of a hairpin
+// corner, which the scaled metric makes of a sharp corner, keeps a few percent away).
+bool Tracer::onTracedPath(const Point& z, double ds) const {
+  const auto& pts = branch_.points;
+  const std::size_t n = pts.size();
+  for (std::size_t i = n > 21 ? n - 21 : 0; i + 1 < n; ++i) {
+    const Point a{pts[i].x, pts[i].parameter}, b{pts[i + 1].x, pts[i + 1].parameter};
+    const Point ab = metric_.difference(b, a), az = metric_.difference(z, a);
+    const double L2 = metric_.dot(ab, ab);
+    const double s = L2 > 0 ? std::clamp(metric_.dot(az, ab) / L2, 0.0, 1.0) : 0.0;
+    const Point q{a.x + s * ab.x, a.p + s * ab.p};
+    const bool atStart = i + 2 == n && s == 1.0;  // the last point itself: a step from it, not back
+    if (!atStart && metric_.norm(metric_.difference(z, q)) < 0.02 * ds) return true;
+  }
+  return false;
+}
+
+// When the measure has a local maximum at the second last point z0 (between its
+// neighbours), its top by parabolic interpolation (golden section where the parabola
+// leaves the bracket) in the arclength coordinate sigma = t0 . (z - z0), each trial
+// point solved on the hyperplane at sigma; the top is inserted in path order.
+void Tracer::refinePeak(const Point& t0) {
+  const std::size_t n = branch_.points.size();
+  if (!problem_.measure || n < 3) return;
+  const double ga = measures_[n - 3], g0 = measures_[n - 2], gb = measures_[n - 1];
+  if (!(g0 >= ga && g0 > gb)) return;
+  const Point z0{branch_.points[n - 2].x, branch_.points[n - 2].parameter};
+  auto sigmaOf = [&](std::size_t i) {
+    return metric_.dot(t0, metric_.difference(Point{branch_.points[i].x, branch_.points[i].parameter}, z0));
+  };
+  double a = sigmaOf(n - 3), b = sigmaOf(n - 1), m = 0, fa = ga, fb = gb, fm = g0;
+  if (!(a < 0 && b > 0)) return;
+  const double width = b - a;
+  Point best = z0;
+  for (int it = 0; it < 20 && b - a > 1e-5 * width; ++it) {
+    // The parabola's vertex through (a, fa), (m, fm), (b, fb).
+    const double p1 = (m - a) * (fm - fb), p2 = (m - b) * (fm - fa);
+    const double den = 2 * (p1 - p2);
+    double s = den != 0 ? m - ((m - a) * p1 - (m - b) * p2) / den : m;
+    const double tooClose = 1e-3 * (b - a);
+    if (!(s > a + tooClose && s < b - tooClose) || std::abs(s - m) < 1e-2 * tooClose)
+      s = m - a > b - m ? m - 0.381966 * (m - a) : m + 0.381966 * (b - m);
+    const Correction c = correct(Constraint::Plane, z0, t0, s);
+    if (!c.converged) break;
+    const double gs = problem_.measure(c.z.x);
+    if (gs > fm) {
+      (s > m ? a : b) = m;
+      (s > m ? fa : fb) = fm;
+      m = s, fm = gs, best = c.z;
+    } else {
+      (s > m ? b : a) = s;
+      (s > m ? fb : fa) = gs;
+    }
+  }
+  if (m == 0) return;
+  const auto at = branch_.points.begin() + long(m < 0 ? n - 2 : n - 1);
+  measures_.insert(measures_.begin() + (at - branch_.points.begin()), fm);
+  branch_.points.insert(at, BranchPoint{best.p, best.x});
+}
+
+// The last resort where no arclength step passes: Newton at a fixed parameter a
+// little beyond z0 in the direction p moves (1, 1/4, 4 times the last step's change
+// of p, at least 1e-4 of the range).
+bool Tracer::fixedParameterStep(const Point& z0, const Point& t0, Point& z1) {
+  const auto& pts = branch_.points;
+  double dp = pts.size() >= 2 ? std::abs(pts.back().parameter - pts[pts.size() - 2].parameter) : 0.0;
+  dp = std::max(dp, 1e-4 * metric_.sp);
+  const double sign = t0.p >= 0 ? 1.0 : -1.0;
+  for (double f : {1.0, 0.25, 4.0}) {
+    z1 = {z0.x, z0.p + sign * f * dp};  // from x0: the tangent is poor where the arclength steps failed
+    if (solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged &&
+        !onTracedPath(z1, metric_.norm(metric_.difference(z1, z0))))
+      return true;
+  }
+  return false;
+}
+
+// The unknowns' scale follows the solution (never below a tenth of the largest
+// seen, nor below the floor set at the start): steps are relative changes where the
+// response grows, and a response passing near zero does not make every corner
+// there a hairpin.
+void Tracer::rescale(const Point& z) {
+  const double norm = z.x.norm();
+  largestNorm_ = std::max(largestNorm_, norm);
+  metric_.sx = std::max({norm, 0.1 * largestNorm_, sxFloor_});
+}
+
+// The branch left the range between `inside` and `outside`: its point at p, by
+// Newton at that p from the interpolation between the two.
+void Tracer::endAt(double p, const Point& inside, const Point& outside) {
+  const double s = (p - inside.p) / (outside.p - inside.p);
+  Eigen::VectorXd x = inside.x + s * (outside.x - inside.x);
+  if (solveNewton(problem_, x, p, o_.tolerance, 30).converged) append({std::move(x), p});
+}
+
+void Tracer::progress() {
+  if (sinceLog_.seconds() < 10) return;
+  const auto& s = branch_.statistics;
+  std::ostringstream msg;
+  msg << "continuation: " << branch_.points.size() << " points, parameter " << branch_.points.back().parameter << ", "
+      << total_.seconds() << " s; " << s.newtonIterations << " Newton iterations, " << s.rejectedSteps
+      << " steps cut";
+  log::info(msg.str());
+  sinceLog_.restart();
+}
+
+void Tracer::run(const Eigen::VectorXd& guess) {
+  Point z{guess, o_.from};
+  const auto start = solveNewton(problem_, z.x, o_.from, o_.tolerance, 100);
+  if (!start.converged) {
+    branch_.stopReason = noConvergedStart(start, o_.tolerance);
+    return;
+  }
+  const double dir = o_.to >= o_.from ? 1.0 : -1.0;
+  metric_.sp = std::abs(o_.to - o_.from);
+  if (!(metric_.sp > 0)) {
+    append(z);
+    branch_.finished = true;
+    branch_.stopReason = "the range is a single point";
+    return;
+  }
+  // The first tangent: dp = dir, J dx = -dF/dp dp; the unknowns' floor scale from it
+  // (the change of x over the range at the start's slope), for a start from rest.
+  Point t;
+  {
+    metric_.sx = std::max(z.x.norm(), 1e-300);
+    Eigen::VectorXd F;
+    Eigen::MatrixXd A;
+    if (!residual(z, F) || !jacobian(z, F, A)) {
+      branch_.stopReason = "the residual or Jacobian failed at the start of the range";
+      return;
+    }
+    A.bottomRows(1).setZero();
+    A(n_, n_) = 1;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    factor(A, lu);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
+    rhs(n_) = dir;
+    const Eigen::VectorXd v = lu.solve(rhs);
+    if (!v.allFinite()) {
+      branch_.stopReason = "singular Jacobian at the start of the range";
+      return;
+    }
+    sxFloor_ = std::max(1e-3 * v.head(n_).norm() * metric_.sp, 1e-300);
+    rescale(z);
+    t = {v.head(n_), v(n_)};
+    const double norm = metric_.norm(t);
+    t.x /= norm, t.p /= norm;
+  }
+  append(z);
+  double ds = std::clamp(o_.initialStep, o_.minStep, o_.maxStep);
+  const double cornerStep = std::max(16 * o_.minStep, 1e-3);
+  while (true) {
+    if (int(branch_.points.size()) >= o_.maxSteps) {
+      branch_.stopReason = "the largest number of points (max_points " + std::to_string(o_.maxSteps) +
+                           ") was reached at p = " + std::to_string(z.p) + " (the branch so far is kept)";
+      break;
+    }
+    progress();
+    // A step whose predictor passes the range's end: the end itself, by Newton there.
+    const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
+    if ((predictor.p - o_.to) * dir > 0) {
+      const std::size_t before = branch_.points.size();
+      endAt(o_.to, z, predictor);
+      if (branch_.points.size() > before) {
+        branch_.finished = true;
+        branch_.stopReason = "end of the parameter range reached";
+        break;
+      }
+    }
+    // Plane, then sphere. A converged point is taken unless it lies back on the path
+    // or too far away; a tangent turned by more than 60 degrees refuses it unless the
+    // step is already down to a corner's size.
+    bool taken = false, cutHard = false;
+    Correction c;
+    Point t1;
+    double cosTurn = 1;
+    for (Constraint kind : {Constraint::Plane, Constraint::Sphere}) {
+      c = correct(kind, z, t, ds);
+      if (!c.converged) continue;
+      const Point chord = metric_.difference(c.z, z);
+      const double length = metric_.norm(chord);
+      if (length > 3 * ds || onTracedPath(c.z, ds)) continue;
+      if (!(c.factored && tangentFrom(c.lu, chord, t1)) && !freshTangent(c.z, chord, t1)) continue;
+      // The turn in the metric of the step (the scale is updated after it).
+      cosTurn = std::clamp(metric_.dot(t, t1), -1.0, 1.0);
+      if (cosTurn < 0.5 && ds > cornerStep) {
+        cutHard = true;
+        break;
+      }
+      taken = true;
+      if (kind == Constraint::Sphere) ++stats().sphericalSteps;
+      break;
+    }
+    if (!taken) {
+      ++stats().rejectedSteps;
+      ds /= cutHard ? 4 : 2;
+      if (ds >= o_.minStep) continue;
+      Point z1;
+      if (fixedParameterStep(z, t, z1)) {
+        const Point chord = metric_.difference(z1, z);
+        if (freshTangent(z1, chord, t1)) {
+          log::info("continuation: no arclength step passes p = " + std::to_string(z.p) +
+                    "; stepped over at a fixed parameter to p = " + std::to_string(z1.p));
+          append(z1);
+          z = std::move(z1);
+          rescale(z);
+          const double norm = metric_.norm(t1);  // unit in the updated metric
+          t = {t1.x / norm, t1.p / norm};
+          ds = cornerStep;
+          continue;
+        }
+      }
+      std::ostringstream why;
+      why << "no step passes p = " << z.p << ": the arclength correctors (plane and sphere) failed down to the "
+          << "smallest step " << o_.minStep << ", and so did Newton at a fixed parameter beyond it (the branch so "
+          << "far is kept)";
+      branch_.stopReason = why.str();
+      break;
+    }
+    // Taken: the next step from the corrector's effort and the turn.
+    const Point previous = z;
+    z = std::move(c.z);
+    append(z);
+    refinePeak(t);  // a maximum of the measure at the point before, whose tangent t is
+    rescale(z);
+    const double tnorm = metric_.norm(t1);
+    t1.x /= tnorm, t1.p /= tnorm;
+    t = std::move(t1);
+    const double turn = std::acos(cosTurn);
+    const double byNewton = std::clamp(4.0 / std::max(c.iterations, 1), 0.5, 2.0);
+    const double byTurn = std::clamp(o_.turnAngle / std::max(turn, 1e-12), 0.25, 2.0);
+    ds = std::clamp(ds * std::min(byNewton, byTurn), o_.minStep, o_.maxStep);
+    // Out of the range: the end reached, or the start passed on the way back.
+    if ((z.p - o_.to) * dir >= 0) {
+      branch_.points.pop_back();
+      endAt(o_.to, previous, z);
+      branch_.finished = true;
+      branch_.stopReason = "end of the parameter range reached";
+      break;
+    }
+    if ((z.p - o_.from) * dir < 0) {
+      branch_.points.pop_back();
+      endAt(o_.from, previous, z);
+      double reached = o_.from;
+      for (const auto& pt : branch_.points) reached = dir > 0 ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+      branch_.returnedToStart = true;
+      branch_.reached = reached;
+      std::ostringstream why;
+      why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << o_.from
+          << "): " << reached << " .. " << o_.to << " not traced (the branch so far is kept)";
+      branch_.stopReason = why.str();
+      break;
+    }
+  }
+  stats().seconds = total_.seconds();
+  const auto& s = stats();
+  std::ostringstream msg;
+  msg << "continuation: " << branch_.points.size() << " points, " << s.newtonIterations << " Newton iterations ("
+      << s.rejectedSteps << " steps cut, " << s.sphericalSteps << " spherical), " << s.seconds << " s: residuals "
+      << s.residualSeconds << " s (" << s.residuals << "), Jacobians " << s.jacobianSeconds << " s (" << s.jacobians
+      << "), factorisations " << s.factorSeconds << " s (" << s.factorizations << ")";
+  log::info(msg.str());
+}
+
+}  // namespace
+
+Branch traceBranchWithPredictorCorrector(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
+                                         const ContinuationOptions& o) {
+  Branch branch;
+  Tracer(problem, o, branch).run(guess);
+  return branch;
+}
+
+}  // namespace cyclone::continuation
