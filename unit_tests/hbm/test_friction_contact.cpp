@@ -49,6 +49,21 @@ double jacobianError(const NonlinearElement& e, const Aft& aft, const Eigen::Mat
   return (J - fd).cwiseAbs().maxCoeff() / J.cwiseAbs().maxCoeff();
 }
 
+// The one-step law marched from the relaxed state over `periods` periods of the
+// motion W; the last period's force samples.
+Eigen::MatrixXd marchedForceSamples(const FrictionContact& contact, const Aft& aft, const Eigen::MatrixXd& W,
+                                    int periods) {
+  const int d = int(W.cols());
+  Eigen::MatrixXd w(aft.numSamples(), d), f(aft.numSamples(), d);
+  for (int c = 0; c < d; ++c) w.col(c) = aft.toTime(Eigen::VectorXd(W.col(c)));
+  Eigen::VectorXd state = contact.initialState(), none;
+  Eigen::MatrixXd dfdw, dfdv;
+  for (int period = 0; period < periods; ++period)
+    for (int i = 0; i < aft.numSamples(); ++i)
+      f.row(i) = contact.incremental(w.row(i).transpose(), none, state, dfdw, dfdv).transpose();
+  return f;
+}
+
 }  // namespace
 
 // Constant normal load (kn = 0): the tangential part is the Jenkins element;
@@ -173,15 +188,38 @@ TEST(FrictionContact, IncrementalLawMatchesThePeriodicMarch) {
   W(aft.harmonics().sinIndex(1), 1) = 0.6;
   W(aft.harmonics().cosIndex(2), 2) = 0.3;
   const Eigen::MatrixXd F = force(contact, aft, W);
-  Eigen::MatrixXd w(aft.numSamples(), 3), f(aft.numSamples(), 3);
-  for (int c = 0; c < 3; ++c) w.col(c) = aft.toTime(Eigen::VectorXd(W.col(c)));
-  Eigen::VectorXd state = contact.initialState(), none;
-  Eigen::MatrixXd dfdw, dfdv;
-  for (int period = 0; period < 10; ++period)
-    for (int i = 0; i < aft.numSamples(); ++i)
-      f.row(i) = contact.incremental(w.row(i).transpose(), none, state, dfdw, dfdv).transpose();
+  const Eigen::MatrixXd f = marchedForceSamples(contact, aft, W, 10);
   for (int c = 0; c < 3; ++c)
     EXPECT_LT((aft.toFrequency(Eigen::VectorXd(f.col(c))) - F.col(c)).norm(), 1e-10 * F.norm()) << c;
+}
+
+// Just past the onset of slip a 3D slider drifts to its periodic state by a
+// factor of about 1 - 2 eps per period (here eps = 1e-3: a tangential ellipse
+// whose half-axis exceeds the slip radius by 0.1 %, offset sideways), so a march
+// of a few hundred periods stops far from it. The harmonic force must still be
+// the periodic one: the one-step law marched for 20 000 periods (to e^-40) is the
+// reference, and the Jacobian must match finite differences there.
+TEST(FrictionContact, SlowlySettlingSlipIsThePeriodicState) {
+  const double kt = 10.0, mu = 0.4, N0 = 5.0, r = mu * N0 / kt, eps = 1e-3;
+  const FrictionContact contact(params(2, kt, 0.0, mu, N0));
+  const Aft aft(HarmonicSet::upTo(3), 256);
+  const int nc = aft.numCoefficients();
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, 3);
+  W(aft.harmonics().cosIndex(1), 0) = r * (1 + eps);
+  W(aft.harmonics().sinIndex(1), 1) = 0.25 * r;
+  W(aft.harmonics().cosIndex(0), 1) = 0.5 * r;
+  Timer timer;
+  const Eigen::MatrixXd F = force(contact, aft, W);
+  const double seconds = timer.seconds();
+  const Eigen::MatrixXd f = marchedForceSamples(contact, aft, W, 20000);
+  double err = 0;
+  for (int c = 0; c < 2; ++c)
+    err = std::max(err, (aft.toFrequency(Eigen::VectorXd(f.col(c))) - F.col(c)).norm() / (mu * N0));
+  const double jac = jacobianError(contact, aft, W);
+  std::printf("slip onset + 0.1 %%: force against 20 000 marched periods %.2e (%.4f s), Jacobian vs FD %.2e\n", err,
+              seconds, jac);
+  EXPECT_LT(err, 1e-10);
+  EXPECT_LT(jac, 1e-6);
 }
 
 TEST(FrictionContact, BadParametersAreNamed) {

@@ -158,40 +158,82 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   const Eigen::MatrixXd& E = aft.timeFromCoefficients();
   const Eigen::MatrixXd& P = aft.coefficientsFromTime();
   const int m = nc * d;  // sensitivities with respect to vec(W)
-  Eigen::MatrixXd dwt, dz, df;
+  Eigen::MatrixXd dwt, df;
   Eigen::RowVectorXd dn;
-  StepSensitivity sens{&dwt, &dn, &dz, &df};
-  if (jacobian) {
-    dwt.setZero(dt, m), dz.setZero(dt, m), df.setZero(d, m), dn.setZero(m);
-    jacobian->setZero(m, m);
-  }
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(dt), fi(d), wt(dt);
-  double scale = p_.mu * std::abs(p_.preload) / p_.kt;
-  for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
-  auto march = [&](bool record) {
+  // One period from the slider state z (updated). With dz, the sensitivities are
+  // carried through it: its first wCols columns d/dvec(W) (0 or m), the others
+  // d/d(the period's starting slider).
+  auto period = [&](Eigen::VectorXd& z, Eigen::MatrixXd* dz, int wCols, bool record) {
+    StepSensitivity sens{&dwt, &dn, dz, &df};
+    if (dz) dwt.setZero(dt, dz->cols()), dn.setZero(dz->cols()), df.setZero(d, dz->cols());
+    Eigen::VectorXd fi(d), wt(dt);
     for (int i = 0; i < N; ++i) {
       wt = w.row(i).head(dt).transpose();
-      if (jacobian) {
+      if (dz && wCols > 0) {
         for (int c = 0; c < dt; ++c) dwt.block(c, c * nc, 1, nc) = E.row(i);
         dn.segment(dt * nc, nc) = E.row(i);
       }
-      contactStep(p_, wt, w(i, dt), z, fi, jacobian ? &sens : nullptr);
+      contactStep(p_, wt, w(i, dt), z, fi, dz ? &sens : nullptr);
       if (!record) continue;
       f.row(i) = fi.transpose();
       if (jacobian)
-        for (int c = 0; c < d; ++c) jacobian->middleRows(c * nc, nc).noalias() += P.col(i) * df.row(c);
+        for (int c = 0; c < d; ++c) jacobian->middleRows(c * nc, nc).noalias() += P.col(i) * df.row(c).head(m);
     }
   };
-  // Settle the hysteresis loop: repeat periods until the slider's state at the
-  // period's end repeats (one or two suffice for 1D slip; circular slip in 3D
-  // converges geometrically), then record one period.
-  const int maxPeriods = 200;
-  for (int period = 0; period < maxPeriods; ++period) {
+  double scale = p_.mu * std::abs(p_.preload) / p_.kt;
+  for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
+  const double settled = 1e-14 * std::max(scale, 1e-300);
+  // Settle the hysteresis loop: the slider's state at the period's start must be
+  // the one it returns to. Marching periods reaches it in one or two for 1D slip
+  // or an opening contact; circular slip in 3D contracts only geometrically, and
+  // near the onset of slip by a factor close to one per period, so a march of a
+  // bounded count would leave a state off the periodic one, a residual that jumps
+  // from point to point and Newton that cannot converge. There the fixed point
+  // of the period map z -> Phi(z) is found by Newton on its two unknowns, and the
+  // Jacobian's slider sensitivity by the implicit-function theorem:
+  // dz*/dW = (I - dPhi/dz)^-1 dPhi/dW.
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(dt);
+  Eigen::MatrixXd dz;
+  if (jacobian) dz.setZero(dt, m), jacobian->setZero(m, m);
+  const int marchedPeriods = 3;
+  bool periodic = false;
+  for (int k = 0; k < marchedPeriods && !periodic; ++k) {
     const Eigen::VectorXd start = z;
-    march(false);
-    if ((z - start).norm() <= 1e-14 * std::max(scale, 1e-300)) break;
+    period(z, jacobian ? &dz : nullptr, m, false);
+    periodic = (z - start).norm() <= settled;
   }
-  march(true);
+  if (!periodic) {
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dt, dt);
+    Eigen::MatrixXd dPhi(dt, dt);
+    for (int iteration = 0; iteration < 50 && !periodic; ++iteration) {
+      Eigen::VectorXd image = z;
+      dPhi.setIdentity();
+      period(image, &dPhi, 0, false);
+      const Eigen::VectorXd r = image - z;
+      if (r.norm() <= settled) {
+        z = image, periodic = true;
+        break;
+      }
+      // Newton's step where it lowers the mismatch, else the march's own step.
+      const Eigen::VectorXd trial = z + (I - dPhi).fullPivLu().solve(r);
+      Eigen::VectorXd trialImage = trial;
+      if (trial.allFinite()) period(trialImage, nullptr, 0, false);
+      z = trial.allFinite() && (trialImage - trial).norm() < r.norm() ? trial : image;
+    }
+    if (jacobian) {
+      Eigen::MatrixXd sensitivity = Eigen::MatrixXd::Zero(dt, m + dt);
+      sensitivity.rightCols(dt).setIdentity();
+      Eigen::VectorXd image = z;
+      period(image, &sensitivity, m, false);
+      const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - sensitivity.rightCols(dt));
+      dz = lu.solve(sensitivity.leftCols(m));
+      if (!lu.isInvertible() || !dz.allFinite()) {  // a neutral direction: march the sensitivity
+        dz.setZero(dt, m);
+        for (int k = 0; k < 200; ++k) period(image = z, &dz, m, false);
+      }
+    }
+  }
+  period(z, jacobian ? &dz : nullptr, m, true);
 }
 
 Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,
