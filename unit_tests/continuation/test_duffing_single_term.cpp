@@ -82,6 +82,21 @@ TEST(ArclengthContinuation, DuffingSingleTermThroughBothFolds) {
 // A branch that folds back and runs out at the bound it started from has not
 // traced the rest of the range: p = x (2 - x) from p = 0 rises to its fold at
 // p = 1 (x = 1) and returns to p = 0 (x = 2); the range asked for is 0..2.
+namespace {
+
+// The two path-shape tests below: p from 0 to 2, first step 0.01, steps up to 0.05.
+continuation::ContinuationOptions overZeroToTwo(continuation::ContinuationOptions::Engine engine) {
+  continuation::ContinuationOptions o;
+  o.engine = engine;
+  o.from = 0;
+  o.to = 2;
+  o.initialStep = 0.01;
+  o.maxStep = 0.05;
+  return o;
+}
+
+}  // namespace
+
 TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
   continuation::ContinuationProblem fold;
   fold.size = 1;
@@ -96,12 +111,7 @@ TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
   using Engine = continuation::ContinuationOptions::Engine;
   for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
     SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
-    continuation::ContinuationOptions o;
-    o.engine = engine;
-    o.from = 0;
-    o.to = 2;
-    o.initialStep = 0.01;
-    o.maxStep = 0.05;
+    continuation::ContinuationOptions o = overZeroToTwo(engine);
     const auto branch = continuation::traceBranch(fold, Eigen::VectorXd::Zero(1), o);
     EXPECT_FALSE(branch.finished);
     EXPECT_NE(branch.stopReason.find("returned to the start of the range"), std::string::npos) << branch.stopReason;
@@ -133,12 +143,7 @@ TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassed) {
   using Engine = continuation::ContinuationOptions::Engine;
   for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
     SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
-    continuation::ContinuationOptions o;
-    o.engine = engine;
-    o.from = 0;
-    o.to = 2;
-    o.initialStep = 0.01;
-    o.maxStep = 0.05;
+    continuation::ContinuationOptions o = overZeroToTwo(engine);
     o.stopWhereItTurnsBack = true;
     const auto branch = continuation::traceBranch(corner, Eigen::VectorXd::Constant(1, -3.0), o);
     EXPECT_TRUE(branch.finished) << branch.stopReason;

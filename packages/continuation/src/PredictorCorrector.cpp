@@ -55,33 +55,36 @@ public:
   void run(const Eigen::VectorXd& guess);
 
 private:
-  bool residual(const Point& z, Eigen::VectorXd& F) {
+  // A problem's evaluation, timed into `seconds`: false where it throws or is not finite
+  // (the step is then cut, as for a failed corrector).
+  template <class Evaluate>
+  static bool guarded(double& seconds, Evaluate&& evaluate) {
     Timer t;
-    ++stats().residuals;
-    bool ok = true;
+    bool ok = false;
     try {
-      problem_.residual(z.x, z.p, F);
-      ok = F.allFinite();
+      ok = evaluate();
     } catch (...) {
       ok = false;
     }
-    stats().residualSeconds += t.seconds();
+    seconds += t.seconds();
     return ok;
+  }
+  bool residual(const Point& z, Eigen::VectorXd& F) {
+    ++stats().residuals;
+    return guarded(stats().residualSeconds, [&] {
+      problem_.residual(z.x, z.p, F);
+      return F.allFinite();
+    });
   }
   // [J, dF/dp] at z (dF/dp by a forward difference from F = F(z)).
   bool jacobian(const Point& z, const Eigen::VectorXd& F, Eigen::MatrixXd& A) {
-    Timer t;
     ++stats().jacobians;
     Eigen::MatrixXd J;
-    bool ok = true;
-    try {
-      problem_.jacobian(z.x, z.p, J);
-      ok = J.allFinite();
-    } catch (...) {
-      ok = false;
-    }
-    stats().jacobianSeconds += t.seconds();
-    if (!ok) return false;
+    if (!guarded(stats().jacobianSeconds, [&] {
+          problem_.jacobian(z.x, z.p, J);
+          return J.allFinite();
+        }))
+      return false;
     const double eps = 1.5e-8 * std::max(std::abs(z.p), metric_.sp);
     Eigen::VectorXd Fe;
     if (!residual({z.x, z.p + eps}, Fe)) return false;
