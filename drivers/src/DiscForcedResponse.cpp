@@ -6,6 +6,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/hbm/CondensedSystem.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
@@ -26,6 +27,45 @@ int retainedIndex(const DiscReducedModels& models, mesh::Index node, const std::
     throw InputError("reduced_model/retained_node_sets", "does not retain node set '" + set +
                                                              "', which the forced response uses: add it");
   return int(it - models.retainedNodes.begin());
+}
+
+// Petrov's condensed unknowns (hbm/CondensedSystem.hpp): each contact's relative
+// displacement and the excited and output DOFs instead of every retained DOF. The
+// same solutions; half the unknowns of the default disc, an 8 times cheaper
+// factorisation per Newton step. Where the coordinates are not independent (an
+// output node on a contact face) the full system stays, and the log says so.
+void condenseOntoContacts(ForcedResponseSetup& setup) {
+  const auto& full = *setup.system;
+  const int n = full.numDofs(), nc = full.numCoefficients();
+  std::vector<int> kept;
+  for (int dof = 0; dof < n; ++dof)
+    if (full.excitation().segment(dof * nc, nc).squaredNorm() > 0 || full.staticLoad().segment(dof * nc, nc).squaredNorm() > 0)
+      kept.push_back(dof);
+  for (int dof : setup.outputDofs)
+    if (std::find(kept.begin(), kept.end(), dof) == kept.end()) kept.push_back(dof);
+  hbm::CondensedSystem condensed;
+  try {
+    condensed = hbm::condenseOntoElements(full, kept);
+  } catch (const InputError& e) {
+    log::info(std::string("forced response: the full retained DOFs are solved (") + e.what() + ")");
+    return;
+  }
+  std::vector<std::string> names;
+  for (int dof : condensed.keptDofs) names.push_back(setup.dofNames[std::size_t(dof)]);
+  const char* axis[] = {"t1", "t2", "n"};
+  for (std::size_t e = 0; e < full.elements().size(); ++e) {
+    const int d = int(full.elements()[e].W.cols());
+    for (int k = 0; k < d; ++k)
+      names.push_back(setup.elementNames[e] + std::to_string(e) + "_" + axis[3 - d + k]);
+  }
+  for (int& dof : setup.outputDofs)
+    dof = int(std::find(condensed.keptDofs.begin(), condensed.keptDofs.end(), dof) - condensed.keptDofs.begin());
+  std::ostringstream msg;
+  msg << "forced response: condensed onto the contacts' relative displacements and the excited and output DOFs, "
+      << condensed.system->numDofs() << " coordinates for " << n << " retained DOFs";
+  log::info(msg.str());
+  setup.dofNames = std::move(names);
+  setup.system = std::move(condensed.system);
 }
 
 }  // namespace
@@ -176,11 +216,27 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
       for (int c = 0; c < 3; ++c)
         if (c != c0) setup.outputDofs.push_back(3 * i + c);
     }
+  if (spec.condensed) condenseOntoContacts(setup);
   setup.parameter = ForcedResponseSetup::Parameter::Omega;
   setup.omegaUnit = 2 * M_PI * referenceHz;
   setup.unknownScale = 0;  // displacements of ~1e-3 mm: scaled to order one for the arclength
   setup.stability = "auto";  // the scene's disc_response/stability
+  setup.continuation = discContinuationOptions();
   return setup;
+}
+
+continuation::ContinuationOptions discContinuationOptions(continuation::ContinuationOptions::Engine engine) {
+  continuation::ContinuationOptions opt;
+  opt.engine = engine;
+  opt.maxSteps = 2000, opt.tolerance = 1e-8;
+  if (engine == continuation::ContinuationOptions::Engine::PredictorCorrector) {
+    opt.initialStep = 0.01, opt.maxStep = 0.2, opt.minStep = 1e-6;
+  } else {
+    opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7;
+    opt.arcLengthScaling = false;     // the unknowns are scaled to order one (unknownScale)
+    opt.stopWhereItTurnsBack = true;  // never a false "range finished" after walking back from a kink
+  }
+  return opt;
 }
 
 ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReducedModels& models, int family) {

@@ -382,12 +382,13 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   if (stability != "auto" && stability != "true" && stability != "false")
     throw InputError(d.where("stability"), "must be auto, true or false");
   auto cs = d.section("continuation");
-  continuation::ContinuationOptions opt;
-  opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7, opt.maxSteps = 2000;  // defaults
-  readContinuationSteps(cs, opt);
-  opt.arcLengthScaling = false;  // loca: the unknowns are scaled to order one (makeDiscForcedResponse)
-  opt.stopWhereItTurnsBack = true;  // loca: never a false "range finished" after walking back from a kink
-  opt.tolerance = cs.getDouble("tolerance", 1e-8);
+  // The engine's own defaults for the disc (discContinuationOptions), then the scene's keys.
+  using Engine = continuation::ContinuationOptions::Engine;
+  continuation::ContinuationOptions opt =
+      discContinuationOptions(cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca
+                                                                                    : Engine::PredictorCorrector);
+  readContinuationSteps(cs, opt, "predictor_corrector");
+  opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
   cs.rejectUnknownKeys();
 
   // The reference system: the range from its resonance estimate unless given.

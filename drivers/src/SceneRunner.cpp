@@ -346,9 +346,9 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 // balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
 }  // namespace
 
-void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt) {
+void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt, const std::string& defaultEngine) {
   using Options = continuation::ContinuationOptions;
-  const std::string engine = cs.getString("engine", "loca");
+  const std::string engine = cs.getString("engine", defaultEngine);
   if (engine == "predictor_corrector")
     opt.engine = Options::Engine::PredictorCorrector;
   else if (engine == "loca")

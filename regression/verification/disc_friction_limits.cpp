@@ -137,6 +137,7 @@ TEST(DiscFriction, LinearLimitsAndFrictionDampingBetweenThem) {
 
   // 1. Contacts that cannot slip: the stuck linear response, at three frequencies.
   auto stuckSpec = responseSpec({0, 1}, 1e5, 1e4, 1e4);
+  stuckSpec.condensed = false;  // parts 1 and 2 compare every retained DOF with the linear limits
   auto stuck = makeDiscForcedResponse(disc.mesh, disc.models, stuckSpec, 1.0);
   const auto estimate = estimateResonance(stuck, disc.models);
   std::printf("ND %d: free %.2f Hz, stuck %.2f Hz\n", estimate.nodalDiameter, estimate.freeHz, estimate.stuckHz);
@@ -163,6 +164,7 @@ TEST(DiscFriction, LinearLimitsAndFrictionDampingBetweenThem) {
   //    constant preload, a static pair of forces; harmonic 1 is the free (shroud open) response.
   auto freeSpec = responseSpec({0, 1}, 1.0, 0.0, 1e4);
   freeSpec.contact.mu = 0.0;
+  freeSpec.condensed = false;
   auto open = makeDiscForcedResponse(disc.mesh, disc.models, freeSpec, 1.0);
   for (double f : {0.8 * estimate.freeHz, estimate.freeHz, 2 * estimate.freeHz}) {
     const double w = 2 * M_PI * f;
@@ -188,15 +190,13 @@ TEST(DiscFriction, LinearLimitsAndFrictionDampingBetweenThem) {
     auto setup = makeDiscForcedResponse(disc.mesh, disc.models, spec, 0.9 * estimate.freeHz);
     setup.continuation.from = 1.0;
     setup.continuation.to = 1.1 * estimate.stuckHz / (0.9 * estimate.freeHz);
-    setup.continuation.initialStep = 0.002, setup.continuation.maxStep = 0.02, setup.continuation.minStep = 1e-7;
-    setup.continuation.tolerance = 1e-8, setup.continuation.arcLengthScaling = false;
     const auto branch = traceForcedResponse(setup);
     ASSERT_TRUE(branch.finished) << "preload " << preload << ": " << branch.stopReason;
-    const auto& hb = *setup.system;
-    const int nc = hb.numCoefficients();
+    const auto& hb = *setup.system;  // condensed (the product's default): its own index of the output DOF
+    const int nc = hb.numCoefficients(), out = setup.outputDofs.front();
     double peak = 0, peakHz = 0;
     for (const auto& pt : branch.points) {
-      const double m = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(dofOut * nc, nc)));
+      const double m = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(out * nc, nc)));
       if (m > peak) peak = m, peakHz = setup.apply(pt.parameter).first / (2 * M_PI);
     }
     const auto limits = linearLimits(disc.mesh, disc.models, spec, 2 * M_PI * peakHz);
@@ -252,6 +252,7 @@ TEST(DiscFriction, GapElementsBetweenTheirLimits) {
   const int pairs = int(disc.mesh.nodeSet(spec.contact.leftSet).size());
   spec.gap.pairs = {0, pairs - 1};
   spec.gap.kn = 1e4;
+  spec.condensed = false;  // every retained DOF against the linear limit
   Eigen::VectorXcd closedResponse, openResponse;
   for (double clearance : {-1.0, 1.0}) {
     spec.gap.clearance = clearance;

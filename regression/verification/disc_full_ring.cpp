@@ -42,6 +42,7 @@
 #include "cyclone/cyclic/FullRing.hpp"
 #include "cyclone/fe/Assembler.hpp"
 #include "cyclone/fe/DofMap.hpp"
+#include "cyclone/hbm/CondensedSystem.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/scenes/DiscForcedResponse.hpp"
@@ -297,6 +298,7 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
 
   // The resonances on the hybrid models: the shroud-free one and the stuck (linearised at
   // rest) peak by scenes::estimateResonance's scan and polish.
+  responseSpec.condensed = false;  // the probe's and the sector's solutions are read per retained DOF
   auto probe = scenes::makeDiscForcedResponse(mesh, hybrid, responseSpec);
   t.restart();
   const auto resonance = scenes::estimateResonance(probe, hybrid);
@@ -341,7 +343,9 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   const double f0 = 0.9 * resonance.freeHz, f1 = 1.1 * resonance.stuckHz;
   double peakHz = 0, peak = -1;
   {
-    auto hybridSetup = scenes::makeDiscForcedResponse(mesh, hybrid, responseSpec);
+    auto hybridSpec = responseSpec;
+    hybridSpec.condensed = true;  // the product's path: only the output DOF is read
+    auto hybridSetup = scenes::makeDiscForcedResponse(mesh, hybrid, hybridSpec);
     auto& hs = *hybridSetup.system;
     const auto problem = scenes::continuationProblem(hs, scenes::ForcedResponseSetup::Parameter::Omega);
     const int steps = 60;
@@ -374,6 +378,15 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   auto& sector = *setup.system;
   const auto sectorProblem = scenes::continuationProblem(sector, scenes::ForcedResponseSetup::Parameter::Omega);
   const int outDof = setup.outputDofs.front();
+  // The condensed sector (hbm/CondensedSystem.hpp: the contacts' relative displacements
+  // and the excited and output DOFs), its retained DOFs recovered from its forces.
+  std::vector<int> kept{outDof};
+  for (int r = 0; r < sector.numDofs(); ++r)
+    if (sector.excitation().segment(long(r) * nc, nc).squaredNorm() > 0) kept.push_back(r);
+  const auto condensed = hbm::condenseOntoElements(sector, kept);
+  const auto condensedProblem =
+      scenes::continuationProblem(*condensed.system, scenes::ForcedResponseSetup::Parameter::Omega);
+  std::printf("condensed sector: %d coordinates for %d retained DOFs\n", condensed.system->numDofs(), sector.numDofs());
 
   // The ring FE model.
   t.restart();
@@ -533,6 +546,21 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
     const double bound = 100 * (stepRing + stepSector + linear);
     EXPECT_LT(err, bound) << "at " << f << " Hz";
     worst = std::max(worst, err);
+    // The condensed sector, solved from its own start, against the ring and the full sector.
+    tf.restart();
+    Eigen::VectorXd Xq;
+    const auto rq = solveAt(*condensed.system, condensedProblem, w, tol, Xq);
+    EXPECT_TRUE(rq.converged) << "condensed sector Newton at " << f << " Hz (residual " << rq.residualNorm << ")";
+    if (!rq.converged) continue;
+    const Eigen::VectorXd Xqs = hbm::expandToAllDofs(sector, condensed, Xq, w);
+    const double errCondensed = (expand(Xqs) - Xr).norm() / Xr.norm(), errForms = (Xqs - Xs).norm() / Xs.norm();
+    const double stepCondensed = newtonStep(condensedProblem, Xq, w) / Xq.norm();
+    std::printf("  condensed sector (%d iterations, %.2f s): vs ring %.2e, vs full sector %.2e (its Newton-step estimate "
+                "%.1e)\n",
+                rq.iterations, tf.seconds(), errCondensed, errForms, stepCondensed);
+    EXPECT_LT(errCondensed, 100 * (stepRing + stepCondensed + linear)) << "at " << f << " Hz";
+    EXPECT_LT(errForms, 100 * (stepSector + stepCondensed + linear)) << "at " << f << " Hz";
+    worst = std::max(worst, errCondensed);
   }
   EXPECT_GT(slippingAtPeak, 0) << "no contact slips at the peak: the check would be linear";
   std::printf("worst ring vs sector difference %.2e; total %.1f s, peak memory %.2f GB\n", worst, total.seconds(),

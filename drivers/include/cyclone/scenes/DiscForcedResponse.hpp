@@ -48,6 +48,11 @@ struct DiscResponseSpec {
   ShroudGapSpec gap;
   DiscExcitationSpec excitation;
   std::vector<std::string> responseNodeSets{"mid_blade"};
+  /// Solve for the contacts' relative displacements and the excited and output DOFs
+  /// (Petrov's condensed form, hbm/CondensedSystem.hpp) instead of every retained DOF:
+  /// the same solutions, about half the unknowns. Off: the retained DOFs (the other
+  /// nodes' motion in the solution; the condensed form's reference in the tests).
+  bool condensed = true;
 };
 
 /// The contact frame [t1, t2, n] (columns) of the spec; InputError if the given one is not orthonormal.
@@ -61,6 +66,14 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
 /// omega by default, p = f / referenceHz.
 ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                            const DiscResponseSpec& spec, double referenceHz = 1.0);
+
+/// The continuation settings the FE disc's curves are traced with (library users get
+/// the scenes' defaults): the predictor-corrector by default, its steps in its scaled
+/// space (initial 0.01, max 0.2: measured on the default disc, 166 points for the whole
+/// H = 1 curve against 288 with 0.05), Newton to 1e-8; for LOCA its tuned units
+/// (initial 0.002, max 0.02, min 1e-7, its arclength rescaling off, a walk back stopped).
+continuation::ContinuationOptions discContinuationOptions(
+    continuation::ContinuationOptions::Engine engine = continuation::ContinuationOptions::Engine::PredictorCorrector);
 
 /// Where the engine order's resonance lies (Hz): the first natural frequency of its nodal
 /// diameter with the shroud free (`family` counted from 1) and the peak of the response

@@ -92,11 +92,12 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
 
-/// The continuation section's engine and step keys (engine: loca, the default, or
-/// predictor_corrector; initial_step, min_step, max_step, max_points, turn_angle; for
-/// loca line_search: full_step, backtrack or polynomial), defaults the values in
-/// `options` on entry; a value out of its domain is an InputError naming the key.
-void readContinuationSteps(SceneSection& continuationSection, continuation::ContinuationOptions& options);
+/// The continuation section's engine and step keys (engine: loca or predictor_corrector,
+/// `defaultEngine` when not given; initial_step, min_step, max_step, max_points,
+/// turn_angle; for loca line_search: full_step, backtrack or polynomial), defaults the
+/// values in `options` on entry; a value out of its domain is an InputError naming the key.
+void readContinuationSteps(SceneSection& continuationSection, continuation::ContinuationOptions& options,
+                           const std::string& defaultEngine = "loca");
 
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
