@@ -222,6 +222,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   setup.unknownScale = 0;  // displacements of ~1e-3 mm: scaled to order one for the arclength
   setup.stability = "auto";  // the scene's disc_response/stability
   setup.continuation = discContinuationOptions();
+  setup.fallback = discContinuationOptions(continuation::ContinuationOptions::Engine::Loca);
   return setup;
 }
 

@@ -387,6 +387,10 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   continuation::ContinuationOptions opt =
       discContinuationOptions(cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca
                                                                                     : Engine::PredictorCorrector);
+  // An engine the scene names is used alone; by default the other one retraces a curve
+  // the first leaves incomplete.
+  std::optional<continuation::ContinuationOptions> fallback;
+  if (!cs.has("engine")) fallback = discContinuationOptions(Engine::Loca);
   readContinuationSteps(cs, opt, "predictor_corrector");
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
   cs.rejectUnknownKeys();
@@ -436,6 +440,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : -1;
     s.continuation = opt;
     s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
+    s.fallback = fallback;
     const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);
     if (!result.branch.points.empty()) {
       const double peakHz = result.peakOmega / (2 * M_PI);

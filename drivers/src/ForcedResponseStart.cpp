@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
@@ -44,13 +45,23 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   r.maxStep = 0.2 * std::abs(scale);
   r.minStep = 1e-8 * std::abs(scale);
   r.maxSteps = 500;
-  const auto branch = continuation::traceBranch(ramp, Eigen::VectorXd::Zero(hb.numUnknowns()), r);
-  if (!branch.points.empty() && std::abs(branch.points.back().parameter - scale) <= 1e-9 * std::abs(scale) + 1e-12 &&
-      attempt(branch.points.back().x, "ramp of the excitation from rest (" + std::to_string(branch.points.size()) +
-                                          " points)"))
-    return start;
+  // Each engine in turn: the ramp can meet a stretch where the stuck contacts' static
+  // state drifts at an almost constant excitation (seen on a coarse 8-sector disc at
+  // 4 % of the load), which one engine's steps cross and the other's follow.
+  using Engine = continuation::ContinuationOptions::Engine;
+  std::string why;
+  for (Engine engine : {o.engine, o.engine == Engine::Loca ? Engine::PredictorCorrector : Engine::Loca}) {
+    r.engine = engine;
+    const auto branch = continuation::traceBranch(ramp, Eigen::VectorXd::Zero(hb.numUnknowns()), r);
+    const std::string name = engine == Engine::Loca ? "LOCA" : "predictor-corrector";
+    if (!branch.points.empty() && std::abs(branch.points.back().parameter - scale) <= 1e-9 * std::abs(scale) + 1e-12 &&
+        attempt(branch.points.back().x, "ramp of the excitation from rest (" + name + ", " +
+                                            std::to_string(branch.points.size()) + " points)"))
+      return start;
+    why += (why.empty() ? "" : "; ") + name + ": " + branch.stopReason;
+  }
   start.method = "no converged start: Newton from rest and from the linear solution stagnated, and the ramp of the "
-                 "excitation from rest stopped (" + branch.stopReason + ")";
+                 "excitation from rest stopped (" + why + ")";
   start.seconds = timer.seconds();
   return start;
 }
@@ -77,9 +88,8 @@ continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::Vect
   return branch;
 }
 
-}  // namespace
-
-continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+// Both sweeps with setup.continuation's engine.
+continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start) {
   if (start.x.size() == 0) {
     continuation::Branch branch;
     branch.stopReason = start.method;
@@ -126,6 +136,39 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
     branch.failedSteps += down.failedSteps;
   }
   branch.stopReason = why.str();
+  return branch;
+}
+
+const char* engineName(continuation::ContinuationOptions::Engine engine) {
+  return engine == continuation::ContinuationOptions::Engine::Loca ? "LOCA" : "the predictor-corrector";
+}
+
+}  // namespace
+
+// Where one engine leaves the curve incomplete, the other traces it again (the
+// engines fail in different places: the predictor-corrector where a stuck contact's
+// static state drifts at an almost constant frequency, LOCA at stick-slip kinks that
+// its corrector's plane misses); the complete curve, or else the first, is kept.
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+  auto branch = traceWithOneEngine(setup, start);
+  if (branch.finished || !setup.fallback) return branch;
+  const auto primary = setup.continuation;
+  continuation::ContinuationOptions other = *setup.fallback;
+  other.from = primary.from, other.to = primary.to, other.tolerance = primary.tolerance;
+  log::info(std::string("forced response: ") + engineName(primary.engine) + " left the curve incomplete (" +
+            branch.stopReason + "); traced again with " + engineName(other.engine));
+  setup.continuation = other;
+  const StartingPoint again = start.x.size() > 0 ? start : findStartingPoint(setup);
+  auto second = traceWithOneEngine(setup, again);
+  setup.continuation = primary;
+  setup.apply(primary.from);
+  if (second.finished) {
+    second.stopReason += std::string(" (traced by ") + engineName(other.engine) + " after " +
+                         engineName(primary.engine) + " left it incomplete: " + branch.stopReason + ")";
+    return second;
+  }
+  branch.stopReason += std::string("; ") + engineName(other.engine) + " did not complete it either (" +
+                       second.stopReason + ")";
   return branch;
 }
 

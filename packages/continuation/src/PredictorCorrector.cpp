@@ -11,6 +11,7 @@
 // tangent's turn. A step that goes back onto the path already traced is refused.
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -126,9 +127,21 @@ private:
   }
 
   Correction correct(Constraint kind, const Point& z0, const Point& t0, double ds);
-  void append(const Point& z) {
+  void append(const Point& z, const Point& tangent = {}) {
     branch_.points.push_back({z.p, z.x});
+    tangents_.push_back(tangent);
     measures_.push_back(problem_.measure ? problem_.measure(z.x) : 0.0);
+  }
+  void dropLast() {
+    branch_.points.pop_back();
+    measures_.pop_back();
+    tangents_.pop_back();
+  }
+  double lastSegmentLength() const {
+    const auto& pts = branch_.points;
+    if (pts.size() < 2) return 0;
+    return metric_.norm(
+        metric_.difference(Point{pts.back().x, pts.back().parameter}, Point{pts[pts.size() - 2].x, pts[pts.size() - 2].parameter}));
   }
   void refinePeak(const Point& t0);
   bool onTracedPath(const Point& z, double ds) const;
@@ -144,6 +157,9 @@ private:
   Metric metric_;
   double largestNorm_ = 0, sxFloor_ = 0;
   std::vector<double> measures_;  // problem_.measure at each point
+  static constexpr int kMaxRetractions = 200;  // a bound on retaken steps (each shortens the step)
+  int retractions_ = 0;
+  std::vector<Point> tangents_;   // the tangent along the path at each point (empty where not known)
   Timer total_, sinceLog_;
 };
 
@@ -218,21 +234,53 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
   return c;
 }
 
-// True when z lies on one of the last 20 segments of the path already traced
-// (within 2 % of the step: a corrector that went back lands on the path, up to the
-// chords' sagitta, about 1.5 % of a step at the aimed turn; the far side of a hairpin
-// corner, which the scaled metric makes of a sharp corner, keeps a few percent away).
+// True when z lies on the path already traced (within 2 % of the step: a corrector
+// that went back lands on the path, up to the chords' sagitta, about 1.5 % of a step
+// at the aimed turn; the far side of a hairpin corner, which the scaled metric makes
+// of a sharp corner, keeps a few percent away). Every segment is checked, not only
+// the last few, and as the cubic through its ends with their tangents, not as its
+// chord: after a stretch of tiny steps (a friction peak's stick-slip kinks) a
+// corrector can land back on a stretch that was crossed in long steps, whose chords
+// lie far from the path.
 bool Tracer::onTracedPath(const Point& z, double ds) const {
   const auto& pts = branch_.points;
   const std::size_t n = pts.size();
-  for (std::size_t i = n > 21 ? n - 21 : 0; i + 1 < n; ++i) {
+  const double reach = 0.02 * ds, reachP = reach * metric_.sp;  // |dp| / sp bounds the distance
+  constexpr int kPieces = 8;
+  std::array<Point, kPieces + 1> c;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
     const Point a{pts[i].x, pts[i].parameter}, b{pts[i + 1].x, pts[i + 1].parameter};
-    const Point ab = metric_.difference(b, a), az = metric_.difference(z, a);
-    const double L2 = metric_.dot(ab, ab);
-    const double s = L2 > 0 ? std::clamp(metric_.dot(az, ab) / L2, 0.0, 1.0) : 0.0;
-    const Point q{a.x + s * ab.x, a.p + s * ab.p};
-    const bool atStart = i + 2 == n && s == 1.0;  // the last point itself: a step from it, not back
-    if (!atStart && metric_.norm(metric_.difference(z, q)) < 0.02 * ds) return true;
+    const Point chord = metric_.difference(b, a);
+    const double L = metric_.norm(chord);
+    // The ends' tangents scaled to the chord's length (the chord where none is known).
+    auto scaled = [&](const Point& t) {
+      const double tn = t.x.size() == n_ ? metric_.norm(t) : 0.0;
+      return tn > 0 ? Point{t.x * (L / tn), t.p * (L / tn)} : chord;
+    };
+    const Point ta = scaled(tangents_[i]), tb = scaled(tangents_[i + 1]);
+    auto h = [](double s) {
+      return std::array<double, 4>{2 * s * s * s - 3 * s * s + 1, s * s * s - 2 * s * s + s, -2 * s * s * s + 3 * s * s,
+                                   s * s * s - s * s};
+    };
+    double pmin = std::min(a.p, b.p), pmax = std::max(a.p, b.p);
+    for (int k = 1; k < kPieces; ++k) {
+      const auto w = h(double(k) / kPieces);
+      const double pk = w[0] * a.p + w[1] * ta.p + w[2] * b.p + w[3] * tb.p;
+      pmin = std::min(pmin, pk), pmax = std::max(pmax, pk);
+    }
+    if (z.p < pmin - reachP || z.p > pmax + reachP) continue;
+    for (int k = 0; k <= kPieces; ++k) {
+      const auto w = h(double(k) / kPieces);
+      c[k] = {w[0] * a.x + w[1] * ta.x + w[2] * b.x + w[3] * tb.x, w[0] * a.p + w[1] * ta.p + w[2] * b.p + w[3] * tb.p};
+    }
+    for (int k = 0; k < kPieces; ++k) {
+      const Point ab = metric_.difference(c[k + 1], c[k]), az = metric_.difference(z, c[k]);
+      const double L2 = metric_.dot(ab, ab);
+      const double s = L2 > 0 ? std::clamp(metric_.dot(az, ab) / L2, 0.0, 1.0) : 0.0;
+      const Point q{c[k].x + s * ab.x, c[k].p + s * ab.p};
+      const bool atStart = i + 2 == n && k + 1 == kPieces && s == 1.0;  // the last point: a step from it, not back
+      if (!atStart && metric_.norm(metric_.difference(z, q)) < reach) return true;
+    }
   }
   return false;
 }
@@ -277,6 +325,7 @@ void Tracer::refinePeak(const Point& t0) {
   if (m == 0) return;
   const auto at = branch_.points.begin() + long(m < 0 ? n - 2 : n - 1);
   measures_.insert(measures_.begin() + (at - branch_.points.begin()), fm);
+  tangents_.insert(tangents_.begin() + (at - branch_.points.begin()), t0);
   branch_.points.insert(at, BranchPoint{best.p, best.x});
 }
 
@@ -369,7 +418,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     const double norm = metric_.norm(t);
     t.x /= norm, t.p /= norm;
   }
-  append(z);
+  append(z, t);
   double ds = std::clamp(o_.initialStep, o_.minStep, o_.maxStep);
   const double cornerStep = std::max(16 * o_.minStep, 1e-3);
   while (true) {
@@ -393,7 +442,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     // Plane, then sphere. A converged point is taken unless it lies back on the path
     // or too far away; a tangent turned by more than 60 degrees refuses it unless the
     // step is already down to a corner's size.
-    bool taken = false, cutHard = false;
+    bool taken = false, cutHard = false, retract = false;
     Correction c;
     Point t1;
     double cosTurn = 1;
@@ -406,6 +455,15 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       if (!(c.factored && tangentFrom(c.lu, chord, t1)) && !freshTangent(c.z, chord, t1)) continue;
       // The turn in the metric of the step (the scale is updated after it).
       cosTurn = std::clamp(metric_.dot(t, t1), -1.0, 1.0);
+      // A point behind the last one (a sphere's) or whose tangent reverses is a
+      // hairpin's far side only if the path just traced is resolved at this step's
+      // scale; after a long last step (which may have crossed a stretch of stick-slip
+      // kinks) it can be that step's own path, and the step is retaken shorter instead.
+      if ((metric_.dot(chord, t) < 0 || cosTurn < 0) && lastSegmentLength() > ds &&
+          retractions_ < kMaxRetractions) {
+        retract = true;
+        break;
+      }
       if (cosTurn < 0.5 && ds > cornerStep) {
         cutHard = true;
         break;
@@ -413,6 +471,18 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       taken = true;
       if (kind == Constraint::Sphere) ++stats().sphericalSteps;
       break;
+    }
+    if (retract) {
+      ++stats().rejectedSteps, ++retractions_;
+      ds = lastSegmentLength() / 4;
+      dropLast();
+      z = {branch_.points.back().x, branch_.points.back().parameter};
+      rescale(z);
+      const Point& tz = tangents_.back();
+      const double norm = tz.x.size() == n_ ? metric_.norm(tz) : 0.0;
+      if (norm > 0) t = {tz.x / norm, tz.p / norm};
+      ds = std::max(ds, o_.minStep);
+      continue;
     }
     if (!taken) {
       ++stats().rejectedSteps;
@@ -424,7 +494,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
         if (freshTangent(z1, chord, t1)) {
           log::info("continuation: no arclength step passes p = " + std::to_string(z.p) +
                     "; stepped over at a fixed parameter to p = " + std::to_string(z1.p));
-          append(z1);
+          append(z1, t1);
           z = std::move(z1);
           rescale(z);
           const double norm = metric_.norm(t1);  // unit in the updated metric
@@ -443,7 +513,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     // Taken: the next step from the corrector's effort and the turn.
     const Point previous = z;
     z = std::move(c.z);
-    append(z);
+    append(z, t1);
     refinePeak(t);  // a maximum of the measure at the point before, whose tangent t is
     rescale(z);
     const double tnorm = metric_.norm(t1);
@@ -452,17 +522,23 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     const double turn = std::acos(cosTurn);
     const double byNewton = std::clamp(4.0 / std::max(c.iterations, 1), 0.5, 2.0);
     const double byTurn = std::clamp(o_.turnAngle / std::max(turn, 1e-12), 0.25, 2.0);
-    ds = std::clamp(ds * std::min(byNewton, byTurn), o_.minStep, o_.maxStep);
+    // Below a corner's size the turn no longer shortens the step: a tangent that keeps
+    // turning as the step shrinks is a kink of the nonsmooth residual (a contact's
+    // stick-slip instant crossing a time sample), not a curvature to resolve, and a
+    // friction peak crosses thousands of them.
+    double next = ds * std::min(byNewton, byTurn);
+    if (byTurn < byNewton) next = std::max(next, std::min(ds * byNewton, cornerStep));
+    ds = std::clamp(next, o_.minStep, o_.maxStep);
     // Out of the range: the end reached, or the start passed on the way back.
     if ((z.p - o_.to) * dir >= 0) {
-      branch_.points.pop_back();
+      dropLast();
       endAt(o_.to, previous, z);
       branch_.finished = true;
       branch_.stopReason = "end of the parameter range reached";
       break;
     }
     if ((z.p - o_.from) * dir < 0) {
-      branch_.points.pop_back();
+      dropLast();
       endAt(o_.from, previous, z);
       double reached = o_.from;
       for (const auto& pt : branch_.points) reached = dir > 0 ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);

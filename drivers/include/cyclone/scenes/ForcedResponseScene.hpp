@@ -3,6 +3,7 @@
 // harmonics, samples, continuation, output) read into the objects that trace
 // it, so tests and codes can rebuild exactly the system a scene describes.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct ForcedResponseSetup {
   std::string elementParameter;  ///< ElementParameter: which of their parameters
   std::vector<std::shared_ptr<const hbm::NonlinearElement>> baseElements;  ///< ElementParameter: as the scene gives them
   continuation::ContinuationOptions continuation;
+  /// Where `continuation` leaves the curve incomplete, traceForcedResponse traces it
+  /// again with these options (another engine; the range and tolerance are continuation's).
+  std::optional<continuation::ContinuationOptions> fallback;
   std::vector<int> outputDofs;
   std::vector<std::string> dofNames;  ///< system: dof_names, or dof0, dof1, ...
   std::string stability = "auto";  ///< Hill's method per point: auto (small systems), true, false
