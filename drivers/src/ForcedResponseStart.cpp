@@ -18,6 +18,14 @@
 
 namespace cyclone::scenes {
 
+namespace {
+
+const char* engineName(continuation::ContinuationOptions::Engine engine) {
+  return engine == continuation::ContinuationOptions::Engine::Loca ? "LOCA" : "the predictor-corrector";
+}
+
+}  // namespace
+
 StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   const auto& hb = *setup.system;
   const auto& o = setup.continuation;
@@ -53,7 +61,7 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   for (Engine engine : {o.engine, o.engine == Engine::Loca ? Engine::PredictorCorrector : Engine::Loca}) {
     r.engine = engine;
     const auto branch = continuation::traceBranch(ramp, Eigen::VectorXd::Zero(hb.numUnknowns()), r);
-    const std::string name = engine == Engine::Loca ? "LOCA" : "predictor-corrector";
+    const std::string name = engineName(engine);
     if (!branch.points.empty() && std::abs(branch.points.back().parameter - scale) <= 1e-9 * std::abs(scale) + 1e-12 &&
         attempt(branch.points.back().x, "ramp of the excitation from rest (" + name + ", " +
                                             std::to_string(branch.points.size()) + " points)"))
@@ -137,10 +145,6 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
   }
   branch.stopReason = why.str();
   return branch;
-}
-
-const char* engineName(continuation::ContinuationOptions::Engine engine) {
-  return engine == continuation::ContinuationOptions::Engine::Loca ? "LOCA" : "the predictor-corrector";
 }
 
 }  // namespace

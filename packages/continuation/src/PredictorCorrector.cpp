@@ -159,6 +159,9 @@ private:
   std::vector<double> measures_;  // problem_.measure at each point
   static constexpr int kMaxRetractions = 200;  // a bound on retaken steps (each shortens the step)
   int retractions_ = 0;
+  // The last point a retraction may not drop: one a fixed-parameter step reached (from
+  // where the arclength steps had all failed, to which dropping it would return).
+  std::size_t anchor_ = 0;
   std::vector<Point> tangents_;   // the tangent along the path at each point (empty where not known)
   Timer total_, sinceLog_;
 };
@@ -182,6 +185,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
   Eigen::MatrixXd A;
   if (!residual(z, F)) return c;
   int growths = 0;
+  std::vector<double> history;  // ||F|| at each iteration
   const int maxIterations = std::min(o_.maxNewtonIterations, 12);
   for (; c.iterations <= maxIterations; ++c.iterations) {
     const double g = constraint(z);
@@ -199,6 +203,12 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
       break;
     }
     if (c.iterations == maxIterations) break;
+    // A run that has not halved ||F|| in three iterations has stalled: at a kink of the
+    // nonsmooth residual Newton cycles between the pieces' linearisations, and the
+    // remaining iterations (each a Jacobian) would be spent on the cycle; a shorter step
+    // is cheaper.
+    history.push_back(F.norm());
+    if (history.size() >= 4 && history.back() > 0.5 * *std::min_element(history.begin(), history.end() - 3)) break;
     ++stats().newtonIterations;
     if (!jacobian(z, F, A)) return c;
     if (kind == Constraint::Plane) {
@@ -324,6 +334,7 @@ void Tracer::refinePeak(const Point& t0) {
   }
   if (m == 0) return;
   const auto at = branch_.points.begin() + long(m < 0 ? n - 2 : n - 1);
+  if (std::size_t(at - branch_.points.begin()) <= anchor_) ++anchor_;
   measures_.insert(measures_.begin() + (at - branch_.points.begin()), fm);
   tangents_.insert(tangents_.begin() + (at - branch_.points.begin()), t0);
   branch_.points.insert(at, BranchPoint{best.p, best.x});
@@ -460,6 +471,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       // scale; after a long last step (which may have crossed a stretch of stick-slip
       // kinks) it can be that step's own path, and the step is retaken shorter instead.
       if ((metric_.dot(chord, t) < 0 || cosTurn < 0) && lastSegmentLength() > ds &&
+          branch_.points.size() > anchor_ + 1 &&
           retractions_ < kMaxRetractions) {
         retract = true;
         break;
@@ -495,6 +507,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
           log::info("continuation: no arclength step passes p = " + std::to_string(z.p) +
                     "; stepped over at a fixed parameter to p = " + std::to_string(z1.p));
           append(z1, t1);
+          anchor_ = branch_.points.size() - 1;
           z = std::move(z1);
           rescale(z);
           const double norm = metric_.norm(t1);  // unit in the updated metric
