@@ -341,18 +341,30 @@ void Tracer::refinePeak(const Point& t0) {
 }
 
 // The last resort where no arclength step passes: Newton at a fixed parameter a
-// little beyond z0 in the direction p moves (1, 1/4, 4 times the last step's change
-// of p, at least 1e-4 of the range).
+// little beyond z0 (1, 1/4, 4 times the last step's change of p, at least 1e-4 of the
+// range) in the direction the tangent points. Where the tangent points back, the
+// sweep's direction is tried first, but a point there is taken only close to z0 (the
+// same sheet of the path continued past the wall): the tangent at a point where every
+// arclength step failed is poor, and where it points back along a drift of the
+// unknowns (the mean tangential slip of all contacts, ill-conditioned against the
+// stuck ones) the steps back lead into the same wall (docs/decisions.md); a point
+// farther away is another branch across a fold, which must not be skipped.
 bool Tracer::fixedParameterStep(const Point& z0, const Point& t0, Point& z1) {
   const auto& pts = branch_.points;
   double dp = pts.size() >= 2 ? std::abs(pts.back().parameter - pts[pts.size() - 2].parameter) : 0.0;
   dp = std::max(dp, 1e-4 * metric_.sp);
-  const double sign = t0.p >= 0 ? 1.0 : -1.0;
-  for (double f : {1.0, 0.25, 4.0}) {
-    z1 = {z0.x, z0.p + sign * f * dp};  // from x0: the tangent is poor where the arclength steps failed
-    if (solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged &&
-        !onTracedPath(z1, metric_.norm(metric_.difference(z1, z0))))
-      return true;
+  const double sweep = o_.to >= o_.from ? 1.0 : -1.0, along = t0.p >= 0 ? 1.0 : -1.0;
+  constexpr double kNear = 0.01;  // in the step's metric: 1 % of the response, or of the range
+  for (double sign : {sweep, along}) {  // one pass where they agree (the break below)
+    const bool againstTangent = sign != along;
+    for (double f : {1.0, 0.25, 4.0}) {
+      z1 = {z0.x, z0.p + sign * f * dp};  // from x0: the tangent is poor where the arclength steps failed
+      if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged) continue;
+      const double distance = metric_.norm(metric_.difference(z1, z0));
+      if (againstTangent && distance > kNear) continue;
+      if (!onTracedPath(z1, distance)) return true;
+    }
+    if (sweep == along) break;
   }
   return false;
 }
