@@ -346,8 +346,8 @@ void Tracer::refinePeak(const Point& t0) {
 // sweep's direction is tried first, but a point there is taken only close to z0 (the
 // same sheet of the path continued past the wall): the tangent at a point where every
 // arclength step failed is poor, and where it points back along a drift of the
-// unknowns (the mean tangential slip of all contacts, ill-conditioned against the
-// stuck ones) the steps back lead into the same wall (docs/decisions.md); a point
+// unknowns (the contacts' mean tangential slip, at a square-root branch of the
+// residual) the steps back lead into the same wall (docs/decisions.md); a point
 // farther away is another branch across a fold, which must not be skipped.
 bool Tracer::fixedParameterStep(const Point& z0, const Point& t0, Point& z1) {
   const auto& pts = branch_.points;
