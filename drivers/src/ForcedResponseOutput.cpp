@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cyclone/continuation/HomotopySolve.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/continuation/PeakSearch.hpp"
 #include "cyclone/core/AtomicFile.hpp"
@@ -106,6 +107,22 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   return continuation::findLocalPeak(problem, X, hz, measure, o);
 }
 
+// The solution X of the level below, carried to `system` (one harmonic more, h), solved
+// at `hz`: Newton, or where it stalls the homotopy that switches the new harmonic's
+// equations on (HomotopySolve.hpp). X is updated in place.
+continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& system, Eigen::VectorXd& X, double hz,
+                                          double excitationScale, int h, double tolerance) {
+  const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
+  const auto& set = system.aft().harmonics();
+  const int nc = system.numCoefficients();
+  std::vector<int> added;
+  for (int d = 0; d < system.numDofs(); ++d) {
+    added.push_back(d * nc + set.cosIndex(h));
+    if (h > 0) added.push_back(d * nc + set.sinIndex(h));
+  }
+  return continuation::solveByHomotopy(byOmega, X, 2 * M_PI * hz, added, tolerance);
+}
+
 // One level of the harmonics check on a frequency curve.
 struct PeakLevel {
   int maxHarmonic = 0;
@@ -166,6 +183,14 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
     PeakLevel level;
     level.maxHarmonic = H;
     level.startHz = hz;
+    if (system != lower) {
+      const auto carried = solveCarried(*system, X, hz, scale, H, tolerance);
+      if (carried.byHomotopy)
+        log::info("harmonics check: H " + std::to_string(H) + " at " + std::to_string(hz) + " Hz " +
+                  (carried.newton.converged ? "solved by the homotopy from H " + std::to_string(H - 1) + " (" +
+                                                  std::to_string(carried.points) + " points)"
+                                            : "not solved: " + carried.reason));
+    }
     level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
     if (level.peak.x.size() == 0 && system != lower) {
       const auto [f, start] = flankStart(*lower, *system, lowerPoints, hz, scale, tolerance);

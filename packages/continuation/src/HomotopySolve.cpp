@@ -1,0 +1,65 @@
+#include "cyclone/continuation/HomotopySolve.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cyclone::continuation {
+
+HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::VectorXd& x, double p,
+                               const std::vector<int>& added, double tolerance) {
+  HomotopyResult result;
+  Eigen::VectorXd guess = x;
+  result.newton = solveNewton(problem, guess, p, tolerance, 30);
+  if (result.newton.converged) {
+    x = guess;
+    return result;
+  }
+  result.byHomotopy = true;
+  const Eigen::VectorXd x0 = x;
+  double c = 0;
+  {
+    Eigen::MatrixXd J;
+    problem.jacobian(x0, p, J);
+    for (int i : added) c += std::abs(J(i, i));
+    c = added.empty() || c == 0 ? 1.0 : c / double(added.size());
+  }
+  ContinuationProblem homotopy;
+  homotopy.size = problem.size;
+  homotopy.residual = [&problem, &added, x0, c, p](const Eigen::VectorXd& y, double s, Eigen::VectorXd& G) {
+    problem.residual(y, p, G);
+    for (int i : added) G(i) = s * G(i) + (1 - s) * c * (y(i) - x0(i));
+  };
+  homotopy.jacobian = [&problem, &added, c, p](const Eigen::VectorXd& y, double s, Eigen::MatrixXd& J) {
+    problem.jacobian(y, p, J);
+    for (int i : added) {
+      J.row(i) *= s;
+      J(i, i) += (1 - s) * c;
+    }
+  };
+  ContinuationOptions o;
+  o.engine = ContinuationOptions::Engine::PredictorCorrector;
+  o.from = 0, o.to = 1;
+  o.tolerance = tolerance;
+  o.initialStep = 0.05, o.maxStep = 0.2;
+  o.maxSteps = 120;  // a carried start is near: a longer path is another branch, not worth its LUs
+  const Branch path = traceBranch(homotopy, x0, o);
+  result.points = int(path.points.size());
+  if (path.points.empty()) {
+    result.reason = "the homotopy to the added equations did not start";
+    return result;
+  }
+  std::size_t far = 0;  // the point nearest s = 1 (a path that folds back still passed it)
+  for (std::size_t i = 0; i < path.points.size(); ++i)
+    if (path.points[i].parameter > path.points[far].parameter) far = i;
+  x = path.points[far].x;
+  result.newton = solveNewton(problem, x, p, tolerance, 30);
+  if (!result.newton.converged) {
+    std::ostringstream why;
+    why << "the homotopy to the added equations reached s = " << path.points[far].parameter << " of 1 ("
+        << (path.stopReason.empty() ? "no solution beyond" : path.stopReason) << ")";
+    result.reason = why.str();
+  }
+  return result;
+}
+
+}  // namespace cyclone::continuation
