@@ -183,15 +183,18 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
     PeakLevel level;
     level.maxHarmonic = H;
     level.startHz = hz;
+    bool started = true;  // X solves this level at hz (the search's own Newton would only repeat a failure)
     if (system != lower) {
       const auto carried = solveCarried(*system, X, hz, scale, H, tolerance);
+      started = carried.newton.converged;
       if (carried.byHomotopy)
         log::info("harmonics check: H " + std::to_string(H) + " at " + std::to_string(hz) + " Hz " +
-                  (carried.newton.converged ? "solved by the homotopy from H " + std::to_string(H - 1) + " (" +
-                                                  std::to_string(carried.points) + " points)"
-                                            : "not solved: " + carried.reason));
+                  (started ? "solved by the homotopy from H " + std::to_string(H - 1) + " (" +
+                                 std::to_string(carried.points) + " points)"
+                           : "not solved: " + carried.reason));
+      if (!started) level.peak.reason = "no solution at the start (" + carried.reason + ")";
     }
-    level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
+    if (started) level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
     if (level.peak.x.size() == 0 && system != lower) {
       const auto [f, start] = flankStart(*lower, *system, lowerPoints, hz, scale, tolerance);
       if (start.size() > 0) {
@@ -211,6 +214,13 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
   return levels;
 }
 
+// A free-text note as one CSV cell (the report's table splits at commas).
+std::string csvCell(std::string text) {
+  for (char& c : text)
+    if (c == ',') c = ';';
+  return text;
+}
+
 // <name>_harmonics.csv: the peak per harmonic truncation, its change from the level
 // before, and what each level cost.
 void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::string& path) {
@@ -223,7 +233,7 @@ void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::s
     const auto& l = levels[i];
     out << l.maxHarmonic << "," << (l.peak.found ? 1 : 0) << ",";
     if (l.peak.x.size() == 0) {  // no solution at all: nothing to compare
-      out << ",,,," << l.peak.solves << "," << l.seconds << "," << l.peak.reason << "\n";
+      out << ",,,," << l.peak.solves << "," << l.seconds << "," << csvCell(l.peak.reason) << "\n";
       continue;
     }
     out << l.peak.value << "," << l.peak.parameter << ",";
@@ -239,9 +249,7 @@ void writePeakLevels(const std::vector<PeakLevel>& levels, int dof, const std::s
       from << "started on the flank at " << l.startHz << " Hz" << (note.empty() ? "" : "; ");
       note = from.str() + note;
     }
-    for (char& c : note)
-      if (c == ',') c = ';';
-    out << "," << l.peak.solves << "," << l.seconds << "," << note << "\n";
+    out << "," << l.peak.solves << "," << l.seconds << "," << csvCell(note) << "\n";
   }
   out.close();
   if (!out) throw Error("cannot write " + path);

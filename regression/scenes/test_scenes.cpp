@@ -188,6 +188,7 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     EXPECT_LE(peak, 1.05 * traced);
     for (std::size_t i = 1; i < rows.size(); ++i) {
       ASSERT_EQ(std::sscanf(rows[i].c_str(), "%d,%d", &H, &found), 2) << rows[i];
+      EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), 8) << "9 cells, the note's commas escaped: " << rows[i];
       EXPECT_EQ(H, int(i) + 1);
       if (!found) {
         EXPECT_EQ(i + 1, rows.size()) << "a level not found ends the list";

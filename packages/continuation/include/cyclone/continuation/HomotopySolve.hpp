@@ -3,7 +3,7 @@
 // all but some equations: a harmonic balance solution carried to one more harmonic
 // (the new harmonic's coefficients zero, the old equations holding). Newton from
 // such a guess stalls at the kinks of a friction system (the default disc's peak
-// carried from H = 4 to 5 found no solution), so the added equations are switched
+// carried from H = 3 to 4 found no solution), so the added equations are switched
 // on gradually: the homotopy
 //   G_i(x; s) = F_i(x; p)                                 (the other rows)
 //   G_i(x; s) = s F_i(x; p) + (1 - s) c (x_i - x0_i)       (the added rows i)
