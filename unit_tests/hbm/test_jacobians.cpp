@@ -130,3 +130,29 @@ TEST(ElementJacobians, HarmonicForceMatchesFiniteDifferences) {
     EXPECT_LT(relativeError(jacobian, fd), 1e-6) << e.name;
   }
 }
+
+TEST(ElementJacobians, ForceSensitivityIsTheDenseJacobianTimesTheSensitivities) {
+  // Each element's O(N m) forceSensitivity against evaluate()'s dense N x N
+  // matrices times the same sensitivities (ScalarElement's default), with the AFT's
+  // own ones: the samples' dependence on the coefficients and its time derivative.
+  const Aft aft(HarmonicSet::upTo(5), 128);
+  const double omega = 1.7;
+  const Eigen::MatrixXd& e = aft.timeFromCoefficients();
+  const Eigen::MatrixXd edot = omega * (e * aft.derivativeMatrix());
+  unsigned seed = 300;
+  for (const Named& el : elements()) {
+    const Eigen::VectorXd x = randomCoefficients(aft.harmonics(), el.scale, seed++);
+    const Eigen::VectorXd w = aft.toTime(x);
+    const Eigen::VectorXd wdot = aft.toTime(Eigen::VectorXd(omega * (aft.derivativeMatrix() * x)));
+    Eigen::VectorXd f, fDense;
+    Eigen::MatrixXd df, dfdw, dfdwdot;
+    el.element->forceSensitivity(w, wdot, e, edot, f, df);
+    el.element->evaluate(w, wdot, fDense, &dfdw, &dfdwdot);
+    const Eigen::MatrixXd dense = dfdw * e + dfdwdot * edot;
+    std::printf("force sensitivity %-18s against the dense Jacobian %.2e, |df| %.2e\n", el.name.c_str(),
+                relativeError(df, dense), dense.cwiseAbs().maxCoeff());
+    EXPECT_GT(dense.cwiseAbs().maxCoeff(), 0.1) << el.name;
+    EXPECT_LT(relativeError(df, dense), 1e-13) << el.name;
+    EXPECT_LT((f - fDense).cwiseAbs().maxCoeff(), 1e-14 * std::max(1.0, fDense.cwiseAbs().maxCoeff())) << el.name;
+  }
+}

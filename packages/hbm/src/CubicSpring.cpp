@@ -24,6 +24,12 @@ void CubicSpring::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eig
   if (dfdwdot) dfdwdot->setZero(n, n);
 }
 
+void CubicSpring::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd&, const Eigen::MatrixXd& dw,
+                                   const Eigen::MatrixXd&, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
+  f = k3_ * w.array().cube();
+  df = (3.0 * k3_ * w.array().square()).matrix().asDiagonal() * dw;
+}
+
 std::shared_ptr<const ScalarElement> CubicSpring::withParameter(const std::string& name, double value) const {
   if (name == "k3") return std::make_shared<CubicSpring>(value);
   throw InputError("nonlinear element", "unknown parameter '" + name + "' (k3)");

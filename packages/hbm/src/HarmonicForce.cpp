@@ -18,15 +18,15 @@ Eigen::VectorXd harmonicForce(const ScalarElement& element, const Aft& aft, cons
   if (velocity) wdot = aft.toTime(Eigen::VectorXd(omega * (aft.derivativeMatrix() * wCoefficients)));
 
   Eigen::VectorXd f;
-  Eigen::MatrixXd dfdw, dfdwdot;
-  element.evaluate(w, wdot, f, jacobian ? &dfdw : nullptr, jacobian && velocity ? &dfdwdot : nullptr);
-  if (jacobian) {
-    const Eigen::MatrixXd& e = aft.timeFromCoefficients();
-    const Eigen::MatrixXd& p = aft.coefficientsFromTime();
-    Eigen::MatrixXd timeJacobian = dfdw * e;  // N x nc
-    if (velocity) timeJacobian.noalias() += omega * (dfdwdot * (e * aft.derivativeMatrix()));
-    *jacobian = p * timeJacobian;
+  if (!jacobian) {
+    element.evaluate(w, wdot, f, nullptr, nullptr);
+    return aft.toFrequency(f);
   }
+  const Eigen::MatrixXd& e = aft.timeFromCoefficients();
+  Eigen::MatrixXd edot, timeJacobian;  // the samples' sensitivities; df/dcoefficients, N x nc
+  if (velocity) edot = omega * (e * aft.derivativeMatrix());
+  element.forceSensitivity(w, wdot, e, edot, f, timeJacobian);
+  *jacobian = aft.coefficientsFromTime() * timeJacobian;
   return aft.toFrequency(f);
 }
 

@@ -51,6 +51,34 @@ void JenkinsElement::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, 
   if (dfdwdot) dfdwdot->setZero(n, n);
 }
 
+void JenkinsElement::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd&, const Eigen::MatrixXd& dw,
+                                      const Eigen::MatrixXd&, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
+  // The march of evaluate() with the slider's sensitivity carried as a row: after a
+  // slip at sample j it is dw.row(j), and a stick sample's force row is kt (dw_i - dz).
+  const Eigen::Index n = w.size();
+  f.resize(n);
+  df.setZero(n, dw.cols());
+  double z = 0.0;
+  Eigen::Index lastSlip = -1;  // dz = 0 until the first slip
+  for (int loop = 0; loop < 2; ++loop) {
+    const bool record = loop == 1;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double trial = kt_ * (w[i] - z);
+      if (std::abs(trial) <= slipForce_) {
+        if (!record) continue;
+        f[i] = trial;
+        df.row(i) = kt_ * dw.row(i);
+        if (lastSlip >= 0) df.row(i) -= kt_ * dw.row(lastSlip);
+      } else {
+        const double s = trial > 0 ? 1.0 : -1.0;
+        if (record) f[i] = s * slipForce_;  // its sensitivity row stays 0
+        z = w[i] - s * slipForce_ / kt_;
+        lastSlip = i;
+      }
+    }
+  }
+}
+
 }  // namespace cyclone::hbm
 
 namespace cyclone::hbm {

@@ -28,6 +28,15 @@ void QuadraticDamper::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& 
   }
 }
 
+void QuadraticDamper::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd&,
+                                       const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
+  if (wdot.size() != w.size() || dwdot.rows() != w.size())
+    throw InputError("QuadraticDamper", "needs " + std::to_string(w.size()) + " velocity samples and their sensitivities, got " +
+                                            std::to_string(wdot.size()));
+  f = c2_ * wdot.array() * wdot.array().abs();
+  df = (2.0 * c2_ * wdot.array().abs()).matrix().asDiagonal() * dwdot;
+}
+
 std::shared_ptr<const ScalarElement> QuadraticDamper::withParameter(const std::string& name, double value) const {
   if (name == "c2") return std::make_shared<QuadraticDamper>(value);
   throw InputError("nonlinear element", "unknown parameter '" + name + "' (c2)");

@@ -14,6 +14,15 @@ double ScalarElement::incremental(double w, double wdot, double&, double& dfdw, 
   return f(0);
 }
 
+void ScalarElement::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd& dw,
+                                     const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
+  const bool velocity = usesVelocity();
+  Eigen::MatrixXd dfdw, dfdwdot;
+  evaluate(w, wdot, f, &dfdw, velocity ? &dfdwdot : nullptr);
+  df.noalias() = dfdw * dw;
+  if (velocity) df.noalias() += dfdwdot * dwdot;
+}
+
 std::shared_ptr<const ScalarElement> ScalarElement::withParameter(const std::string& name, double) const {
   throw InputError("nonlinear element", "this element has no parameter '" + name + "' to vary");
 }

@@ -29,6 +29,14 @@ void UnilateralSpring::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&
   if (dfdwdot) dfdwdot->setZero(n, n);
 }
 
+void UnilateralSpring::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd&, const Eigen::MatrixXd& dw,
+                                        const Eigen::MatrixXd&, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
+  const Eigen::ArrayXd penetration = w.array() - gap_;
+  const Eigen::ArrayXd closed = (penetration > 0).cast<double>();  // one-sided: 0 exactly at onset
+  f = (k_ * closed * penetration).matrix();
+  df = (k_ * closed).matrix().asDiagonal() * dw;
+}
+
 std::shared_ptr<const ScalarElement> UnilateralSpring::withParameter(const std::string& name, double value) const {
   if (name == "k") return std::make_shared<UnilateralSpring>(value, gap_);
   if (name == "gap") return std::make_shared<UnilateralSpring>(k_, value);

@@ -12,6 +12,8 @@ public:
   double k3() const { return k3_; }
   void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
+  void forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd& dw,
+                        const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const override;
 
   std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const override;
 private:

@@ -20,6 +20,8 @@ public:
   /// away from samples that sit exactly on a stick/slip transition.
   void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
+  void forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd& dw,
+                        const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const override;
   /// One time step of the same law: state = slider position z (0 initially).
   double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const override;
 

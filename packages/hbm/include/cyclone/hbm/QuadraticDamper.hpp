@@ -13,6 +13,8 @@ public:
   bool usesVelocity() const override { return true; }
   void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const override;
+  void forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd& dw,
+                        const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const override;
 
   std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const override;
 private:

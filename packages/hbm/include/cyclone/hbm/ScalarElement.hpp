@@ -25,6 +25,15 @@ public:
   virtual void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                         Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const = 0;
 
+  /// The force samples f and their sensitivity df = dfdw dw + dfdwdot dwdot (N x m) to
+  /// m quantities the samples depend on, given dw (N x m) and dwdot (N x m; empty when
+  /// the element does not use the velocity). The AFT Jacobian needs only this product
+  /// (the quantities: the Fourier coefficients); the default forms evaluate()'s N x N
+  /// matrices, O(N^2 m), the elements here override it with O(N m) (at N = 1024 the
+  /// difference is 36 ms against 0.3 ms per Jacobian).
+  virtual void forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, const Eigen::MatrixXd& dw,
+                                const Eigen::MatrixXd& dwdot, Eigen::VectorXd& f, Eigen::MatrixXd& df) const;
+
   /// The same law, one time step at a time (for the time-integration check):
   /// force at (w, wdot) given the element's internal state from the last
   /// converged step; `state` is updated in place for the trial (the caller keeps
