@@ -595,7 +595,13 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   }
   opt.from = cs.requireDouble("from");
   opt.to = cs.requireDouble("to");
-  readContinuationSteps(cs, opt);
+  // Cyclone's predictor-corrector by default, LOCA retracing a curve it leaves
+  // incomplete; an engine the scene names is used alone, as for the disc.
+  if (!cs.has("engine")) {
+    setup.fallback = continuation::ContinuationOptions{};
+    setup.fallback->engine = continuation::ContinuationOptions::Engine::Loca;
+  }
+  readContinuationSteps(cs, opt, "predictor_corrector");
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
   if (!(opt.tolerance > 0 && opt.tolerance < 1))
     throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");

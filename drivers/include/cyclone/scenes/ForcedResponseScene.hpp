@@ -101,7 +101,7 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
 /// turn_angle; for loca line_search: full_step, backtrack or polynomial), defaults the
 /// values in `options` on entry; a value out of its domain is an InputError naming the key.
 void readContinuationSteps(SceneSection& continuationSection, continuation::ContinuationOptions& options,
-                           const std::string& defaultEngine = "loca");
+                           const std::string& defaultEngine);
 
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);

@@ -30,10 +30,10 @@ struct ContinuationProblem {
 };
 
 struct ContinuationOptions {
-  /// LOCA stays the default until every scene and verification is traced with the
-  /// predictor-corrector (docs/architecture.md, "Continuation").
+  /// Cyclone's predictor-corrector by default (fewer points on every shipped scene but
+  /// one, docs/scenes.md); LOCA stays selectable (docs/architecture.md, "Continuation").
   enum class Engine { PredictorCorrector, Loca };
-  Engine engine = Engine::Loca;
+  Engine engine = Engine::PredictorCorrector;
   double from = 0, to = 1;          ///< parameter range (either direction)
   /// Arclength steps. PredictorCorrector: in the scaled (x / ||x||, p / |to - from|)
   /// space, so 0.1 is a tenth of the range or a 10 % change of the solution. Loca: in
