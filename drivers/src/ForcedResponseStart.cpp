@@ -14,6 +14,7 @@
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 namespace cyclone::scenes {
@@ -147,13 +148,11 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
   return branch;
 }
 
-}  // namespace
-
 // Where one engine leaves the curve incomplete, the other traces it again (the
 // engines fail in different places: the predictor-corrector where a stuck contact's
 // static state drifts at an almost constant frequency, LOCA at stick-slip kinks that
 // its corrector's plane misses); the complete curve, or else the first, is kept.
-continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start) {
   auto branch = traceWithOneEngine(setup, start);
   if (branch.finished || !setup.fallback) return branch;
   const auto primary = setup.continuation;
@@ -173,6 +172,18 @@ continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const Start
   }
   branch.stopReason += std::string("; ") + engineName(other.engine) + " did not complete it either (" +
                        second.stopReason + ")";
+  return branch;
+}
+
+}  // namespace
+
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+  const long unsettledBefore = hbm::FrictionContact::unsettledEvaluations();
+  auto branch = traceWithFallback(setup, start);
+  if (const long n = hbm::FrictionContact::unsettledEvaluations() - unsettledBefore; n > 0)
+    log::warn("forced response: " + std::to_string(n) +
+              " friction force evaluations ended on a slider state that is not periodic (the period map's "
+              "Newton did not settle it); points near them may carry a force error");
   return branch;
 }
 

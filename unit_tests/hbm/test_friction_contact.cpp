@@ -353,3 +353,47 @@ TEST(FrictionContact, ForceSamplesAreTheSampledLaw) {
   const Eigen::MatrixXd smooth = contact.NonlinearElement::forceSamples(aft, W, 1.0);
   EXPECT_GT(smooth.col(0).cwiseAbs().maxCoeff(), 3.0 + 1e-3);
 }
+
+// Just past the onset of circular slip, with the normal load varying, the period
+// map settles slowly (the slip per period vanishes) and a march from the relaxed
+// slider ended far from the periodic state: a force that jumped between nearby
+// motions (0.023 of the friction limit), a wall no Newton crosses. Random H = 3
+// orbits, each scaled to where its force changes fastest, the interval refined
+// to 2e-8 of the amplitude: the force is continuous there (a square-root branch
+// at the stuck set's vertex is, a jump is not).
+TEST(FrictionContact, ForceIsContinuousThroughTheOnsetOfSlip) {
+  const FrictionContact contact(params(2, 1.0, 1.0, 1.0, 1.0));
+  const Aft aft(HarmonicSet::upTo(3), 256);
+  const int nc = aft.numCoefficients();
+  double largest = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> g;
+    Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(nc, 3), shape(nc, 3);
+    mean(0, 0) = 0.5 * g(rng), mean(0, 1) = 0.5 * g(rng);
+    for (int i = 0; i < shape.size(); ++i) shape.data()[i] = g(rng) / (1 + (i % nc));
+    shape.row(0).setZero();
+    shape.col(2) *= 0.3;
+    auto F = [&](double a) {
+      const Eigen::MatrixXd f = force(contact, aft, mean + a * shape);
+      return Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()).eval();
+    };
+    double lo = 0.2, hi = 3.0, at = lo, change = 0;
+    for (int pass = 0; pass < 5; ++pass) {  // 100 intervals, then 100 around the steepest, 4 times
+      change = -1;
+      Eigen::VectorXd previous = F(lo);
+      for (int k = 1; k <= 100; ++k) {
+        const double a = lo + (hi - lo) * k / 100;
+        const Eigen::VectorXd next = F(a);
+        if ((next - previous).norm() > change) change = (next - previous).norm(), at = a;
+        previous = next;
+      }
+      const double h = (hi - lo) / 100;
+      lo = at - 2 * h, hi = at + h;
+    }
+    largest = std::max(largest, change);
+    EXPECT_LT(change, 1e-3) << "seed " << seed << ": the force jumps near a = " << at;
+  }
+  std::printf("40 orbits through the onset of slip: largest force change over 2e-8 of the amplitude %.2e\n",
+              largest);
+}

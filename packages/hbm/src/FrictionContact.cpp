@@ -1,5 +1,6 @@
 #include "cyclone/hbm/FrictionContact.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -23,6 +24,8 @@ FrictionContact::FrictionContact(const FrictionContactParameters& p) : p_(p) {
 }
 
 namespace {
+
+std::atomic<long> unsettled{0};  // FrictionContact::unsettledEvaluations()
 
 // One step of the contact law (return mapping). Inputs: tangential w_t, normal
 // approach n, slider z (updated). Outputs the force [f_t, f_n] and, if asked,
@@ -131,6 +134,8 @@ bool FrictionContact::stuckThroughout(const Aft& aft, const Eigen::MatrixXd& w, 
   return true;
 }
 
+long FrictionContact::unsettledEvaluations() { return unsettled.load(); }
+
 void FrictionContact::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double, Eigen::MatrixXd& F,
                                     Eigen::MatrixXd* jacobian) const {
   Eigen::MatrixXd w, f;
@@ -205,21 +210,44 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   if (!periodic) {
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dt, dt);
     Eigen::MatrixXd dPhi(dt, dt);
-    for (int iteration = 0; iteration < 50 && !periodic; ++iteration) {
-      Eigen::VectorXd image = z;
-      dPhi.setIdentity();
-      period(image, &dPhi, 0, false);
-      const Eigen::VectorXd r = image - z;
-      if (r.norm() <= settled) {
-        z = image, periodic = true;
-        break;
+    auto settle = [&](Eigen::VectorXd& y) {
+      for (int iteration = 0; iteration < 50; ++iteration) {
+        Eigen::VectorXd image = y;
+        dPhi.setIdentity();
+        period(image, &dPhi, 0, false);
+        const Eigen::VectorXd r = image - y;
+        if (r.norm() <= settled) {
+          y = image;
+          return true;
+        }
+        // Newton's step, halved until it lowers the mismatch (the period map is only
+        // piecewise smooth: a full step can cross a slip instant's switch and cycle),
+        // else the march's own step.
+        const Eigen::VectorXd step = (I - dPhi).fullPivLu().solve(r);
+        bool lowered = false;
+        for (double t = 1; t > 1e-3 && !lowered && step.allFinite(); t *= 0.5) {
+          const Eigen::VectorXd trial = y + t * step;
+          Eigen::VectorXd trialImage = trial;
+          period(trialImage, nullptr, 0, false);
+          if ((trialImage - trial).norm() < r.norm()) y = trial, lowered = true;
+        }
+        if (!lowered) y = image;
       }
-      // Newton's step where it lowers the mismatch, else the march's own step.
-      const Eigen::VectorXd trial = z + (I - dPhi).fullPivLu().solve(r);
-      Eigen::VectorXd trialImage = trial;
-      if (trial.allFinite()) period(trialImage, nullptr, 0, false);
-      z = trial.allFinite() && (trialImage - trial).norm() < r.norm() ? trial : image;
+      return false;
+    };
+    // Just past the onset of circular slip the march from the relaxed state creeps
+    // (the slip per period vanishes there) and can end far from the periodic state,
+    // which lies near the least violating slider position: a force that jumps
+    // between nearby motions, a wall no Newton crosses. Start there first.
+    if (dt == 2 && p_.mu > 0) {
+      const Eigen::VectorXd normal = (p_.preload + p_.kn * w.col(2).array()).matrix();
+      if (normal.minCoeff() > 0) {
+        Eigen::VectorXd y = detail::leastViolatingState(w.leftCols(2).transpose(), p_.mu / p_.kt * normal);
+        if (settle(y)) z = y, periodic = true;
+      }
     }
+    if (!periodic) periodic = settle(z);
+    if (!periodic) ++unsettled;
     if (jacobian) {
       Eigen::MatrixXd sensitivity = Eigen::MatrixXd::Zero(dt, m + dt);
       sensitivity.rightCols(dt).setIdentity();

@@ -29,4 +29,12 @@ struct StuckSliderState {
 /// circles, so an active-set search over at most 3 disks at a time finds it.
 StuckSliderState nearestStuckState(const Eigen::Matrix2Xd& centres, const Eigen::VectorXd& radii);
 
+/// The slider position that violates the disks least: the minimiser of
+/// max_i (|z - c_i| - r_i) (the centre of C's largest inscribed disk when C is not
+/// empty). Just past the onset of slip the periodic slip state lies within the
+/// small violation of it, while a march from the relaxed state can stop far away:
+/// the slip per period, and so the period map's pull, vanishes at the onset.
+/// Exact up to rounding: an active-set search over at most 3 disks at a time.
+Eigen::Vector2d leastViolatingState(const Eigen::Matrix2Xd& centres, const Eigen::VectorXd& radii);
+
 }  // namespace cyclone::hbm::detail

@@ -39,6 +39,11 @@ public:
   /// and a time shift of the motion shifts the force. The Jacobian is exact.
   void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                      Eigen::MatrixXd* jacobian) const override;
+  /// Force evaluations, process-wide over all contacts, whose slider state did not
+  /// settle to a periodic one (period-map mismatch above 1e-14 of the motion after
+  /// Newton from two starts): their force is that of a state off the periodic one.
+  /// Callers report a count that grew (the forced-response scenes warn); never silent.
+  static long unsettledEvaluations();
   /// The sampled contact law itself (stick, slip and lift-off corners intact).
   Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const override;
   int stateSize() const override { return p_.tangentialDirections; }
