@@ -17,6 +17,7 @@
 #include <random>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/continuation/DenseLu.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
@@ -63,8 +64,9 @@ int main(int argc, char** argv) {
   const int maxH = argc > 1 ? std::atoi(argv[1]) : 7;
   std::printf("reduced cyclic sector: %d DOFs, %d friction3d elements across the sector boundary, EO 3 of 24\n\n",
               kDofs, kContacts);
-  std::printf("%3s %5s %9s | %10s %8s %8s %8s | %9s\n", "H", "N", "unknowns", "R+J [s]", "elements", "linear",
-              "assembly", "LU [s]");
+  // LU: Eigen's PartialPivLU and LAPACK's dgetrf (DenseLu, what the predictor-corrector uses).
+  std::printf("%3s %5s %9s | %10s %8s %8s %8s | %9s %9s\n", "H", "N", "unknowns", "R+J [s]", "elements", "linear",
+              "assembly", "Eigen LU", "LAPACK LU");
   for (int H = 1; H <= maxH; H += 2)
     for (int N : {64, 128, 256, 512}) {
       if (N < 2 * H + 1) continue;
@@ -94,9 +96,14 @@ int main(int argc, char** argv) {
       t.restart();
       const auto lu = J.partialPivLu();
       const double luTime = t.seconds();
-      std::printf("%3d %5d %9d | %10.4f %7.0f%% %7.0f%% %7.0f%% | %9.4f\n", H, N, s->numUnknowns(), total,
-                  100 * elements / total, 100 * linear / total, 100 * (total - elements - linear) / total, luTime);
+      t.restart();
+      const continuation::DenseLu lapackLu(J);
+      const double lapackTime = t.seconds();
+      std::printf("%3d %5d %9d | %10.4f %7.0f%% %7.0f%% %7.0f%% | %9.4f %9.4f\n", H, N, s->numUnknowns(), total,
+                  100 * elements / total, 100 * linear / total, 100 * (total - elements - linear) / total, luTime,
+                  lapackTime);
       (void)lu;
+      (void)lapackLu;
     }
 
   std::printf("\nresonance curve, EO 3 (nodal diameter 3), omega 0.9 -> 1.6:\n");

@@ -2,6 +2,8 @@
 
 #include <Eigen/LU>
 
+#include "cyclone/continuation/DenseLu.hpp"
+
 namespace cyclone::continuation {
 
 NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance,
@@ -14,9 +16,9 @@ NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x,
     for (; r.iterations < maxIterations; ++r.iterations) {
       if (F.norm() <= tolerance) break;
       problem.jacobian(x, p, J);
-      // Partial pivoting (blocked, several times faster than full pivoting at the
+      // Partial pivoting (LAPACK, several times faster than full pivoting at the
       // harmonic balance's sizes); full pivoting only when J is singular to it.
-      Eigen::VectorXd dx = J.partialPivLu().solve(-F);
+      Eigen::VectorXd dx = DenseLu(J).solve(-F);
       if (!dx.allFinite()) dx = J.fullPivLu().solve(-F);
       double step = 1.0;
       for (int k = 0;; ++k, step *= 0.5) {  // backtracking: accept the first sufficient decrease

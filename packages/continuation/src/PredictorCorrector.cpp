@@ -9,7 +9,6 @@
 // path that turns by more than 90 degrees (a stick-slip corner) where no hyperplane
 // does. The next step grows or shrinks with Newton's iteration count and the
 // tangent's turn. A step that goes back onto the path already traced is refused.
-#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "ContinuationEngines.hpp"
+#include "cyclone/continuation/DenseLu.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -44,7 +44,7 @@ struct Correction {
   bool converged = false;
   int iterations = 0;
   Point z;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu;  // of the last bordered Jacobian
+  DenseLu lu;  // of the last bordered Jacobian
   bool factored = false;                    // lu holds one (no iteration: the predictor solved it)
 };
 
@@ -94,7 +94,7 @@ private:
     A.topRightCorner(n_, 1) = (Fe - F) / eps;
     return true;
   }
-  void factor(const Eigen::MatrixXd& A, Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
+  void factor(const Eigen::MatrixXd& A, DenseLu& lu) {
     Timer t;
     ++stats().factorizations;
     lu.compute(A);
@@ -103,7 +103,7 @@ private:
   ContinuationStatistics& stats() { return branch_.statistics; }
 
   // The unit tangent at z (metric_), oriented along `along` (a direction in (x, p)).
-  bool tangentFrom(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu, const Point& along, Point& t) const {
+  bool tangentFrom(const DenseLu& lu, const Point& along, Point& t) const {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
     rhs(n_) = 1;
     const Eigen::VectorXd v = lu.solve(rhs);
@@ -121,7 +121,7 @@ private:
     if (!residual(z, F) || !jacobian(z, F, A)) return false;
     A.bottomLeftCorner(1, n_) = (along.x / (metric_.sx * metric_.sx)).transpose();
     A(n_, n_) = along.p / (metric_.sp * metric_.sp);
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    DenseLu lu;
     factor(A, lu);
     return tangentFrom(lu, along, t);
   }
@@ -426,7 +426,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     }
     A.bottomRows(1).setZero();
     A(n_, n_) = 1;
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    DenseLu lu;
     factor(A, lu);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
     rhs(n_) = dir;
