@@ -418,6 +418,87 @@ TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
 // Gap elements at a shroud pair (seed 8.6): interference stiffens the disc, so
 // the study's peak moves up from clearance to interference; the hysteresis
 // output names a gap's tangential columns as zero. Bad gap input is named.
+// The default disc's curve at H = 3 over the automatic range, traced whole by the
+// predictor-corrector alone (the engine named, so no LOCA fallback): its
+// superharmonic resonances at 550..700 Hz are mazes of stick-slip corners about 1e-6
+// of the range apart, where the steps crept and stopped at p = 3.596 (1000 rad/s)
+// until a creep is stepped over at a fixed parameter (PredictorCorrector.cpp,
+// passCreep). About 16 minutes: slow label.
+TEST(Scenes, DiscCurveAtThreeHarmonicsIsTracedWhole) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_h3");
+  const std::string scene =
+      "cyclone:\n"
+      "  analysis: [disc_response]\n"
+      "  mesh:\n"
+      "    source: shrouded_sector\n"
+      "    write: [exodus, inp]\n"
+      "    shrouded_sector:\n"
+      "      sectors: 24\n"
+      "      bore_radius: 40.0\n"
+      "      rim_radius: 100.0\n"
+      "      disc_thickness: 20.0\n"
+      "      blade_height: 60.0\n"
+      "      blade_chord: 20.0\n"
+      "      blade_thickness: 3.0\n"
+      "      blade_stagger_deg: 30.0\n"
+      "      shroud_thickness: 4.0\n"
+      "      shroud_width: 20.0\n"
+      "      mesh_size: 6.0\n"
+      "      element_order: 2\n"
+      "  material:\n"
+      "    name: titanium\n"
+      "    E: 1.16e5\n"
+      "    nu: 0.34\n"
+      "    rho: 4.507e-9\n"
+      "  constraints:\n"
+      "    fixed_node_sets: [bore]\n"
+      "  loads:\n"
+      "    speed_rpm: 10000.0\n"
+      "    axis_point: [0.0, 0.0, 0.0]\n"
+      "    axis_direction: [0.0, 0.0, 1.0]\n"
+      "  solver:\n"
+      "    type: direct\n"
+      "  cyclic:\n"
+      "    configuration: fixed_shroud\n"
+      "  modal:\n"
+      "    modes_per_nd: 3\n"
+      "    speeds_rpm: [0.0, 5000.0, 10000.0]\n"
+      "    prestress: nonlinear\n"
+      "    mac: speeds\n"
+      "  diagrams:\n"
+      "    engine_orders: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24]\n"
+      "  reduced_model:\n"
+      "    kind: hybrid\n"
+      "    modes: 20\n"
+      "    loss_factor: 0.006\n"
+      "    prestress: nonlinear\n"
+      "  disc_response:\n"
+      "    engine_order: 3\n"
+      "    harmonics: 3\n"
+      "    stability: false\n"
+      "    continuation:\n"
+      "      engine: predictor_corrector\n"
+      "    contact:\n"
+      "      kn: 1.0e4\n"
+      "      kt: 1.0e4\n"
+      "      mu: 0.4\n"
+      "      preload: 5.0\n"
+      "    excitation:\n"
+      "      node_set: mid_blade\n"
+      "      direction: [0.0, 0.0, 1.0]\n"
+      "      amplitude: 20.0\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(scene, "disc_h3.yaml", o, Tpetra::getDefaultComm());
+  std::string curve;
+  for (const auto& l : summary.computed)
+    if (l.rfind("disc_frc:", 0) == 0) curve = l;
+  std::printf("%s\n", curve.c_str());
+  EXPECT_NE(curve.find("end of the parameter range reached"), std::string::npos) << curve;
+  EXPECT_EQ(curve.find("not traced"), std::string::npos) << curve;
+}
+
 TEST(Scenes, DiscGapClearanceStudyStiffensWithInterference) {
   log::setQuiet(true);
   const auto dir = freshDir("disc_gap");

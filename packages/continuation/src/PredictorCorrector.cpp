@@ -146,6 +146,7 @@ private:
   void refinePeak(const Point& t0);
   bool onTracedPath(const Point& z, double ds) const;
   bool fixedParameterStep(const Point& z0, const Point& t0, Point& z1);
+  bool passCreep(Point& z, Point& t, double dir);
   void rescale(const Point& z);
   void endAt(double p, const Point& inside, const Point& outside);
   void progress();
@@ -162,6 +163,7 @@ private:
   // The last point a retraction may not drop: one a fixed-parameter step reached (from
   // where the arclength steps had all failed, to which dropping it would return).
   std::size_t anchor_ = 0;
+  std::size_t creepChecked_ = 0;  // passCreep looked back from this point and found no step
   std::vector<Point> tangents_;   // the tangent along the path at each point (empty where not known)
   Timer total_, sinceLog_;
 };
@@ -369,6 +371,44 @@ bool Tracer::fixedParameterStep(const Point& z0, const Point& t0, Point& z1) {
   return false;
 }
 
+// A creep: the last 6 points moved the parameter by less than 1e-5 of the range
+// (on the default disc at H = 3, a superharmonic resonance where many contacts start
+// to slip: corners about 1e-6 apart, each crossed in steps of 1e-6 .. 1e-3, and one
+// whose outgoing branch turns by 106 degrees and wanders back). Newton at a fixed
+// parameter 1e-3 (then 2.5e-4) of the range ahead in the sweep's direction, from the
+// last point, takes the branch past it when it lands close (5 % of the response or
+// of the range) and off the traced path: the same sheet, every parameter covered.
+bool Tracer::passCreep(Point& z, Point& t, double dir) {
+  constexpr std::size_t kWindow = 6;
+  const auto& pts = branch_.points;
+  if (pts.size() < std::max(anchor_, creepChecked_) + kWindow) return false;
+  double lo = pts.back().parameter, hi = lo;
+  for (std::size_t i = pts.size() - kWindow; i < pts.size(); ++i)
+    lo = std::min(lo, pts[i].parameter), hi = std::max(hi, pts[i].parameter);
+  if (hi - lo >= 1e-5 * metric_.sp) return false;
+  for (double f : {1e-3, 2.5e-4}) {
+    Point z1{z.x, z.p + dir * f * metric_.sp};
+    if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged) continue;
+    const Point chord = metric_.difference(z1, z);
+    const double distance = metric_.norm(chord);
+    Point t1;
+    if (distance > 0.05 || onTracedPath(z1, distance) || !freshTangent(z1, chord, t1)) continue;
+    std::ostringstream msg;
+    msg << "continuation: creeping at p = " << z.p << " (" << kWindow << " points within " << hi - lo
+        << "); stepped over at a fixed parameter to p = " << z1.p;
+    log::info(msg.str());
+    append(z1, t1);
+    anchor_ = pts.size() - 1;
+    z = std::move(z1);
+    rescale(z);
+    const double norm = metric_.norm(t1);
+    t = {t1.x / norm, t1.p / norm};
+    return true;
+  }
+  creepChecked_ = pts.size() - 1;  // not again before another window
+  return false;
+}
+
 // The unknowns' scale follows the solution (never below a tenth of the largest
 // seen, nor below the floor set at the start): steps are relative changes where the
 // response grows, and a response passing near zero does not make every corner
@@ -451,6 +491,10 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       break;
     }
     progress();
+    if (passCreep(z, t, dir)) {
+      ds = cornerStep;
+      continue;
+    }
     // A step whose predictor passes the range's end: the end itself, by Newton there.
     const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
     if ((predictor.p - o_.to) * dir > 0) {
