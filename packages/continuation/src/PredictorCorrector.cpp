@@ -44,8 +44,8 @@ struct Correction {
   bool converged = false;
   int iterations = 0;
   Point z;
-  DenseLu lu;  // of the last bordered Jacobian
-  bool factored = false;                    // lu holds one (no iteration: the predictor solved it)
+  DenseLu lu;             // of the last bordered Jacobian
+  bool factored = false;  // lu holds one (no iteration: the predictor solved it)
 };
 
 class Tracer {

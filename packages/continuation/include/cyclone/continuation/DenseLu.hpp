@@ -1,6 +1,6 @@
 #pragma once
 // The LU factorisation (partial pivoting) of a dense square matrix by LAPACK's
-// dgetrf/dgetrs through Teuchos::LAPACK: 1.5-2x faster than Eigen's PartialPivLU
+// dgetrf/dgetrs through Teuchos::LAPACK: 2-3x faster than Eigen's PartialPivLU
 // from n ~ 1000 on one core with OpenBLAS (docs/solvers.md), and the continuation's
 // correctors factor a bordered Jacobian at every Newton iteration.
 #include <Eigen/Core>
@@ -15,7 +15,6 @@ public:
   void compute(const Eigen::MatrixXd& A);
   /// A^-1 b; not finite where A is singular (an exactly zero pivot).
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  bool empty() const { return factors_.size() == 0; }
 
 private:
   Eigen::MatrixXd factors_;
