@@ -1,9 +1,13 @@
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 
 #include <Tpetra_CrsMatrix.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "cyclone/core/AtomicFile.hpp"
@@ -11,6 +15,8 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/cyclic/HarmonicForm.hpp"
+#include "cyclone/cyclic/SectorMatrices.hpp"
 #include "cyclone/fe/Assembler.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
@@ -47,6 +53,142 @@ solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int 
   return solvers::solveModes(*operators.K, *operators.M, opt);
 }
 
+namespace {
+
+std::string describe(const HarmonicModes& hm, solvers::EigenMethod method) {
+  std::ostringstream msg;
+  msg << "nodal diameter " << hm.harmonic << ": " << hm.equations << " equations, " << hm.frequenciesHz.size()
+      << " modes, " << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.front()) << " .. "
+      << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.back()) << " Hz, " << hm.seconds << " s ("
+      << (hm.projected ? "projection " : "assembly ") << hm.assemblySeconds << " s, "
+      << (method == solvers::EigenMethod::Lobpcg ? "preconditioner " : "factorization ") << hm.factorSeconds
+      << " s, eigen-solution " << hm.solveSeconds << " s, " << hm.solves
+      << (method == solvers::EigenMethod::Lobpcg ? " LOBPCG iterations" : " solves");
+  if (hm.rank > 0) msg << "; rank " << hm.rank;
+  msg << ")";
+  return msg.str();
+}
+
+// One nodal diameter on its own operators assembled on the transform (Tpetra, distributed
+// over comm): the LOBPCG path, and shift-invert for a free sector whose shift must be found.
+HarmonicModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
+  Timer timer;
+  const auto op = assembleHarmonicOperators(mesh, sector, k, problem.material, problem.fixedNodeSets,
+                                            problem.prestress, comm);
+  const auto& assembler = *op.assembler;
+  HarmonicModes hm;
+  hm.harmonic = k;
+  hm.copies = op.copies;
+  hm.equations = assembler.transform().numEquations();
+  hm.assemblySeconds = timer.seconds();
+  const auto result = solveHarmonicModes(op, problem.modesPerHarmonic, problem.shift, problem.method);
+  hm.frequenciesHz = result.frequenciesHz;
+  for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
+    hm.shapeReal.push_back(assembler.nodalField(*result.modes, int(i), 0));
+    hm.shapeImag.push_back(hm.copies == 2 ? assembler.nodalField(*result.modes, int(i), 1)
+                                          : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
+  }
+  hm.factorSeconds = result.factorSeconds;
+  hm.solveSeconds = result.solveSeconds;
+  hm.solves = result.operatorApplies;
+  hm.seconds = timer.seconds();
+  return hm;
+}
+
+// One nodal diameter projected from the sector's matrices (one process). Empty when the
+// shift is automatic and K_k does not factor (a free sector): the caller then takes the
+// assembled path, whose shift search handles rigid-body modes.
+std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+                                            const SectorMatrices& matrices, const CyclicModalProblem& problem) {
+  Timer timer;
+  const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
+  HarmonicForm form(matrices, transform);
+  HarmonicModes hm;
+  hm.harmonic = k;
+  hm.copies = transform.copies();
+  hm.equations = transform.numEquations();
+  hm.projected = true;
+  hm.assemblySeconds = timer.seconds();
+  Timer factorTimer;
+  const bool automatic = std::isnan(problem.shift);
+  const double shift = automatic ? 0.0 : problem.shift;
+  try {
+    form.factor(shift);
+  } catch (const SolverError& e) {
+    if (automatic) return std::nullopt;
+    throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
+                      std::to_string(shift) +
+                      " must be positive definite; an unconstrained (free) model needs a negative shift "
+                      "of the order of its first elastic eigenvalue (2 pi f)^2");
+  }
+  hm.factorSeconds = factorTimer.seconds();
+  solvers::ShiftInvertedProblem eigen;
+  eigen.size = form.size();
+  eigen.shift = shift;
+  eigen.normK = form.normK();
+  eigen.normM = form.normM();
+  eigen.applyK = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.applyK(x, y); };
+  eigen.applyM = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.applyM(x, y); };
+  eigen.solveShifted = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.solveShifted(x, y); };
+  if (form.complexForm()) eigen.partner = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.timesI(x, y); };
+  solvers::ModalOptions opt;
+  opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));
+  opt.blockSize = std::max(4, 2 * hm.copies);
+  const auto result = solvers::solveModes(eigen, opt);
+  hm.frequenciesHz = result.frequenciesHz;
+  for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
+    const auto x = result.modes->getData(i);
+    hm.shapeReal.push_back(transform.nodalField(x.getRawPtr(), 0));
+    hm.shapeImag.push_back(hm.copies == 2 ? transform.nodalField(x.getRawPtr(), 1)
+                                          : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
+  }
+  hm.solveSeconds = result.solveSeconds;
+  hm.solves = result.operatorApplies;
+  hm.seconds = timer.seconds();
+  return hm;
+}
+
+// A nodal diameter's result as numbers, for the owner rank to broadcast.
+std::vector<double> pack(const HarmonicModes& hm) {
+  std::vector<double> out = {double(hm.harmonic), double(hm.copies), double(hm.equations), hm.seconds,
+                             hm.assemblySeconds, hm.factorSeconds, hm.solveSeconds, double(hm.solves),
+                             double(hm.rank), double(hm.projected), double(hm.frequenciesHz.size())};
+  out.insert(out.end(), hm.frequenciesHz.begin(), hm.frequenciesHz.end());
+  for (const auto* shapes : {&hm.shapeReal, &hm.shapeImag})
+    for (const auto& shape : *shapes)
+      for (const auto& node : shape) out.insert(out.end(), node.begin(), node.end());
+  return out;
+}
+
+HarmonicModes unpack(const std::vector<double>& in, mesh::Index numNodes) {
+  HarmonicModes hm;
+  std::size_t at = 0;
+  auto next = [&]() { return in.at(at++); };
+  hm.harmonic = int(next());
+  hm.copies = int(next());
+  hm.equations = (long long)next();
+  hm.seconds = next();
+  hm.assemblySeconds = next();
+  hm.factorSeconds = next();
+  hm.solveSeconds = next();
+  hm.solves = int(next());
+  hm.rank = int(next());
+  hm.projected = next() != 0.0;
+  const std::size_t modes = std::size_t(next());
+  for (std::size_t i = 0; i < modes; ++i) hm.frequenciesHz.push_back(next());
+  for (auto* shapes : {&hm.shapeReal, &hm.shapeImag})
+    for (std::size_t i = 0; i < modes; ++i) {
+      std::vector<std::array<double, 3>> shape(numNodes);
+      for (auto& node : shape)
+        for (double& v : node) v = next();
+      shapes->push_back(std::move(shape));
+    }
+  return hm;
+}
+
+}  // namespace
+
 std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
@@ -57,35 +199,47 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   if (problem.modesPerHarmonic < 1) throw InputError("modes_per_nd", "must be at least 1");
 
   std::vector<HarmonicModes> out;
-  for (int k : harmonics) {
-    Timer timer;
-    const auto op = assembleHarmonicOperators(mesh, sector, k, problem.material, problem.fixedNodeSets,
-                                              problem.prestress, comm);
-    const auto& assembler = *op.assembler;
-    HarmonicModes hm;
-    hm.harmonic = k;
-    hm.copies = op.copies;
-    hm.equations = assembler.transform().numEquations();
-    const double assemblySeconds = timer.seconds();
-    const auto result = solveHarmonicModes(op, problem.modesPerHarmonic, problem.shift, problem.method);
-    const int numModes = int(result.frequenciesHz.size());
-    hm.frequenciesHz = result.frequenciesHz;
-    for (int i = 0; i < numModes; ++i) {
-      hm.shapeReal.push_back(assembler.nodalField(*result.modes, i, 0));
-      hm.shapeImag.push_back(hm.copies == 2 ? assembler.nodalField(*result.modes, i, 1)
-                                            : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
+  if (problem.method == solvers::EigenMethod::Lobpcg) {
+    // Distributed operators and preconditioner: every rank works on every nodal diameter.
+    for (int k : harmonics) {
+      out.push_back(solveAssembled(mesh, sector, k, problem, comm));
+      log::info(describe(out.back(), problem.method));
     }
-    hm.seconds = timer.seconds();
+    return out;
+  }
+  // Shift-invert: the element matrices once per speed on every rank, then the nodal
+  // diameters spread over the ranks (round robin), each solved on one process and
+  // broadcast by its owner; the same answer on any number of ranks.
+  const int ranks = comm->getSize(), rank = comm->getRank();
+  const auto matrices = assembleSectorMatrices(mesh, problem.material, problem.prestress);
+  {
     std::ostringstream msg;
-    msg << "nodal diameter " << k << ": " << hm.equations << " equations, " << numModes << " modes, "
-        << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.front()) << " .. "
-        << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.back()) << " Hz, " << hm.seconds
-        << " s (assembly " << assemblySeconds << " s, "
-        << (problem.method == solvers::EigenMethod::Lobpcg ? "preconditioner " : "factorization ")
-        << result.factorSeconds << " s, eigen-solution " << result.solveSeconds << " s, " << result.operatorApplies
-        << (problem.method == solvers::EigenMethod::Lobpcg ? " LOBPCG iterations)" : " solves)");
+    msg << "sector matrices (every nodal diameter's element work): " << matrices.K.rows() << " DOFs, "
+        << matrices.K.nonZeros() << " nonzeros, " << matrices.seconds << " s";
     log::info(msg.str());
-    out.push_back(std::move(hm));
+  }
+  const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());
+  std::vector<HarmonicModes> mine(harmonics.size());
+  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+    if (int(i % ranks) != rank) continue;
+    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem);
+    mine[i] = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
+    mine[i].rank = rank;
+    if (rank == 0) log::info(describe(mine[i], problem.method));
+  }
+  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+    const int owner = int(i % ranks);
+    if (ranks == 1) {
+      out.push_back(std::move(mine[i]));
+      continue;
+    }
+    std::vector<double> buffer = owner == rank ? pack(mine[i]) : std::vector<double>();
+    long long size = (long long)buffer.size();
+    Teuchos::broadcast(*comm, owner, &size);
+    buffer.resize(std::size_t(size));
+    Teuchos::broadcast(*comm, owner, int(size), buffer.data());
+    out.push_back(owner == rank ? std::move(mine[i]) : unpack(buffer, mesh.numNodes()));
+    if (owner != 0) log::info(describe(out.back(), problem.method));
   }
   return out;
 }

@@ -197,23 +197,24 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
   return state;
 }
 
+Eigen::MatrixXd tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,
+                                     const fe::ElementCoords& X, const fe::IsotropicElastic& material,
+                                     const PrestressState* prestress) {
+  if (!prestress || prestress->omega == 0) return fe::elementStiffness(type, X, material);
+  Eigen::MatrixXd K =
+      prestress->nonlinear
+          ? fe::elementTotalLagrangian(type, X, material, elementDisplacement(mesh, e, prestress->displacement), true)
+                .tangent
+          : Eigen::MatrixXd(fe::elementStiffness(type, X, material) +
+                            fe::elementGeometricStiffness(type, X, prestress->stress[e]));
+  K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
+  return K;
+}
+
 Teuchos::RCP<linalg::Matrix> tangentStiffness(const fe::Assembler& assembler, const fe::IsotropicElastic& material,
                                               const PrestressState* prestress) {
-  if (!prestress || prestress->omega == 0) return assembler.stiffness(material);
-  if (prestress->nonlinear)
-    return assembler.assemble([&](mesh::Index e, fe::ElementType type, const fe::ElementCoords& X) {
-      Eigen::MatrixXd K = fe::elementTotalLagrangian(type, X, material,
-                                                     elementDisplacement(assembler.mesh(), e, prestress->displacement),
-                                                     true)
-                              .tangent;
-      K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
-      return K;
-    });
   return assembler.assemble([&](mesh::Index e, fe::ElementType type, const fe::ElementCoords& X) {
-    Eigen::MatrixXd K = fe::elementStiffness(type, X, material);
-    K += fe::elementGeometricStiffness(type, X, prestress->stress[e]);
-    K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
-    return K;
+    return tangentElementMatrix(assembler.mesh(), e, type, X, material, prestress);
   });
 }
 

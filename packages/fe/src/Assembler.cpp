@@ -81,13 +81,6 @@ ElementScatter elementScatter(const DofTransform& T, const mesh::Index* nodes, i
   return s;
 }
 
-std::string elementName(const mesh::Mesh& mesh, mesh::Index globalElement) {
-  auto [b, e] = mesh.locateElement(globalElement);
-  const auto& block = mesh.blocks[b];
-  return "element " + std::to_string(block.elementIds.empty() ? e + 1 : block.elementIds[e]) + " (block '" +
-         block.name + "')";
-}
-
 }  // namespace
 
 Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, linalg::CommPtr comm)
@@ -200,7 +193,7 @@ void forEachElement(const Assembler& A, const Assembler::Impl& I, Kernel&& kerne
           [&](int copy) { return elementTransform(T, block.element(local), nn, copy, I.equations[i]); },
           [&](int copy) { return elementScatter(T, block.element(local), nn, copy, I.equations[i]); });
     } catch (const InvalidElementGeometry& err) {
-      throw InputError(A.mesh().source, elementName(A.mesh(), e) + ": inverted or degenerate element (det J = " +
+      throw InputError(A.mesh().source, A.mesh().elementName(e) + ": inverted or degenerate element (det J = " +
                                             std::to_string(err.detJ) + " at integration point " +
                                             std::to_string(err.point) + ")");
     }
@@ -327,12 +320,7 @@ std::vector<std::array<double, 3>> Assembler::nodalField(const linalg::MultiVect
   auto data = u.getData(column);
   for (std::size_t i = 0; i < impl_->owned->getNodeNumElements(); ++i) local[impl_->owned->getGlobalElement(i)] = data[i];
   Teuchos::reduceAll(*impl_->comm, Teuchos::REDUCE_SUM, int(n), local.data(), global.data());
-  const mesh::Index nn = mesh_.numNodes();
-  std::vector<std::array<double, 3>> field(nn, {0.0, 0.0, 0.0});
-  for (mesh::Index node = 0; node < nn; ++node)
-    for (int d = 0; d < 3; ++d)
-      for (const auto& t : transform_.terms(node, d, copy)) field[node][d] += t.coefficient * global[t.equation];
-  return field;
+  return transform_.nodalField(global.data(), copy);
 }
 
 }  // namespace cyclone::fe

@@ -56,4 +56,12 @@ void DofTransform::finalize(long long numEquations) {
   building_.shrink_to_fit();
 }
 
+std::vector<std::array<double, 3>> DofTransform::nodalField(const double* x, int copy) const {
+  std::vector<std::array<double, 3>> field(numNodes_, {0.0, 0.0, 0.0});
+  for (Index node = 0; node < numNodes_; ++node)
+    for (int d = 0; d < 3; ++d)
+      for (const auto& t : terms(node, d, copy)) field[node][d] += t.coefficient * x[t.equation];
+  return field;
+}
+
 }  // namespace cyclone::fe

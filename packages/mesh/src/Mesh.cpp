@@ -144,4 +144,11 @@ void checkConsistency(const Mesh& mesh) {
   }
 }
 
+std::string Mesh::elementName(Index globalElement) const {
+  auto [b, e] = locateElement(globalElement);
+  const auto& block = blocks[b];
+  return "element " + std::to_string(block.elementIds.empty() ? e + 1 : block.elementIds[e]) + " (block '" +
+         block.name + "')";
+}
+
 }  // namespace cyclone::mesh

@@ -6,17 +6,21 @@
 #include <AnasaziBlockKrylovSchurSolMgr.hpp>
 #include <AnasaziLOBPCGSolMgr.hpp>
 #include <AnasaziTpetraAdapter.hpp>
+#include <Eigen/Eigenvalues>
+#include <Teuchos_SerialDenseMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <random>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -62,10 +66,12 @@ namespace {
 // K factors: no rigid-body modes, shift 0. Otherwise a rough pass with a small
 // negative shift (relative to the mean diagonal ratio) locates the first elastic
 // eigenvalue; the shift then goes to minus that, where K - sigma M is well conditioned.
-double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOptions opt, int& rigidModes) {
+// When K factors, that factorization is the one the solve uses (handed back in `factored`).
+double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOptions opt, int& rigidModes,
+                   std::unique_ptr<DirectSolver>& factored) {
   rigidModes = 0;
   try {
-    DirectSolver probe(K);
+    factored = std::make_unique<DirectSolver>(K);
     return 0.0;
   } catch (const SolverError&) {
   }
@@ -104,12 +110,11 @@ double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOption
 // explicit), computes frequencies and normwise backward errors
 // ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||), meaningful for zero
 // (rigid-body) eigenvalues too.
-static void finishModes(const linalg::Matrix& K, const linalg::Matrix& M, const std::vector<double>& lambda,
-                 const std::vector<Teuchos::RCP<const linalg::Vector>>& vectors, ModalResult& result) {
+static void finishModes(const OP& K, const OP& M, double normK, double normM, const std::vector<double>& lambda,
+                        const std::vector<Teuchos::RCP<const linalg::Vector>>& vectors, ModalResult& result) {
   const int nev = int(lambda.size());
-  result.modes = Teuchos::rcp(new MV(K.getRowMap(), nev));
-  MV Kx(K.getRowMap(), 1), Mx(K.getRowMap(), 1);
-  const double normK = K.getFrobeniusNorm(), normM = M.getFrobeniusNorm();
+  result.modes = Teuchos::rcp(new MV(K.getRangeMap(), nev));
+  MV Kx(K.getRangeMap(), 1), Mx(K.getRangeMap(), 1);
   for (int i = 0; i < nev; ++i) {
     auto dst = result.modes->getVectorNonConst(i);
     dst->assign(*vectors[i]);
@@ -122,6 +127,11 @@ static void finishModes(const linalg::Matrix& K, const linalg::Matrix& M, const 
     result.frequenciesHz.push_back(std::sqrt(std::max(lambda[i], 0.0)) / (2 * M_PI));
     result.residuals.push_back(Kx.getVector(0)->norm2() / ((normK + std::abs(lambda[i]) * normM) * dst->norm2()));
   }
+}
+
+static void finishModes(const linalg::Matrix& K, const linalg::Matrix& M, const std::vector<double>& lambda,
+                        const std::vector<Teuchos::RCP<const linalg::Vector>>& vectors, ModalResult& result) {
+  finishModes(K, M, K.getFrobeniusNorm(), M.getFrobeniusNorm(), lambda, vectors, result);
 }
 
 // LOBPCG needs a preconditioner that resolves the low end of the spectrum; for
@@ -193,45 +203,98 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
   return result;
 }
 
-ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options) {
-  // LOBPCG takes no shift: choosing one would factor K, which that path exists to avoid.
-  if (options.method == EigenMethod::Lobpcg) return solveModesLobpcg(K, M, options);
-  ModalOptions opt = options;
-  int rigidModes = 0;
-  if (std::isnan(opt.shift)) {
-    opt.shift = chooseShift(K, M, options, rigidModes);
-    if (rigidModes > 0) opt.blockSize = std::max(opt.blockSize, std::min(rigidModes, 6));
-  }
-  ModalResult result;
-  result.shift = opt.shift;
-  const long long n = K.getGlobalNumRows();
-  if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
-  if (opt.numModes >= n)
-    throw InputError("modes", "asked for " + std::to_string(opt.numModes) + " modes of a model with only " +
-                                  std::to_string(n) + " free degrees of freedom");
-  Timer timer;
-  std::unique_ptr<DirectSolver> factored;
-  try {
-    factored = std::make_unique<DirectSolver>(K, &M, opt.shift);
-  } catch (const SolverError& e) {
-    throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
-                      std::to_string(opt.shift) +
-                      " must be positive definite; an unconstrained (free) model needs a negative shift "
-                      "of the order of its first elastic eigenvalue (2 pi f)^2");
-  }
-  const DirectSolver& solver = *factored;
-  result.factorSeconds = timer.seconds();
+namespace {
 
-  timer.restart();
-  auto op = Teuchos::rcp(new ShiftInvertOperator(M, solver));
-  const int bs = std::max(2, opt.blockSize);
+// Anasazi's block Krylov-Schur on a shift-inverted operator (M-symmetric), the nev
+// eigenvalues nearest the shift: lambda = sigma + 1/theta, ascending, with their vectors.
+struct ShiftInvertedModes {
+  std::vector<double> lambda;
+  std::vector<Teuchos::RCP<const linalg::Vector>> vectors;
+};
+
+// Rayleigh-Ritz of K, M on span(V) (+ span(partner V)): the eigenpairs as the
+// subspace gives them, each value with its own vector.
+//
+// Anasazi's solution pairs values and vectors itself, and when the converged Ritz
+// pairs are not the leading ones (a travelling-wave pair of which one member
+// converged first) the 13.2 solver manager can hand back vectors of other
+// eigenvalues than the values listed (seen on a 24-sector disc, ND 7: the second
+// vector of each pair belonged to the next pair; the backward error with Frobenius
+// norms did not notice). Anasazi's vectors are used as a subspace only; with
+// `partner` (i on a travelling-wave real form) it is completed so that every pair's
+// plane is in it. The caller checks the values against Anasazi's: a subspace that
+// misses an eigenvector would skip its value.
+ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, const MV& V, int nev) {
+  using MVT = Anasazi::MultiVecTraits<double, MV>;
+  using Dense = Teuchos::SerialDenseMatrix<int, double>;
+  const int found = int(V.getNumVectors());
+  MV basis(V.getMap(), partner ? 2 * found : found);
+  {
+    std::vector<int> columns(found);
+    std::iota(columns.begin(), columns.end(), 0);
+    MVT::SetBlock(V, columns, basis);
+    if (partner) {
+      MV turned(V.getMap(), found);
+      partner->apply(V, turned);
+      for (int& c : columns) c += found;
+      MVT::SetBlock(turned, columns, basis);
+    }
+  }
+  const int m = int(basis.getNumVectors());
+  auto toEigen = [](const Dense& d) {
+    Eigen::MatrixXd e(d.numRows(), d.numCols());
+    for (int i = 0; i < d.numRows(); ++i)
+      for (int j = 0; j < d.numCols(); ++j) e(i, j) = d(i, j);
+    return Eigen::MatrixXd(0.5 * (e + e.transpose()));
+  };
+  // An M-orthonormal basis W of the span, without the directions the partner repeats.
+  MV MB(V.getMap(), m);
+  M.apply(basis, MB);
+  Dense gram(m, m);
+  MVT::MvTransMv(1.0, basis, MB, gram);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> gramEigen(toEigen(gram));
+  const double largest = gramEigen.eigenvalues().maxCoeff();
+  std::vector<int> kept;
+  for (int i = 0; i < m; ++i)
+    if (gramEigen.eigenvalues()(i) > 1e-10 * largest) kept.push_back(i);
+  const int w = int(kept.size());
+  if (w < nev)
+    throw SolverError("eigen-solution: the converged subspace holds " + std::to_string(w) + " of " +
+                      std::to_string(nev) + " modes");
+  Dense toW(m, w);
+  for (int j = 0; j < w; ++j)
+    for (int i = 0; i < m; ++i)
+      toW(i, j) = gramEigen.eigenvectors()(i, kept[j]) / std::sqrt(gramEigen.eigenvalues()(kept[j]));
+  MV W(V.getMap(), w), KW(V.getMap(), w);
+  MVT::MvTimesMatAddMv(1.0, basis, toW, 0.0, W);
+  K.apply(W, KW);
+  Dense projected(w, w);
+  MVT::MvTransMv(1.0, W, KW, projected);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(toEigen(projected));
+  // Ascending: the shift lies below the spectrum, so the lowest are the nearest to it.
+  Dense Y(w, nev);
+  std::vector<double> lambda(nev);
+  for (int j = 0; j < nev; ++j) {
+    for (int i = 0; i < w; ++i) Y(i, j) = ritz.eigenvectors()(i, j);
+    lambda[j] = ritz.eigenvalues()(j);
+  }
+  auto X = Teuchos::rcp(new MV(V.getMap(), nev));
+  MVT::MvTimesMatAddMv(1.0, W, Y, 0.0, *X);
+  ShiftInvertedModes out;
+  out.lambda = lambda;
+  for (int j = 0; j < nev; ++j) out.vectors.push_back(X->getVector(j));
+  return out;
+}
+
+ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, const Teuchos::RCP<const OP>& M,
+                                    const Teuchos::RCP<MV>& X0, long long n, const ModalOptions& opt,
+                                    const OP* partner = nullptr) {
+  const int bs = int(X0->getNumVectors());
   const int nev = opt.numModes;
   // A Krylov space of about 3 nev keeps restarts few (each restart costs solves).
   int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * nev + bs - 1) / bs + 2);
   nb = int(std::min<long long>(nb, std::max<long long>(2, n / bs - 1)));
-  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
-  X0->randomize();
-  auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, Teuchos::rcpFromRef(M), X0));
+  auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, M, X0));
   problem->setHermitian(true);
   problem->setNEV(nev);
   if (!problem->setProblem()) throw SolverError("Anasazi rejected the eigenproblem set-up");
@@ -250,26 +313,131 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
     throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
                       " modes converged after " + std::to_string(opt.maxRestarts) +
                       " restarts (raise the restarts or block count, or move the shift)");
-
-  // lambda = sigma + 1/theta, ascending.
-  std::vector<int> order(sol.numVecs);
-  std::vector<double> lambda(sol.numVecs);
-  for (int i = 0; i < sol.numVecs; ++i) lambda[i] = opt.shift + 1.0 / sol.Evals[i].realpart;
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda[a] < lambda[b]; });
-
-  std::vector<double> sorted;
-  std::vector<Teuchos::RCP<const linalg::Vector>> vectors;
-  for (int i = 0; i < nev; ++i) {
-    sorted.push_back(lambda[order[i]]);
-    vectors.push_back(sol.Evecs->getVector(order[i]));
-  }
-  finishModes(K, M, sorted, vectors, result);
+  std::vector<double> listed;
+  for (int i = 0; i < sol.numVecs; ++i) listed.push_back(opt.shift + 1.0 / sol.Evals[i].realpart);
+  std::sort(listed.begin(), listed.end());
+  auto modes = rayleighRitz(K, *M, partner, *sol.Evecs, nev);
   for (int i = 0; i < nev; ++i)
+    if (!(std::abs(modes.lambda[i] - listed[i]) <= 1e-6 * (std::abs(listed[i]) + std::abs(opt.shift))))
+      throw SolverError("eigen-solution: Anasazi's vectors do not span its eigenvalues (mode " + std::to_string(i + 1) +
+                        ": " + std::to_string(listed[i]) + " listed, " + std::to_string(modes.lambda[i]) +
+                        " in the span of the vectors)");
+  return modes;
+}
+
+void checkResiduals(const ModalResult& result) {
+  for (std::size_t i = 0; i < result.residuals.size(); ++i)
     if (!(result.residuals[i] < 1e-6))
       throw SolverError("eigen-solution: mode " + std::to_string(i + 1) + " has relative residual " +
                         std::to_string(result.residuals[i]) +
                         " (ill-conditioned shift-invert: move the shift closer to the wanted eigenvalues)");
+}
+
+// A Tpetra operator from a function on blocks of columns (one process): what the
+// Eigen-held operators of ShiftInvertedProblem look like to Anasazi.
+class BlockFunctionOperator : public OP {
+public:
+  using Function = std::function<void(const Eigen::MatrixXd&, Eigen::MatrixXd&)>;
+  BlockFunctionOperator(Teuchos::RCP<const linalg::Map> map, Function f) : map_(std::move(map)), f_(std::move(f)) {}
+  Teuchos::RCP<const linalg::Map> getDomainMap() const override { return map_; }
+  Teuchos::RCP<const linalg::Map> getRangeMap() const override { return map_; }
+  void apply(const MV& X, MV& Y, Teuchos::ETransp, double alpha, double beta) const override {
+    const std::size_t nv = X.getNumVectors();
+    const Eigen::Index n = Eigen::Index(X.getLocalLength());
+    Eigen::MatrixXd x(n, nv), y(n, nv);
+    for (std::size_t j = 0; j < nv; ++j) {
+      const auto col = X.getData(j);
+      for (Eigen::Index i = 0; i < n; ++i) x(i, j) = col[i];
+    }
+    f_(x, y);
+    for (std::size_t j = 0; j < nv; ++j) {
+      auto col = Y.getDataNonConst(j);
+      for (Eigen::Index i = 0; i < n; ++i) col[i] = alpha * y(i, j) + (beta == 0.0 ? 0.0 : beta * col[i]);
+    }
+    applies += int(nv);
+  }
+  mutable int applies = 0;
+
+private:
+  Teuchos::RCP<const linalg::Map> map_;
+  Function f_;
+};
+
+}  // namespace
+
+ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options) {
+  // LOBPCG takes no shift: choosing one would factor K, which that path exists to avoid.
+  if (options.method == EigenMethod::Lobpcg) return solveModesLobpcg(K, M, options);
+  ModalOptions opt = options;
+  int rigidModes = 0;
+  Timer timer;
+  std::unique_ptr<DirectSolver> factored;
+  if (std::isnan(opt.shift)) {
+    opt.shift = chooseShift(K, M, options, rigidModes, factored);
+    if (rigidModes > 0) opt.blockSize = std::max(opt.blockSize, std::min(rigidModes, 6));
+  }
+  ModalResult result;
+  result.shift = opt.shift;
+  const long long n = K.getGlobalNumRows();
+  if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
+  if (opt.numModes >= n)
+    throw InputError("modes", "asked for " + std::to_string(opt.numModes) + " modes of a model with only " +
+                                  std::to_string(n) + " free degrees of freedom");
+  if (!factored) try {
+      factored = std::make_unique<DirectSolver>(K, &M, opt.shift);
+    } catch (const SolverError& e) {
+      throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
+                        std::to_string(opt.shift) +
+                        " must be positive definite; an unconstrained (free) model needs a negative shift "
+                        "of the order of its first elastic eigenvalue (2 pi f)^2");
+    }
+  result.factorSeconds = timer.seconds();
+
+  timer.restart();
+  auto op = Teuchos::rcp(new ShiftInvertOperator(M, *factored));
+  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), std::max(2, opt.blockSize)));
+  X0->randomize();
+  const auto modes = blockKrylovSchur(K, op, Teuchos::rcpFromRef(M), X0, n, opt);
+  finishModes(K, M, modes.lambda, modes.vectors, result);
+  checkResiduals(result);
+  result.operatorApplies = op->applies;
+  result.solveSeconds = timer.seconds();
+  return result;
+}
+
+ModalResult solveModes(const ShiftInvertedProblem& problem, const ModalOptions& options) {
+  ModalOptions opt = options;
+  opt.shift = problem.shift;
+  const long long n = problem.size;
+  if (opt.numModes < 1) throw InputError("modes", "number of modes must be at least 1");
+  if (opt.numModes >= n)
+    throw InputError("modes", "asked for " + std::to_string(opt.numModes) + " modes of a model with only " +
+                                  std::to_string(n) + " free degrees of freedom");
+  Timer timer;
+  const auto map = Teuchos::rcp(new linalg::Map(n, 0, Teuchos::rcp(new Teuchos::SerialComm<int>())));
+  auto K = Teuchos::rcp(new BlockFunctionOperator(map, problem.applyK));
+  auto M = Teuchos::rcp(new BlockFunctionOperator(map, problem.applyM));
+  auto op = Teuchos::rcp(new BlockFunctionOperator(map, [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+    Eigen::MatrixXd mx(x.rows(), x.cols());
+    problem.applyM(x, mx);
+    problem.solveShifted(mx, y);
+  }));
+  // A seeded start block: the same on any process and whatever was solved before.
+  const int bs = std::max(2, opt.blockSize);
+  auto X0 = Teuchos::rcp(new MV(map, bs));
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int j = 0; j < bs; ++j) {
+    auto col = X0->getDataNonConst(j);
+    for (long long i = 0; i < n; ++i) col[i] = uniform(random);
+  }
+  ModalResult result;
+  result.shift = opt.shift;
+  Teuchos::RCP<BlockFunctionOperator> partner;
+  if (problem.partner) partner = Teuchos::rcp(new BlockFunctionOperator(map, problem.partner));
+  const auto modes = blockKrylovSchur(*K, op, M, X0, n, opt, partner.get());
+  finishModes(*K, *M, problem.normK, problem.normM, modes.lambda, modes.vectors, result);
+  checkResiduals(result);
   result.operatorApplies = op->applies;
   result.solveSeconds = timer.seconds();
   return result;

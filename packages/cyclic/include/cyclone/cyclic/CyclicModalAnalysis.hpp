@@ -1,7 +1,11 @@
 #pragma once
 // Modes of a cyclic sector for each requested harmonic index (nodal
-// diameter): the cyclic transform per k, assembled K and M, Anasazi
-// shift-invert (or LOBPCG + MueLu, no factorization). Mode shapes are
+// diameter). Shift-invert: the sector's element matrices once per speed
+// (SectorMatrices), each nodal diameter projected by its cyclic transform
+// (HarmonicForm, complex Hermitian for travelling-wave pairs), factored by CHOLMOD
+// and solved by Anasazi's block Krylov-Schur; on several MPI ranks the nodal
+// diameters are spread over the ranks. LOBPCG + MueLu (no factorization): the
+// operators assembled per nodal diameter, distributed over the ranks. Mode shapes are
 // mass-normalised over the sector in the real form: sum over the copies of
 // u_c^T M u_c = 1.
 #include <array>
@@ -36,6 +40,12 @@ struct HarmonicModes {
   int copies = 1;
   long long equations = 0;
   double seconds = 0;
+  /// Where the time went: operators (projected from the sector's matrices, or assembled),
+  /// factorization (or preconditioner), eigen-solution; shifted solves (or LOBPCG iterations).
+  double assemblySeconds = 0, factorSeconds = 0, solveSeconds = 0;
+  int solves = 0;
+  bool projected = false;
+  int rank = 0;  ///< the MPI rank that solved it
   std::vector<double> frequenciesHz;  ///< ascending; each member of a pair listed
   /// Nodal shapes per mode: real part (copy a) and imaginary part (copy b; zero when single).
   std::vector<std::vector<std::array<double, 3>>> shapeReal, shapeImag;

@@ -6,6 +6,7 @@
 // and imaginary parts, for 0 < k < N/2), and its right-face DOFs are rotated,
 // phase-shifted combinations of the left-face ones. Operators assemble as
 // sum over copies of T_c^T K T_c, element by element.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -43,6 +44,9 @@ public:
     const std::size_t slot = this->slot(node, component, copy);
     return {terms_.data() + offsets_[slot], terms_.data() + offsets_[slot + 1]};
   }
+  /// The physical field (numNodes x 3, zeros on fixed components) of copy `copy`
+  /// for the unknowns x (numEquations values).
+  std::vector<std::array<double, 3>> nodalField(const double* x, int copy) const;
   /// A physical DOF that carries each unknown with coefficient 1 (its "master"),
   /// as node*3 + component for copy `masterCopy(eq)`; -1 if none.
   const std::vector<long long>& masterDof() const { return master_; }

@@ -51,6 +51,8 @@ public:
   const std::vector<Index>& nodeSet(const std::string& name) const;
   /// Global element index -> (block, local element).
   std::pair<int, Index> locateElement(Index globalElement) const;
+  /// "element <file id> (block '<name>')", for messages.
+  std::string elementName(Index globalElement) const;
   /// Fills nodeIds 1..n and block elementIds consecutively where they are empty.
   void assignDefaultIds();
 };

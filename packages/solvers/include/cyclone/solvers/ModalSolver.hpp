@@ -3,8 +3,11 @@
 // Anasazi's block Krylov-Schur on the shift-inverted operator (K - sigma M)^{-1} M
 // with the CHOLMOD factorization. Block size >= 2 so that double modes (cyclic
 // pairs, symmetric structures) are caught together.
+#include <functional>
 #include <limits>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "cyclone/fe/LinearAlgebra.hpp"
 
@@ -50,5 +53,25 @@ struct ModalResult {
 
 /// Throws SolverError when fewer than numModes converge (with how many did).
 ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const ModalOptions& options);
+
+/// K and M given by their action on blocks of real vectors (size rows, one column per
+/// vector), with the shifted matrix already factored by the caller: for operators held
+/// outside Tpetra, e.g. a cyclic sector's complex Hermitian form acting on its real form.
+/// One process; the start block is seeded, so the answer does not depend on what ran before.
+struct ShiftInvertedProblem {
+  long long size = 0;
+  double shift = 0;                 ///< sigma: solveShifted applies (K - sigma M)^{-1}
+  double normK = 0, normM = 0;      ///< Frobenius norms, for the modes' backward errors
+  std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)> applyK, applyM, solveShifted;
+  /// Optional: a map that commutes with K and M and takes each eigenvector to another of
+  /// the same eigenvalue (i on a travelling-wave real form), so that every degenerate
+  /// pair is returned whole.
+  std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)> partner;
+};
+/// Block Krylov-Schur on (K - sigma M)^{-1} M as solveModes above (options.shift and
+/// options.method are not used). Throws SolverError when fewer than numModes converge.
+/// Both solveModes: Anasazi's converged vectors are taken as a subspace and the modes
+/// come from a Rayleigh-Ritz on it, each checked by its operator residual.
+ModalResult solveModes(const ShiftInvertedProblem& problem, const ModalOptions& options);
 
 }  // namespace cyclone::solvers

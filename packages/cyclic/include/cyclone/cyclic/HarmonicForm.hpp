@@ -1,0 +1,56 @@
+#pragma once
+// One nodal diameter's operators projected from the sector's physical matrices
+// (SectorMatrices) by its cyclic transform T: T^H A T, and the factorization of
+// K - sigma M for its shift-invert eigen-solution.
+//
+// For a travelling-wave pair (0 < k < N/2, cyclicTransform's paired unknowns) the
+// operators are kept in complex Hermitian form on the n/2 unknowns
+// z_m = x_2m + i x_2m+1: the real 2-copy form is [[P, -Q], [Q, P]] on the pairs and
+// P + iQ holds the same information at a quarter of the storage; CHOLMOD factors it
+// (complex LL^H) in about half the flops of the real form. Everything outside acts on
+// real-form vectors (the unknowns of the transform), converted per call.
+// Otherwise (k = 0, N/2, or a transform that does not pair) the real form
+// sum over copies of T_c^T A T_c.
+#include <complex>
+#include <memory>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "cyclone/cyclic/SectorMatrices.hpp"
+#include "cyclone/fe/DofTransform.hpp"
+
+namespace cyclone::cyclic {
+
+class HarmonicForm {
+public:
+  HarmonicForm(const SectorMatrices& sector, const fe::DofTransform& transform);
+  ~HarmonicForm();
+  HarmonicForm(HarmonicForm&&) noexcept;
+  HarmonicForm& operator=(HarmonicForm&&) noexcept;
+
+  bool complexForm() const;
+  long long size() const;  ///< real-form unknowns (the transform's equations)
+
+  /// y = K x and y = M x on real-form column blocks.
+  void applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  void applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  /// y = i x on the real form (complex form only): (x_2m, x_2m+1) -> (-x_2m+1, x_2m).
+  void timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  /// Frobenius norms of the real forms.
+  double normK() const;
+  double normM() const;
+
+  /// Factors K - sigma M; throws SolverError when it is not positive definite.
+  void factor(double sigma);
+  bool factored() const;
+  /// y = (K - sigma M)^{-1} x after factor().
+  void solveShifted(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  double factorNonzeros() const;  ///< nnz(L) (complex entries in complex form)
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cyclone::cyclic
