@@ -1,6 +1,7 @@
 #include "cyclone/scenes/SceneRunner.hpp"
 
 #include <Teuchos_Comm.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <Eigen/Eigenvalues>
@@ -19,6 +20,7 @@
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/PeakMemory.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/BifurcationFlags.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
@@ -71,6 +73,19 @@ fe::IsotropicElastic readMaterial(SceneSection m) {
 }
 
 namespace {
+
+// "peak memory after <stage>: ..." for the log: rank 0's high-water mark, and the sum
+// over the ranks when there are several (what the machine must hold).
+void logPeakMemory(const std::string& stage, const linalg::CommPtr& comm) {
+  const double mine = peakMemoryMb();
+  double total = mine;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &mine, &total);
+  std::ostringstream msg;
+  msg.precision(4);
+  msg << "peak memory after " << stage << ": " << mine << " MB";
+  if (comm->getSize() > 1) msg << " on rank 0, " << total << " MB summed over " << comm->getSize() << " ranks";
+  log::info(msg.str());
+}
 
 mesh::ShroudedSectorParameters readSectorParameters(SceneSection s) {
   mesh::ShroudedSectorParameters p;
@@ -225,6 +240,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     log::warn("modal analysis without fixed node sets: rigid-body modes are expected (zero frequencies)");
 
   const bool writer = comm->getRank() == 0;
+  logPeakMemory("the mesh", comm);
   std::vector<cyclic::SpeedModes> results;
   for (double rpm : speeds) {
     cyclic::PrestressState state;
@@ -240,6 +256,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       const std::string path = outDir + "/prestress_" + rpmTag(rpm) + ".exo";
       if (writer) cyclic::writePrestressExodus(path, mesh, state);
       summary.written.push_back(path);
+      logPeakMemory("the prestress at " + rpmTag(rpm), comm);
     }
     problem.prestress = used;
     log::info("modes at " + rpmTag(rpm) + (used ? " (prestressed, spin softening; Coriolis neglected)" : ""));
@@ -247,6 +264,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     const std::string path = outDir + "/modes_" + rpmTag(rpm) + ".exo";
     if (writer) cyclic::writeModesExodus(path, mesh, rpm, sm.harmonics);
     summary.written.push_back(path);
+    logPeakMemory("the modes at " + rpmTag(rpm), comm);
     std::ostringstream line;
     line << "modes at " << rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
          << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";

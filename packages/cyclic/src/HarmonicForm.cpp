@@ -135,13 +135,12 @@ void HarmonicForm::factor(double sigma) {
   auto& I = *impl_;
   I.realFactor.reset();
   I.complexFactor.reset();
-  if (I.complexForm) {
-    const Complex A = sigma == 0.0 ? I.ZK : Complex(I.ZK - sigma * I.ZM);
-    I.complexFactor = std::make_unique<solvers::SparseCholesky<std::complex<double>>>(A);
-  } else {
-    const Real A = sigma == 0.0 ? I.K : Real(I.K - sigma * I.M);
-    I.realFactor = std::make_unique<solvers::SparseCholesky<double>>(A);
-  }
+  // At sigma = 0 (a constrained sector, the usual case) K itself, without a copy.
+  if (I.complexForm)
+    I.complexFactor = std::make_unique<solvers::SparseCholesky<std::complex<double>>>(
+        sigma == 0.0 ? I.ZK : Complex(I.ZK - sigma * I.ZM));
+  else
+    I.realFactor = std::make_unique<solvers::SparseCholesky<double>>(sigma == 0.0 ? I.K : Real(I.K - sigma * I.M));
 }
 
 bool HarmonicForm::factored() const { return impl_->realFactor || impl_->complexFactor; }
