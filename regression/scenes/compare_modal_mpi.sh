@@ -14,3 +14,13 @@ paste -d, "$out/np1/frequencies.csv" "$out/np2/frequencies.csv" | awk -F, '
   { d = ($4 - $8) / $4; if (d < 0) d = -d; if (d > worst) worst = d; rows++ }
   END { printf "%d frequencies, max relative difference 1 vs 2 ranks: %.2e\n", rows, worst;
         exit (rows > 0 && worst < 1e-10) ? 0 : 1 }'
+# A nodal diameter that fails on rank 1 (a shift above its lowest eigenvalue) must stop
+# every rank with its message, not leave rank 0 waiting for its result.
+sed 's/nodal_diameters: \[0, 3, 6\]/nodal_diameters: [6, 3]\n    shift: 1.01e8/; s/speeds_rpm: \[0, 9000\]/speeds_rpm: [0]/' \
+  "$scene" > "$out.fail.yaml"
+if timeout 300 "$mpiexec" -np 2 --oversubscribe -x OPENBLAS_NUM_THREADS "$cyclone" run "$out.fail.yaml" \
+  --output "$out/fail" > "$out.fail.log" 2>&1; then
+  echo "the failing scene succeeded"; exit 1
+fi
+grep -q "nodal diameter 3 (rank 1): CHOLMOD" "$out.fail.log" || { echo "no error naming ND 3 on rank 1"; exit 1; }
+echo "a failure on rank 1 stopped both ranks with its message"

@@ -225,19 +225,39 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     log::info(msg.str());
   }
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());
+  auto solveOne = [&](std::size_t i) {
+    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem);
+    HarmonicModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
+    hm.rank = rank;
+    if (rank == 0) log::info(describe(hm, problem.method));
+    return hm;
+  };
+  if (ranks == 1) {
+    for (std::size_t i = 0; i < harmonics.size(); ++i) out.push_back(solveOne(i));
+    return out;
+  }
+  // A failure on one rank is carried to all of them with its message: the others
+  // would otherwise wait in the broadcast for a result that never comes.
   std::vector<HarmonicModes> mine(harmonics.size());
+  std::vector<std::string> failure(harmonics.size());
   for (std::size_t i = 0; i < harmonics.size(); ++i) {
     if (int(i % ranks) != rank) continue;
-    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem);
-    mine[i] = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
-    mine[i].rank = rank;
-    if (rank == 0) log::info(describe(mine[i], problem.method));
+    try {
+      mine[i] = solveOne(i);
+    } catch (const std::exception& e) {
+      failure[i] = e.what();
+    }
   }
   for (std::size_t i = 0; i < harmonics.size(); ++i) {
     const int owner = int(i % ranks);
-    if (ranks == 1) {
-      out.push_back(std::move(mine[i]));
-      continue;
+    std::string message = owner == rank ? failure[i] : std::string();
+    int length = int(message.size());
+    Teuchos::broadcast(*comm, owner, &length);
+    if (length > 0) {
+      message.resize(std::size_t(length));
+      Teuchos::broadcast(*comm, owner, length, message.data());
+      throw SolverError("nodal diameter " + std::to_string(harmonics[i]) + " (rank " + std::to_string(owner) +
+                        "): " + message);
     }
     std::vector<double> buffer = owner == rank ? pack(mine[i]) : std::vector<double>();
     long long size = (long long)buffer.size();
