@@ -900,7 +900,7 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     stage.restart();
     modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
     summary.stages.push_back({"prestress and cyclic modes", stage.seconds(),
-                              "every mode's backward error ||K x - l M x|| / (||K x|| + |l| ||M x||) checked"});
+                              "every mode's backward error ||K x - l M x|| / ((||K||_F + |l| ||M||_F) ||x||) below 1e-6, its value from a Rayleigh-Ritz on the solver's vectors matching the solver's value"});
   }
   if (wants("disc_response") || wants("reduced_model"))
     discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, comm, summary);
