@@ -100,7 +100,8 @@ HarmonicModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector,
 // shift is automatic and K_k does not factor (a free sector): the caller then takes the
 // assembled path, whose shift search handles rigid-body modes.
 std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
-                                            const SectorMatrices& matrices, const CyclicModalProblem& problem) {
+                                            const SectorMatrices& matrices, const CyclicModalProblem& problem,
+                                            FactorCache& factors) {
   Timer timer;
   const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
   HarmonicForm form(matrices, transform);
@@ -114,7 +115,7 @@ std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const Cyclic
   const bool automatic = std::isnan(problem.shift);
   const double shift = automatic ? 0.0 : problem.shift;
   try {
-    form.factor(shift);
+    form.factor(shift, factors);
   } catch (const SolverError& e) {
     if (automatic) return std::nullopt;
     throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
@@ -131,16 +132,18 @@ std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const Cyclic
   eigen.applyK = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.applyK(x, y); };
   eigen.applyM = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.applyM(x, y); };
   eigen.solveShifted = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.solveShifted(x, y); };
+  eigen.solveLower = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.solveLower(x, y); };
+  eigen.solveUpper = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.solveUpper(x, y); };
   if (form.complexForm()) eigen.partner = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.timesI(x, y); };
   solvers::ModalOptions opt;
   opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));
-  // Blocks of 2 (a pair's multiplicity; i completes a pair anyway) and a Krylov space
-  // of 2 nev + 24 vectors, which converged without a restart on the built-in sector
-  // for 3 and 5 distinct modes per ND (every ND): a restart costs more solves than the
-  // extra vectors. Before: blocks of 4, 40 vectors, 68 solves for 5 pairs (restarted);
-  // now 44.
+  // Blocks of 2. A travelling-wave pair starts from [v, iv] and then needs one solve per
+  // block (solveModes' partner): a complex Krylov space of numBlocks vectors, 22 for 5
+  // pairs, converged on the built-in sector without a restart (14 and 17 restarted and
+  // took more solves). A real form takes 2 per block: 12 blocks for 5 modes (24 solves;
+  // 17 blocks took 34).
   opt.blockSize = 2;
-  opt.numBlocks = opt.numModes + 12;
+  opt.numBlocks = form.complexForm() ? opt.numModes + 12 : opt.numModes + 7;
   const auto result = solvers::solveModes(eigen, opt);
   hm.frequenciesHz = result.frequenciesHz;
   for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
@@ -225,8 +228,9 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     log::info(msg.str());
   }
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());
+  FactorCache factors;
   auto solveOne = [&](std::size_t i) {
-    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem);
+    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
     HarmonicModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
     if (rank == 0) log::info(describe(hm, problem.method));

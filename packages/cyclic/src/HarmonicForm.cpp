@@ -1,8 +1,10 @@
 #include "cyclone/cyclic/HarmonicForm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "cyclone/core/Error.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/solvers/SparseCholesky.hpp"
 
@@ -13,61 +15,186 @@ namespace {
 using Real = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Complex = Eigen::SparseMatrix<std::complex<double>, Eigen::ColMajor, int>;
 
-// Copy `copy` of the transform as a sparse 3n x equations matrix.
-Real copyMatrix(const fe::DofTransform& T, int copy) {
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (mesh::Index n = 0; n < T.numNodes(); ++n)
-    for (int d = 0; d < 3; ++d)
-      for (const auto& t : T.terms(n, d, copy)) entries.emplace_back(int(3 * n + d), int(t.equation), t.coefficient);
-  Real out(int(3 * T.numNodes()), int(T.numEquations()));
-  out.setFromTriplets(entries.begin(), entries.end());
-  return out;
+// Per copy of the transform, the map between physical DOFs and unknowns in both
+// directions (compressed): byDof[i] the (unknown, t) that DOF i follows,
+// byUnknown[q] the (DOF, t) that unknown q moves.
+template <class Scalar>
+struct Coupling {
+  struct Entry {
+    int index;
+    Scalar value;
+  };
+  std::vector<int> dofStart, unknownStart;
+  std::vector<Entry> byDof, byUnknown;
+};
+
+template <class Scalar>
+Coupling<Scalar> compress(std::vector<std::vector<typename Coupling<Scalar>::Entry>> perDof, int unknowns) {
+  Coupling<Scalar> c;
+  c.dofStart.push_back(0);
+  std::vector<int> count(std::size_t(unknowns) + 1, 0);
+  for (const auto& list : perDof) {
+    c.byDof.insert(c.byDof.end(), list.begin(), list.end());
+    c.dofStart.push_back(int(c.byDof.size()));
+    for (const auto& e : list) ++count[std::size_t(e.index) + 1];
+  }
+  for (int q = 0; q < unknowns; ++q) count[std::size_t(q) + 1] += count[std::size_t(q)];
+  c.unknownStart = count;
+  c.byUnknown.resize(c.byDof.size());
+  for (std::size_t i = 0; i < perDof.size(); ++i)
+    for (const auto& e : perDof[i]) c.byUnknown[std::size_t(count[std::size_t(e.index)]++)] = {int(i), e.value};
+  return c;
 }
 
-// The complex transform of a paired one, u_a + i u_b = sum_m t_m z_m, split as
-// Re + i Im: copy a of u is Re(t z) = Re t x_2m - Im t x_2m+1, so t = alpha - i beta
-// with alpha, beta the coefficients of x_2m and x_2m+1 in copy a.
-void complexTransform(const fe::DofTransform& T, Real& re, Real& im) {
-  std::vector<Eigen::Triplet<double, int>> a, b;
+// Copy `copy` of the transform, real coefficients on the transform's unknowns.
+Coupling<double> realCoupling(const fe::DofTransform& T, int copy) {
+  std::vector<std::vector<Coupling<double>::Entry>> perDof(std::size_t(3 * T.numNodes()));
   for (mesh::Index n = 0; n < T.numNodes(); ++n)
     for (int d = 0; d < 3; ++d)
+      for (const auto& t : T.terms(n, d, copy)) perDof[std::size_t(3 * n + d)].push_back({int(t.equation), t.coefficient});
+  return compress<double>(std::move(perDof), int(T.numEquations()));
+}
+
+// The complex transform of a paired one, u_a + i u_b = sum_m t_m z_m: copy a of u is
+// Re(t z) = Re t x_2m - Im t x_2m+1, so t = alpha - i beta with alpha, beta the
+// coefficients of x_2m and x_2m+1 in copy a.
+Coupling<std::complex<double>> complexCoupling(const fe::DofTransform& T) {
+  using Entry = Coupling<std::complex<double>>::Entry;
+  std::vector<std::vector<Entry>> perDof(std::size_t(3 * T.numNodes()));
+  for (mesh::Index n = 0; n < T.numNodes(); ++n)
+    for (int d = 0; d < 3; ++d) {
+      auto& list = perDof[std::size_t(3 * n + d)];
       for (const auto& t : T.terms(n, d, 0)) {
-        const int row = int(3 * n + d), column = int(t.equation / 2);
-        if (t.equation % 2 == 0) a.emplace_back(row, column, t.coefficient);
-        else b.emplace_back(row, column, -t.coefficient);
+        const int m = int(t.equation / 2);
+        const std::complex<double> part = t.equation % 2 == 0 ? std::complex<double>(t.coefficient, 0.0)
+                                                              : std::complex<double>(0.0, -t.coefficient);
+        auto it = std::find_if(list.begin(), list.end(), [&](const Entry& e) { return e.index == m; });
+        if (it == list.end()) list.push_back({m, part});
+        else it->value += part;
       }
-  const int rows = int(3 * T.numNodes()), columns = int(T.numEquations() / 2);
-  re.resize(rows, columns);
-  im.resize(rows, columns);
-  re.setFromTriplets(a.begin(), a.end());
-  im.setFromTriplets(b.begin(), b.end());
-}
-
-// T^H A T = (Re^T A Re + Im^T A Im) + i (Re^T A Im - Im^T A Re) for a real symmetric A.
-Complex projectComplex(const Real& A, const Real& re, const Real& im) {
-  const Real Are = A * re, Aim = A * im;
-  const Real ret = re.transpose(), imt = im.transpose();
-  const Real realPart = ret * Are + imt * Aim;
-  const Real imagPart = ret * Aim - imt * Are;
-  Complex Z = realPart.cast<std::complex<double>>() + std::complex<double>(0, 1) * imagPart.cast<std::complex<double>>();
-  Z.prune([](const Eigen::Index&, const Eigen::Index&, const std::complex<double>& v) { return v != 0.0; });
-  return Z;
-}
-
-Eigen::MatrixXcd toComplex(const Eigen::MatrixXd& x) {
-  Eigen::MatrixXcd z(x.rows() / 2, x.cols());
-  for (Eigen::Index j = 0; j < x.cols(); ++j)
-    for (Eigen::Index m = 0; m < z.rows(); ++m) z(m, j) = {x(2 * m, j), x(2 * m + 1, j)};
-  return z;
-}
-
-void toReal(const Eigen::MatrixXcd& z, Eigen::MatrixXd& x) {
-  x.resize(2 * z.rows(), z.cols());
-  for (Eigen::Index j = 0; j < z.cols(); ++j)
-    for (Eigen::Index m = 0; m < z.rows(); ++m) {
-      x(2 * m, j) = z(m, j).real();
-      x(2 * m + 1, j) = z(m, j).imag();
     }
+  return compress<std::complex<double>>(std::move(perDof), int(T.numEquations() / 2));
+}
+
+double conjugate(double x) { return x; }
+std::complex<double> conjugate(const std::complex<double>& z) { return std::conj(z); }
+
+// The lower triangles of T^H K T and T^H M T summed over the copies, in one pass over
+// the sector's columns
+// (Gustavson's scatter: column q of the result gathers, for every DOF j that q moves,
+// column j of K and M mapped onto the unknowns its rows follow). K and M share one
+// pattern. The result keeps the structural pattern (no entry dropped for being zero),
+// so every nodal diameter of one kind gets the same pattern and the same symbolic
+// factorization.
+template <class Scalar>
+void project(const Real& K, const Real& M, const std::vector<Coupling<Scalar>>& copies, int unknowns,
+             Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& ZK, Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& ZM) {
+  const int* outer = K.outerIndexPtr();
+  const int* inner = K.innerIndexPtr();
+  const double* k = K.valuePtr();
+  const double* m = M.valuePtr();
+  std::vector<Scalar> sumK(static_cast<std::size_t>(unknowns)), sumM(static_cast<std::size_t>(unknowns));
+  std::vector<int> seenIn(std::size_t(unknowns), -1), rows;
+  std::vector<int> start(1, 0), index;
+  std::vector<Scalar> valueK, valueM;
+  index.reserve(std::size_t(K.nonZeros()));
+  valueK.reserve(std::size_t(K.nonZeros()));
+  valueM.reserve(std::size_t(K.nonZeros()));
+  for (int q = 0; q < unknowns; ++q) {
+    rows.clear();
+    for (const auto& c : copies)
+      for (int a = c.unknownStart[std::size_t(q)]; a < c.unknownStart[std::size_t(q) + 1]; ++a) {
+        const auto& [j, t] = c.byUnknown[std::size_t(a)];
+        for (int p = outer[j]; p < outer[j + 1]; ++p) {
+          const int i = inner[p];
+          for (int b = c.dofStart[std::size_t(i)]; b < c.dofStart[std::size_t(i) + 1]; ++b) {
+            const auto& [u, s] = c.byDof[std::size_t(b)];
+            if (u < q) continue;  // the lower triangle only: the forms are Hermitian
+            if (seenIn[std::size_t(u)] != q) {
+              seenIn[std::size_t(u)] = q;
+              rows.push_back(u);
+              sumK[std::size_t(u)] = sumM[std::size_t(u)] = Scalar(0);
+            }
+            const Scalar st = conjugate(s) * t;
+            sumK[std::size_t(u)] += st * k[p];
+            sumM[std::size_t(u)] += st * m[p];
+          }
+        }
+      }
+    std::sort(rows.begin(), rows.end());
+    for (int u : rows) {
+      index.push_back(u);
+      valueK.push_back(sumK[std::size_t(u)]);
+      valueM.push_back(sumM[std::size_t(u)]);
+    }
+    start.push_back(int(index.size()));
+  }
+  using Matrix = Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>;
+  ZK = Eigen::Map<const Matrix>(unknowns, unknowns, Eigen::Index(index.size()), start.data(), index.data(), valueK.data());
+  ZM = Eigen::Map<const Matrix>(unknowns, unknowns, Eigen::Index(index.size()), start.data(), index.data(), valueM.data());
+}
+
+// y = A x for a Hermitian A stored as its lower triangle, every column of x in one
+// pass over A (the product is bound by reading A).
+template <class Scalar>
+void hermitianProduct(const Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& A, const Scalar* x, Scalar* y,
+                      Eigen::Index columns) {
+  const Eigen::Index n = A.rows();
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const Scalar* value = A.valuePtr();
+  std::fill(y, y + n * columns, Scalar(0));
+  for (Eigen::Index c = 0; c < n; ++c)
+    for (int p = outer[c]; p < outer[c + 1]; ++p) {
+      const Eigen::Index r = inner[p];
+      const Scalar a = value[p];
+      for (Eigen::Index j = 0; j < columns; ++j) {
+        y[j * n + r] += a * x[j * n + c];
+        if (r != c) y[j * n + c] += conjugate(a) * x[j * n + r];
+      }
+    }
+}
+
+// The real-form unknowns (x_2m, x_2m+1) = (Re z_m, Im z_m) are the memory layout of a
+// complex column, so a real-form block is read and written as complex in place.
+const std::complex<double>* asComplex(const Eigen::MatrixXd& x) {
+  return reinterpret_cast<const std::complex<double>*>(x.data());
+}
+std::complex<double>* asComplex(Eigen::MatrixXd& x) { return reinterpret_cast<std::complex<double>*>(x.data()); }
+
+// Frobenius norm of a Hermitian matrix from its lower triangle.
+template <class Matrix>
+double hermitianNorm(const Matrix& lower) {
+  double sum = 0;
+  for (Eigen::Index c = 0; c < lower.outerSize(); ++c)
+    for (typename Matrix::InnerIterator it(lower, c); it; ++it)
+      sum += (it.row() == it.col() ? 1.0 : 2.0) * std::norm(it.value());
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+struct FactorCache::Impl {
+  std::unique_ptr<solvers::SparseCholesky<double>> real;
+  std::unique_ptr<solvers::SparseCholesky<std::complex<double>>> complex;
+};
+
+FactorCache::FactorCache() : impl_(std::make_unique<Impl>()) {}
+FactorCache::~FactorCache() = default;
+
+namespace {
+
+// A factor of A, the cached one refactored when A has its pattern.
+template <class Scalar, class Matrix>
+void factorInto(std::unique_ptr<solvers::SparseCholesky<Scalar>>& slot, const Matrix& A) {
+  try {
+    if (slot && slot->refactor(A)) return;
+  } catch (...) {
+    slot.reset();  // a failed numeric factorization leaves no usable factor
+    throw;
+  }
+  slot.reset();  // free the old factor before the new one is built
+  slot = std::make_unique<solvers::SparseCholesky<Scalar>>(A);
 }
 
 }  // namespace
@@ -75,10 +202,10 @@ void toReal(const Eigen::MatrixXcd& z, Eigen::MatrixXd& x) {
 struct HarmonicForm::Impl {
   bool complexForm = false;
   long long size = 0;
-  Real K, M;      // real form
-  Complex ZK, ZM; // complex form
-  std::unique_ptr<solvers::SparseCholesky<double>> realFactor;
-  std::unique_ptr<solvers::SparseCholesky<std::complex<double>>> complexFactor;
+  Real K, M;      // real form, lower triangles
+  Complex ZK, ZM; // complex form, lower triangles
+  FactorCache own;
+  FactorCache::Impl* factors = nullptr;  // own's or a caller's
 };
 
 HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform& transform)
@@ -86,20 +213,16 @@ HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform&
   auto& I = *impl_;
   I.size = transform.numEquations();
   I.complexForm = transform.copies() == 2 && travellingWavePaired(transform);
+  if (!std::equal(sector.K.outerIndexPtr(), sector.K.outerIndexPtr() + sector.K.cols() + 1, sector.M.outerIndexPtr()) ||
+      !std::equal(sector.K.innerIndexPtr(), sector.K.innerIndexPtr() + sector.K.nonZeros(), sector.M.innerIndexPtr()))
+    throw Error("HarmonicForm: the sector's K and M must share one pattern");
   if (I.complexForm) {
-    Real re, im;
-    complexTransform(transform, re, im);
-    I.ZK = projectComplex(sector.K, re, im);
-    I.ZM = projectComplex(sector.M, re, im);
+    project<std::complex<double>>(sector.K, sector.M, {complexCoupling(transform)}, int(I.size / 2), I.ZK, I.ZM);
     return;
   }
-  for (int copy = 0; copy < transform.copies(); ++copy) {
-    const Real T = copyMatrix(transform, copy);
-    const Real Tt = T.transpose();
-    const Real K = Tt * (sector.K * T), M = Tt * (sector.M * T);
-    if (copy == 0) I.K = K, I.M = M;
-    else I.K += K, I.M += M;
-  }
+  std::vector<Coupling<double>> copies;
+  for (int copy = 0; copy < transform.copies(); ++copy) copies.push_back(realCoupling(transform, copy));
+  project<double>(sector.K, sector.M, copies, int(I.size), I.K, I.M);
 }
 
 HarmonicForm::~HarmonicForm() = default;
@@ -110,13 +233,15 @@ bool HarmonicForm::complexForm() const { return impl_->complexForm; }
 long long HarmonicForm::size() const { return impl_->size; }
 
 void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  if (impl_->complexForm) toReal(impl_->ZK * toComplex(x), y);
-  else y = impl_->K * x;
+  y.resize(x.rows(), x.cols());
+  if (impl_->complexForm) hermitianProduct(impl_->ZK, asComplex(x), asComplex(y), x.cols());
+  else hermitianProduct(impl_->K, x.data(), y.data(), x.cols());
 }
 
 void HarmonicForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  if (impl_->complexForm) toReal(impl_->ZM * toComplex(x), y);
-  else y = impl_->M * x;
+  y.resize(x.rows(), x.cols());
+  if (impl_->complexForm) hermitianProduct(impl_->ZM, asComplex(x), asComplex(y), x.cols());
+  else hermitianProduct(impl_->M, x.data(), y.data(), x.cols());
 }
 
 void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
@@ -128,31 +253,74 @@ void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
 }
 
 // The real form [[P, -Q], [Q, P]] holds every entry of P + iQ twice.
-double HarmonicForm::normK() const { return impl_->complexForm ? std::sqrt(2.0) * impl_->ZK.norm() : impl_->K.norm(); }
-double HarmonicForm::normM() const { return impl_->complexForm ? std::sqrt(2.0) * impl_->ZM.norm() : impl_->M.norm(); }
-
-void HarmonicForm::factor(double sigma) {
-  auto& I = *impl_;
-  I.realFactor.reset();
-  I.complexFactor.reset();
-  // At sigma = 0 (a constrained sector, the usual case) K itself, without a copy.
-  if (I.complexForm)
-    I.complexFactor = std::make_unique<solvers::SparseCholesky<std::complex<double>>>(
-        sigma == 0.0 ? I.ZK : Complex(I.ZK - sigma * I.ZM));
-  else
-    I.realFactor = std::make_unique<solvers::SparseCholesky<double>>(sigma == 0.0 ? I.K : Real(I.K - sigma * I.M));
+double HarmonicForm::normK() const {
+  return impl_->complexForm ? std::sqrt(2.0) * hermitianNorm(impl_->ZK) : hermitianNorm(impl_->K);
+}
+double HarmonicForm::normM() const {
+  return impl_->complexForm ? std::sqrt(2.0) * hermitianNorm(impl_->ZM) : hermitianNorm(impl_->M);
 }
 
-bool HarmonicForm::factored() const { return impl_->realFactor || impl_->complexFactor; }
+void HarmonicForm::factor(double sigma) { factor(sigma, impl_->own); }
+
+void HarmonicForm::factor(double sigma, FactorCache& cache) {
+  auto& I = *impl_;
+  I.factors = nullptr;
+  auto& slots = *cache.impl_;
+  // One factor at a time: the other kind's (a real nodal diameter's among pairs) goes.
+  if (I.complexForm) slots.real.reset();
+  else slots.complex.reset();
+  // At sigma = 0 (a constrained sector, the usual case) K itself, without a copy.
+  if (I.complexForm) {
+    if (sigma == 0.0) factorInto(slots.complex, I.ZK);
+    else factorInto(slots.complex, Complex(I.ZK - sigma * I.ZM));
+  } else {
+    if (sigma == 0.0) factorInto(slots.real, I.K);
+    else factorInto(slots.real, Real(I.K - sigma * I.M));
+  }
+  I.factors = &slots;
+}
+
+bool HarmonicForm::factored() const { return impl_->factors != nullptr; }
+
+namespace {
+
+// `solve` of a factor applied to a real-form block, read and written as complex in place
+// in complex form.
+template <class RealSolve, class ComplexSolve>
+void solveBlock(bool complexForm, const Eigen::MatrixXd& x, Eigen::MatrixXd& y, RealSolve real, ComplexSolve complex) {
+  y.resize(x.rows(), x.cols());
+  if (complexForm) {
+    const Eigen::Index n = x.rows() / 2;
+    const Eigen::Map<const Eigen::MatrixXcd> z(asComplex(x), n, x.cols());
+    Eigen::Map<Eigen::MatrixXcd>(asComplex(y), n, x.cols()) = complex(Eigen::MatrixXcd(z));
+  } else {
+    y = real(x);
+  }
+}
+
+}  // namespace
 
 void HarmonicForm::solveShifted(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  if (impl_->complexForm) toReal(impl_->complexFactor->solve(toComplex(x)), y);
-  else y = impl_->realFactor->solve(x);
+  const auto& f = *impl_->factors;
+  solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solve(b); },
+             [&](const Eigen::MatrixXcd& b) { return f.complex->solve(b); });
+}
+
+void HarmonicForm::solveLower(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  const auto& f = *impl_->factors;
+  solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solveLower(b); },
+             [&](const Eigen::MatrixXcd& b) { return f.complex->solveLower(b); });
+}
+
+void HarmonicForm::solveUpper(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  const auto& f = *impl_->factors;
+  solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solveUpper(b); },
+             [&](const Eigen::MatrixXcd& b) { return f.complex->solveUpper(b); });
 }
 
 double HarmonicForm::factorNonzeros() const {
-  if (impl_->complexFactor) return impl_->complexFactor->factorNonzeros();
-  return impl_->realFactor ? impl_->realFactor->factorNonzeros() : 0.0;
+  if (!impl_->factors) return 0.0;
+  return impl_->complexForm ? impl_->factors->complex->factorNonzeros() : impl_->factors->real->factorNonzeros();
 }
 
 }  // namespace cyclone::cyclic

@@ -286,17 +286,23 @@ ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, con
   return out;
 }
 
+// `op` is (K - sigma M)^{-1} M with the M inner product (standardForm null), or the
+// standard form L^{-1} P M P^T L^{-H} of the factor P (K - sigma M) P^T = L L^H with the
+// plain inner product (no M applies in Anasazi's orthogonalizations), whose vectors
+// `standardForm` (P^T L^{-H}) takes back to the pencil's.
 ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, const Teuchos::RCP<const OP>& M,
                                     const Teuchos::RCP<MV>& X0, long long n, const ModalOptions& opt,
-                                    const OP* partner = nullptr) {
+                                    const OP* partner = nullptr, const OP* standardForm = nullptr) {
   const int bs = int(X0->getNumVectors());
   const int nev = opt.numModes;
+  const int sought = nev;
   // A Krylov space of about 3 nev keeps restarts few (each restart costs solves).
-  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * nev + bs - 1) / bs + 2);
+  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * sought + bs - 1) / bs + 2);
   nb = int(std::min<long long>(nb, std::max<long long>(2, n / bs - 1)));
-  auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, M, X0));
+  auto problem = standardForm ? Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, X0))
+                              : Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, M, X0));
   problem->setHermitian(true);
-  problem->setNEV(nev);
+  problem->setNEV(sought);
   if (!problem->setProblem()) throw SolverError("Anasazi rejected the eigenproblem set-up");
 
   Teuchos::ParameterList pl;
@@ -309,19 +315,27 @@ ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, con
   Anasazi::BlockKrylovSchurSolMgr<double, MV, OP> manager(problem, pl);
   const auto status = manager.solve();
   const auto& sol = problem->getSolution();
-  if (status != Anasazi::Converged || sol.numVecs < nev)
-    throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
+  if (status != Anasazi::Converged || sol.numVecs < sought)
+    throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(sought) +
                       " modes converged after " + std::to_string(opt.maxRestarts) +
                       " restarts (raise the restarts or block count, or move the shift)");
   std::vector<double> listed;
   for (int i = 0; i < sol.numVecs; ++i) listed.push_back(opt.shift + 1.0 / sol.Evals[i].realpart);
   std::sort(listed.begin(), listed.end());
-  auto modes = rayleighRitz(K, *M, partner, *sol.Evecs, nev);
-  for (int i = 0; i < nev; ++i)
-    if (!(std::abs(modes.lambda[i] - listed[i]) <= 1e-6 * (std::abs(listed[i]) + std::abs(opt.shift))))
+  Teuchos::RCP<const MV> vectors = sol.Evecs;
+  if (standardForm) {
+    auto pencil = Teuchos::rcp(new MV(sol.Evecs->getMap(), sol.Evecs->getNumVectors()));
+    standardForm->apply(*sol.Evecs, *pencil);
+    vectors = pencil;
+  }
+  auto modes = rayleighRitz(K, *M, partner, *vectors, nev);
+  for (int i = 0; i < nev; ++i) {
+    const double value = listed[std::size_t(i)];
+    if (!(std::abs(modes.lambda[i] - value) <= 1e-6 * (std::abs(value) + std::abs(opt.shift))))
       throw SolverError("eigen-solution: Anasazi's vectors do not span its eigenvalues (mode " + std::to_string(i + 1) +
-                        ": " + std::to_string(listed[i]) + " listed, " + std::to_string(modes.lambda[i]) +
+                        ": " + std::to_string(value) + " listed, " + std::to_string(modes.lambda[i]) +
                         " in the span of the vectors)");
+  }
   return modes;
 }
 
@@ -405,6 +419,34 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
   return result;
 }
 
+using BlockApply = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
+
+// An operator A that commutes with the partner J (J^2 = -1), on blocks of 2.
+// Started from [v, Jv], every block of Anasazi's Krylov space stays [w, +-Jw] to
+// rounding: orthogonalizing against a J-invariant basis commutes with J, and w is
+// orthogonal to Jw in any inner product J is skew for. Then A [w, +-Jw] =
+// [Aw, +-J Aw]: one solve instead of two. A block that is not so (beyond 1e-12)
+// is applied column by column as given.
+BlockApply pairedApply(BlockApply apply, BlockApply partner) {
+  return [apply = std::move(apply), partner = std::move(partner)](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+    if (x.cols() == 2) {
+      Eigen::MatrixXd first = x.col(0), turned, image, turnedImage;
+      partner(first, turned);
+      const double scale = first.norm();
+      for (double sign : {1.0, -1.0})
+        if ((x.col(1) - sign * turned).norm() <= 1e-12 * scale) {
+          apply(first, image);
+          partner(image, turnedImage);
+          y.resize(x.rows(), 2);
+          y.col(0) = image;
+          y.col(1) = sign * turnedImage;
+          return;
+        }
+    }
+    apply(x, y);
+  };
+}
+
 ModalResult solveModes(const ShiftInvertedProblem& problem, const ModalOptions& options) {
   ModalOptions opt = options;
   opt.shift = problem.shift;
@@ -416,12 +458,26 @@ ModalResult solveModes(const ShiftInvertedProblem& problem, const ModalOptions& 
   Timer timer;
   const auto map = Teuchos::rcp(new linalg::Map(n, 0, Teuchos::rcp(new Teuchos::SerialComm<int>())));
   auto K = Teuchos::rcp(new BlockFunctionOperator(map, problem.applyK));
-  auto M = Teuchos::rcp(new BlockFunctionOperator(map, problem.applyM));
-  auto op = Teuchos::rcp(new BlockFunctionOperator(map, [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
-    Eigen::MatrixXd mx(x.rows(), x.cols());
-    problem.applyM(x, mx);
-    problem.solveShifted(mx, y);
-  }));
+  auto M = Teuchos::rcp(
+      new BlockFunctionOperator(map, problem.partner ? pairedApply(problem.applyM, problem.partner) : problem.applyM));
+  const bool standard = problem.solveLower && problem.solveUpper;
+  int solved = 0;  // right-hand sides through the factor
+  const BlockApply shiftInverted = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+    solved += int(x.cols());
+    Eigen::MatrixXd u(x.rows(), x.cols()), mu(x.rows(), x.cols());
+    if (!standard) {
+      problem.applyM(x, mu);
+      problem.solveShifted(mu, y);
+      return;
+    }
+    problem.solveUpper(x, u);
+    problem.applyM(u, mu);
+    problem.solveLower(mu, y);
+  };
+  auto op = Teuchos::rcp(new BlockFunctionOperator(
+      map, problem.partner ? pairedApply(shiftInverted, problem.partner) : shiftInverted));
+  Teuchos::RCP<BlockFunctionOperator> toPencil;
+  if (standard) toPencil = Teuchos::rcp(new BlockFunctionOperator(map, problem.solveUpper));
   // A seeded start block: the same on any process and whatever was solved before.
   const int bs = std::max(2, opt.blockSize);
   auto X0 = Teuchos::rcp(new MV(map, bs));
@@ -435,10 +491,19 @@ ModalResult solveModes(const ShiftInvertedProblem& problem, const ModalOptions& 
   result.shift = opt.shift;
   Teuchos::RCP<BlockFunctionOperator> partner;
   if (problem.partner) partner = Teuchos::rcp(new BlockFunctionOperator(map, problem.partner));
-  const auto modes = blockKrylovSchur(*K, op, M, X0, n, opt, partner.get());
+  if (problem.partner && bs == 2) {
+    // The start block [v, Jv]: see pairedApply.
+    Eigen::MatrixXd v(n, 1), jv;
+    const auto first = X0->getData(0);
+    for (long long i = 0; i < n; ++i) v(i, 0) = first[i];
+    problem.partner(v, jv);
+    auto second = X0->getDataNonConst(1);
+    for (long long i = 0; i < n; ++i) second[i] = jv(i, 0);
+  }
+  const auto modes = blockKrylovSchur(*K, op, M, X0, n, opt, partner.get(), toPencil.get());
   finishModes(*K, *M, problem.normK, problem.normM, modes.lambda, modes.vectors, result);
   checkResiduals(result);
-  result.operatorApplies = op->applies;
+  result.operatorApplies = solved;
   result.solveSeconds = timer.seconds();
   return result;
 }

@@ -8,9 +8,10 @@
 // z_m = x_2m + i x_2m+1: the real 2-copy form is [[P, -Q], [Q, P]] on the pairs and
 // P + iQ holds the same information at a quarter of the storage; CHOLMOD factors it
 // (complex LL^H) in about half the flops of the real form. Everything outside acts on
-// real-form vectors (the unknowns of the transform), converted per call.
+// real-form vectors (the unknowns of the transform), read in place as complex ones
+// (a pair (x_2m, x_2m+1) is the memory layout of a complex number).
 // Otherwise (k = 0, N/2, or a transform that does not pair) the real form
-// sum over copies of T_c^T A T_c.
+// sum over copies of T_c^T A T_c. Both forms keep only their lower triangles.
 #include <complex>
 #include <memory>
 
@@ -21,6 +22,23 @@
 #include "cyclone/fe/DofTransform.hpp"
 
 namespace cyclone::cyclic {
+
+/// Factorizations carried from one nodal diameter to the next. Every travelling-wave
+/// nodal diameter projects onto the same pattern (and so does every real one), so
+/// CHOLMOD's symbolic analysis (ordering, elimination tree, supernodes) is done once
+/// per pattern and each further nodal diameter only factors numerically.
+class FactorCache {
+public:
+  FactorCache();
+  ~FactorCache();
+  FactorCache(const FactorCache&) = delete;
+  FactorCache& operator=(const FactorCache&) = delete;
+
+private:
+  friend class HarmonicForm;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 class HarmonicForm {
 public:
@@ -43,9 +61,15 @@ public:
 
   /// Factors K - sigma M; throws SolverError when it is not positive definite.
   void factor(double sigma);
+  /// The same, keeping the factor in `cache` (reusing its symbolic analysis when the
+  /// pattern matches): solveShifted then holds until the cache factors another form.
+  void factor(double sigma, FactorCache& cache);
   bool factored() const;
   /// y = (K - sigma M)^{-1} x after factor().
   void solveShifted(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  /// Its halves (SparseCholesky::solveLower, solveUpper) on real-form blocks.
+  void solveLower(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  void solveUpper(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   double factorNonzeros() const;  ///< nnz(L) (complex entries in complex form)
 
 private:

@@ -46,7 +46,7 @@ struct ModalResult {
   std::vector<double> frequenciesHz;
   std::vector<double> residuals;     ///< ||K x - lambda M x|| / ((||K||_F + |lambda| ||M||_F) ||x||)
   Teuchos::RCP<linalg::MultiVector> modes;  ///< mass-normalised: x^T M x = 1
-  int operatorApplies = 0;
+  int operatorApplies = 0;  ///< vectors through the operator (shift-invert: right-hand sides solved)
   double shift = 0;  ///< the shift used (chosen when automatic; 0 for LOBPCG)
   double factorSeconds = 0, solveSeconds = 0;
 };
@@ -63,6 +63,11 @@ struct ShiftInvertedProblem {
   double shift = 0;                 ///< sigma: solveShifted applies (K - sigma M)^{-1}
   double normK = 0, normM = 0;      ///< Frobenius norms, for the modes' backward errors
   std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)> applyK, applyM, solveShifted;
+  /// Optional, both or neither: the halves of solveShifted for the factor
+  /// P (K - sigma M) P^T = L L^T, y = L^{-1} P x and y = P^T L^{-T} x. Then the
+  /// eigen-solver iterates on the standard form L^{-1} P M P^T L^{-T}: no M in its
+  /// inner products, which would otherwise cost several M products per solve.
+  std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)> solveLower, solveUpper;
   /// Optional: a map that commutes with K and M and takes each eigenvector to another of
   /// the same eigenvalue (i on a travelling-wave real form), so that every degenerate
   /// pair is returned whole.

@@ -25,8 +25,18 @@ public:
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
+  /// Factors A again with the symbolic analysis (ordering, supernodes) of the first
+  /// matrix, when A has exactly its pattern (compressed); false, and nothing changed,
+  /// otherwise. Throws SolverError like the constructor.
+  bool refactor(const Matrix& A);
+
   /// A^{-1} b, all columns at once.
   Dense solve(const Dense& b) const;
+  /// The halves of the solve, with the factor P A P^T = L L^H (P the fill-reducing
+  /// permutation): L^{-1} P b and P^T L^{-H} b, so that A^{-1} = solveUpper(solveLower).
+  /// They turn a generalized eigenproblem into a standard one, L^{-1} P M P^T L^{-H}.
+  Dense solveLower(const Dense& b) const;
+  Dense solveUpper(const Dense& b) const;
 
   double factorNonzeros() const;  ///< nnz(L)
   double factorFlops() const;     ///< CHOLMOD's flop count of the factorization
