@@ -31,16 +31,23 @@ TVector& tpetra(NOX::Abstract::Vector& v) {
   return *Extract::getTpetraVector(dynamic_cast<NOX::Thyra::Vector&>(v).getThyraRCPVector());
 }
 
+// Shared by a group and its copies (NOX copies groups in line searches and Broyden).
+struct JacobianCount {
+  int factored = 0;
+  bool approximateUsed = false;
+};
+
 class Group : public NOX::Abstract::Group {
 public:
-  Group(const NewtonProblem& problem, const linalg::MultiVector& u0) : problem_(problem) {
+  Group(const NewtonProblem& problem, const linalg::MultiVector& u0)
+      : problem_(problem), count_(std::make_shared<JacobianCount>()) {
     auto x = Teuchos::rcp(new TVector(u0.getMap()));
     x->assign(*u0.getVector(0));
     x_ = wrap(x);
     f_ = wrap(Teuchos::rcp(new TVector(u0.getMap())));
     newton_ = wrap(Teuchos::rcp(new TVector(u0.getMap())));
   }
-  Group(const Group& g, NOX::CopyType type) : problem_(g.problem_) {
+  Group(const Group& g, NOX::CopyType type) : problem_(g.problem_), count_(g.count_) {
     x_ = Teuchos::rcp_dynamic_cast<NOX::Thyra::Vector>(g.x_->clone(type));
     f_ = Teuchos::rcp_dynamic_cast<NOX::Thyra::Vector>(g.f_->clone(type));
     newton_ = Teuchos::rcp_dynamic_cast<NOX::Thyra::Vector>(g.newton_->clone(type));
@@ -75,15 +82,28 @@ public:
   }
   ReturnType computeJacobian() override {
     if (validJ_) return Ok;
+    if (problem_.approximateFactor) {
+      // Broyden's first Jacobian is the given approximation, already factored. A
+      // restart (the residual fell by less than half) ends the solve unconverged: the
+      // caller then solves with Newton.
+      if (count_->approximateUsed) return Failed;
+      count_->approximateUsed = true;
+      J_ = problem_.approximateJacobian;
+      factor_ = problem_.approximateFactor;
+      validJ_ = true;
+      return Ok;
+    }
     J_ = problem_.jacobian(tpetra(*x_));
     try {
       factor_ = std::make_shared<DirectSolver>(*J_);
     } catch (const SolverError&) {
       return Failed;  // not positive definite: the caller's step is too large
     }
+    ++count_->factored;
     validJ_ = true;
     return Ok;
   }
+  int jacobiansFactored() const { return count_->factored; }
   ReturnType computeNewton(Teuchos::ParameterList&) override {
     if (validNewton_) return Ok;
     if (computeF() != Ok || computeJacobian() != Ok) return Failed;
@@ -131,8 +151,9 @@ private:
   Teuchos::RCP<NOX::Thyra::Vector> x_, f_, newton_;
   bool validF_ = false, validJ_ = false, validNewton_ = false;
   double normF_ = 0;
-  Teuchos::RCP<linalg::Matrix> J_;
-  std::shared_ptr<DirectSolver> factor_;  // shared by copies: NOX copies groups in line searches
+  std::shared_ptr<JacobianCount> count_;
+  Teuchos::RCP<const linalg::Matrix> J_;
+  std::shared_ptr<const DirectSolver> factor_;  // shared by copies: NOX copies groups in line searches
 };
 
 }  // namespace
@@ -144,7 +165,17 @@ NewtonReport solveNewton(const NewtonProblem& problem, linalg::MultiVector& u, c
   params->sublist("Line Search").set("Method", "Backtrack");
   params->sublist("Line Search").sublist("Backtrack").set("Max Iters", 8);
   params->sublist("Printing").set("Output Information", 0);  // failures are reported by the caller
-  params->sublist("Direction").set("Method", "Newton");
+  if (problem.approximateFactor) {
+    if (!problem.approximateJacobian) throw Error("solveNewton: an approximate factor needs its matrix");
+    // Restarted (with the true Jacobian) only when the residual falls by less than half.
+    auto& broyden = params->sublist("Direction").sublist("Broyden");
+    broyden.set("Restart Frequency", options.maxIterations + 1);
+    broyden.set("Memory", options.maxIterations + 1);
+    broyden.set("Max Convergence Rate", 0.5);
+    params->sublist("Direction").set("Method", "Broyden");
+  } else {
+    params->sublist("Direction").set("Method", "Newton");
+  }
   auto converged = Teuchos::rcp(new NOX::StatusTest::NormF(options.absoluteTolerance, NOX::StatusTest::NormF::Unscaled));
   auto combo = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   combo->addStatusTest(converged);
@@ -163,6 +194,7 @@ NewtonReport solveNewton(const NewtonProblem& problem, linalg::MultiVector& u, c
   NewtonReport report;
   report.converged = status == NOX::StatusTest::Converged;
   report.iterations = solver->getNumIterations();
+  report.jacobians = group->jacobiansFactored();
   report.residualNorm = final.getNormF();
   u.getVectorNonConst(0)->assign(tpetra(final.getX()));
   return report;

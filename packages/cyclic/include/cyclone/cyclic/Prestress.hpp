@@ -4,8 +4,8 @@
 // Omega is then K + K_sigma(sigma(u)) - K_Omega (stress stiffening, spin
 // softening). Nonlinear (NLGEOM): Total Lagrangian St Venant-Kirchhoff with the
 // centrifugal load on the deformed position, f(u) = f_Omega + K_Omega u, solved
-// by NOX's line-search Newton (backtracking) with load stepping on Omega^2 and
-// step cutting; the modal tangent is K_T(u) (material at the deformed state +
+// by NOX's line search (backtracking) with Broyden directions started from the
+// linear stiffness's factor, load stepping on Omega^2 and step cutting; the modal tangent is K_T(u) (material at the deformed state +
 // geometric with the 2nd Piola-Kirchhoff stress) - K_Omega. Coriolis terms are neglected (a real symmetric eigenproblem; the
 // travelling-wave splitting they cause is small for discs stiff in-plane).
 // For a cyclic sector the prestress is solved with the k = 0 transform.
@@ -28,6 +28,7 @@ struct PrestressState {
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 6>> stress;
   bool nonlinear = false;
   int loadSteps = 0, newtonIterations = 0;
+  int tangentFactorizations = 0;  ///< K_T factored (besides the linear stiffness)
   double solveSeconds = 0;
 };
 
