@@ -7,6 +7,9 @@
 // ranks, from its log; ccx: the kernel's high-water mark) and the largest relative
 // frequency difference to ccx with 2 threads.
 //   build/regression/modal_benchmark [--mesh-size 2.7] [--work /tmp/cyclone_modal_benchmark]
+// Large sectors (which path fits a machine): --large runs Cyclone alone on one rank,
+// shift-invert (CHOLMOD) and LOBPCG + MueLu, and compares their frequencies:
+//   build/regression/modal_benchmark --mesh-size 1.45 --large
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,21 +52,22 @@ double runShell(const std::string& command) {
 }
 
 // Cyclone's scene: the same sector and case as the ccx deck.
-void writeScene(const fs::path& path, const fs::path& out, double meshSize) {
+void writeScene(const fs::path& path, const fs::path& out, double meshSize, const std::string& eigenSolver) {
   std::ofstream f(path);
   f << "cyclone:\n  analysis: [modal]\n  output_directory: " << out.string()
     << "\n  mesh:\n    source: shrouded_sector\n    shrouded_sector:\n      sectors: " << kSectors
     << "\n      mesh_size: " << meshSize
     << "\n  constraints:\n    fixed_node_sets: [bore]\n  loads:\n    speed_rpm: " << kRpm
     << "\n  cyclic:\n    configuration: fixed_shroud\n  modal:\n    modes_per_nd: " << kModes
-    << "\n    speeds_rpm: [" << kRpm << "]\n    prestress: nonlinear\n";
+    << "\n    speeds_rpm: [" << kRpm << "]\n    prestress: nonlinear\n    eigen_solver: " << eigenSolver << "\n";
 }
 
-Run runCyclone(const std::string& name, const std::string& launcher, const fs::path& work, double meshSize) {
+Run runCyclone(const std::string& name, const std::string& launcher, const fs::path& work, double meshSize,
+               const std::string& eigenSolver = "shift_invert") {
   Run run;
   run.name = name;
   const fs::path out = work / name, scene = work / (name + ".yaml"), log = work / (name + ".log");
-  writeScene(scene, out, meshSize);
+  writeScene(scene, out, meshSize, eigenSolver);
   run.seconds = runShell(launcher + " " + CYCLONE_EXECUTABLE + " run " + scene.string() + " > " + log.string() + " 2>&1");
   // "peak memory after the modes at ...: X MB[ on rank 0, Y MB summed over N ranks]"
   std::ifstream in(log);
@@ -123,10 +127,16 @@ double worstDifference(const Run& a, const Run& b) {
 
 int main(int argc, char** argv) {
   double meshSize = 2.7;
+  bool large = false;
   fs::path work = fs::temp_directory_path() / "cyclone_modal_benchmark";
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--mesh-size")) meshSize = std::atof(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--work")) work = argv[i + 1];
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--large")) large = true;
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--mesh-size")) meshSize = std::atof(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--work")) work = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: modal_benchmark [--mesh-size h] [--work dir] [--large]\n");
+      return 2;
+    }
   }
   fs::create_directories(work);
   mesh::ShroudedSectorParameters p;
@@ -141,6 +151,17 @@ int main(int argc, char** argv) {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   std::vector<Run> runs;
+  if (large) {
+    for (const char* solver : {"shift_invert", "lobpcg"}) {
+      runs.push_back(runCyclone(std::string("cyclone_") + solver, "", work, meshSize, solver));
+      std::printf("  %-20s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
+    }
+    std::printf("\n| run | wall time | peak memory | max |f / f_shift_invert - 1| |\n|---|---|---|---|\n");
+    for (const auto& r : runs)
+      std::printf("| %s | %.1f s | %.0f MB | %.1e |\n", r.name.c_str(), r.seconds, r.peakMb,
+                  worstDifference(r, runs.front()));
+    return 0;
+  }
   runs.push_back(runCyclone("cyclone_np1", "", work, meshSize));
   std::printf("  %-12s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
   runs.push_back(runCyclone("cyclone_np2",
