@@ -295,14 +295,13 @@ ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, con
                                     const OP* partner = nullptr, const OP* standardForm = nullptr) {
   const int bs = int(X0->getNumVectors());
   const int nev = opt.numModes;
-  const int sought = nev;
   // A Krylov space of about 3 nev keeps restarts few (each restart costs solves).
-  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * sought + bs - 1) / bs + 2);
+  int nb = opt.numBlocks > 0 ? opt.numBlocks : std::max(6, (3 * nev + bs - 1) / bs + 2);
   nb = int(std::min<long long>(nb, std::max<long long>(2, n / bs - 1)));
   auto problem = standardForm ? Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, X0))
                               : Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(op, M, X0));
   problem->setHermitian(true);
-  problem->setNEV(sought);
+  problem->setNEV(nev);
   if (!problem->setProblem()) throw SolverError("Anasazi rejected the eigenproblem set-up");
 
   Teuchos::ParameterList pl;
@@ -315,8 +314,8 @@ ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, con
   Anasazi::BlockKrylovSchurSolMgr<double, MV, OP> manager(problem, pl);
   const auto status = manager.solve();
   const auto& sol = problem->getSolution();
-  if (status != Anasazi::Converged || sol.numVecs < sought)
-    throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(sought) +
+  if (status != Anasazi::Converged || sol.numVecs < nev)
+    throw SolverError("eigen-solution: only " + std::to_string(sol.numVecs) + " of " + std::to_string(nev) +
                       " modes converged after " + std::to_string(opt.maxRestarts) +
                       " restarts (raise the restarts or block count, or move the shift)");
   std::vector<double> listed;
@@ -329,13 +328,11 @@ ShiftInvertedModes blockKrylovSchur(const OP& K, const Teuchos::RCP<OP>& op, con
     vectors = pencil;
   }
   auto modes = rayleighRitz(K, *M, partner, *vectors, nev);
-  for (int i = 0; i < nev; ++i) {
-    const double value = listed[std::size_t(i)];
-    if (!(std::abs(modes.lambda[i] - value) <= 1e-6 * (std::abs(value) + std::abs(opt.shift))))
+  for (int i = 0; i < nev; ++i)
+    if (!(std::abs(modes.lambda[i] - listed[i]) <= 1e-6 * (std::abs(listed[i]) + std::abs(opt.shift))))
       throw SolverError("eigen-solution: Anasazi's vectors do not span its eigenvalues (mode " + std::to_string(i + 1) +
-                        ": " + std::to_string(value) + " listed, " + std::to_string(modes.lambda[i]) +
+                        ": " + std::to_string(listed[i]) + " listed, " + std::to_string(modes.lambda[i]) +
                         " in the span of the vectors)");
-  }
   return modes;
 }
 
