@@ -464,6 +464,25 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                             "Newton tolerance " + shortNumber(opt.tolerance) +
                                 " (residual relative to the forces); " + reference.samplesCheck + "; " +
                                 reference.harmonicsCheck});
+  if (const auto& best = reference.harmonicsPeak; best.found) {
+    // The headline: the peak at the highest harmonic count reached, converged or
+    // labelled an estimate with the last change next to it.
+    constexpr double kConverged = 1e-2;
+    std::ostringstream line;
+    line.precision(6);
+    line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
+         << best.maxHarmonic;
+    if (best.change < 0)
+      line << "; an estimate: its convergence in the harmonics is not known (no level below it to compare)";
+    else if (best.change <= kConverged)
+      line << "; converged in the harmonics to " << 100 * kConverged << " % (H " << best.belowHarmonic << " -> "
+           << best.maxHarmonic << " changed it by " << 100 * best.change << " %)";
+    else
+      line << "; an estimate, not converged in the harmonics: H " << best.belowHarmonic << " -> " << best.maxHarmonic
+           << " changed it by " << 100 * best.change << " % (disc_frc_harmonics.csv)";
+    summary.computed.insert(summary.computed.begin(), line.str());
+    log::info(line.str());
+  }
   if (!reference.branch.points.empty() && comm->getRank() == 0) {
     const PeakContactStates peak = peakContactStates(setup, reference);
     const auto energies =

@@ -187,11 +187,14 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
     if (system != lower) {
       const auto carried = solveCarried(*system, X, hz, scale, H, tolerance);
       started = carried.newton.converged;
-      if (carried.byHomotopy)
+      if (carried.blockStart || carried.byHomotopy) {
+        const std::string how = carried.blockStart ? "the added harmonic solved with the others held, then " : "";
         log::info("harmonics check: H " + std::to_string(H) + " at " + std::to_string(hz) + " Hz " +
-                  (started ? "solved by the homotopy from H " + std::to_string(H - 1) + " (" +
-                                 std::to_string(carried.points) + " points)"
+                  (started ? "solved from H " + std::to_string(H - 1) + " by " + how +
+                                 (carried.byHomotopy ? "the homotopy (" + std::to_string(carried.points) + " points)"
+                                                     : "Newton")
                            : "not solved: " + carried.reason));
+      }
       if (!started) level.peak.reason = "no solution at the start (" + carried.reason + ")";
     }
     if (started) level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
@@ -293,7 +296,8 @@ std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::
 // harmonics 0..H+1. Not possible when the system has nothing for a raised harmonic (a
 // reduced model without that nodal diameter): said so.
 std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
-                           double peak, const std::string& csvPath, SceneSummary& summary) {
+                           double peak, const std::string& csvPath, SceneSummary& summary,
+                           HarmonicsConvergedPeak& best) {
   const auto& pt = branch.points[ip];
   try {
     if (setup.parameter != ForcedResponseSetup::Parameter::Omega) return pointHarmonicsCheck(setup, pt, peak);
@@ -335,9 +339,14 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
     // The change between the last two levels whose peaks were both found.
     std::size_t j = levels.size() - 1;
     while (j >= 1 && !(levels[j].peak.found && levels[j - 1].peak.found)) --j;
+    for (std::size_t i = 0; i < levels.size() && levels[i].peak.found; ++i) {
+      best.found = true;
+      best.maxHarmonic = levels[i].maxHarmonic, best.value = levels[i].peak.value, best.hz = levels[i].peak.parameter;
+    }
     if (j >= 1) {
       const auto &before = levels[j - 1].peak, &after = levels[j].peak;
       const double change = std::abs(after.value / before.value - 1);
+      if (levels[j].maxHarmonic == best.maxHarmonic) best.belowHarmonic = levels[j - 1].maxHarmonic, best.change = change;
       out << "; H " << levels[j - 1].maxHarmonic << " -> " << levels[j].maxHarmonic << " changes the peak by "
           << change << " (relative), its frequency by " << std::abs(after.parameter / before.parameter - 1) << "; "
           << timer.seconds() << " s";
@@ -594,7 +603,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     summary.computed.push_back(result.samplesCheck);  // rank 0
     if (setup.harmonicsCheckTo >= 0) {
       result.harmonicsCheck =
-          harmonicsCheck(setup, branch, ip, plotMax[ip], outDir + "/" + name + "_harmonics.csv", summary);
+          harmonicsCheck(setup, branch, ip, plotMax[ip], outDir + "/" + name + "_harmonics.csv", summary,
+                         result.harmonicsPeak);
       summary.computed.push_back(result.harmonicsCheck);
     }
   }

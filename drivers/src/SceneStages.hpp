@@ -16,6 +16,16 @@ namespace cyclone::scenes {
 
 class SceneSection;
 
+/// The peak of a frequency curve at the highest harmonic count the harmonics check
+/// reached, with the change from the level below: the run's headline.
+struct HarmonicsConvergedPeak {
+  bool found = false;
+  int maxHarmonic = 0;
+  double value = 0, hz = 0;
+  int belowHarmonic = -1;  ///< the level compared with (-1: none found)
+  double change = -1;      ///< |peak / peak below - 1| (-1: not known)
+};
+
 struct ForcedResponseResult {
   continuation::Branch branch;
   double peak = 0;           ///< largest max |x(t)| of the first output DOF
@@ -23,6 +33,7 @@ struct ForcedResponseResult {
   double peakOmega = 0;      ///< the frequency there (rad/s)
   double seconds = 0;
   std::string startMethod, samplesCheck, harmonicsCheck;
+  HarmonicsConvergedPeak harmonicsPeak;  ///< filled by the harmonics check of a frequency curve
 };
 
 /// Finds the first point, traces the curve and writes <name>.csv, <name>.svg and

@@ -45,6 +45,7 @@ TEST(HomotopySolve, PassesWhereNewtonFromTheCarriedGuessStalls) {
   std::printf("Newton from the guess stalls at x2 = %.6f; the homotopy: %d points, x2 = %.15f (Cardano %.15f)\n",
               newton(1), r.points, x(1), root);
   EXPECT_TRUE(r.newton.converged) << r.reason;
+  EXPECT_FALSE(r.blockStart) << "Newton on the cubic alone stalls as well: no block start";
   EXPECT_TRUE(r.byHomotopy);
   EXPECT_NEAR(x(1), root, 1e-12);
   EXPECT_NEAR(x(0), 1 + 0.1 * root * root, 1e-12);
@@ -58,4 +59,34 @@ TEST(HomotopySolve, NewtonAloneWhereItConverges) {
   EXPECT_TRUE(r.newton.converged);
   EXPECT_FALSE(r.byHomotopy);
   EXPECT_EQ(r.points, 0);
+}
+
+// The block start: x1 - x2 = 0 (the old row, held by the guess (0, 0)) and
+// x2 - 1 - x1 + x1^2 / 2 + x2^2 / 2 = 0 (the added row). At the guess the whole
+// Jacobian [[1, -1], [-1, 1]] is singular, so plain Newton cannot step; the added row
+// alone (x1 held at 0) is x2^2 / 2 + x2 - 1 = 0, solved by Newton to sqrt(3) - 1, and
+// Newton on the whole from there reaches the root x1 = x2 = 1 (closed form: x1 = x2 = x
+// with x^2 (1/2 + 1/2) = 1), not the other one at -1.
+TEST(HomotopySolve, SolvesTheAddedRowsAloneFirst) {
+  continuation::ContinuationProblem p;
+  p.size = 2;
+  p.residual = [](const Eigen::VectorXd& x, double, Eigen::VectorXd& F) {
+    F.resize(2);
+    F << x(0) - x(1), x(1) - 1 - x(0) + 0.5 * x(0) * x(0) + 0.5 * x(1) * x(1);
+  };
+  p.jacobian = [](const Eigen::VectorXd& x, double, Eigen::MatrixXd& J) {
+    J.resize(2, 2);
+    J << 1, -1, -1 + x(0), 1 + x(1);
+  };
+  Eigen::VectorXd plain = Eigen::VectorXd::Zero(2);
+  ASSERT_FALSE(continuation::solveNewton(p, plain, 0.0, 1e-12, 30).converged)
+      << "plain Newton must fail from the guess, or this tests nothing";
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(2);
+  const auto r = continuation::solveByHomotopy(p, x, 0.0, {1}, 1e-12);
+  std::printf("block start, then Newton: x = (%.15f, %.15f), homotopy %d\n", x(0), x(1), int(r.byHomotopy));
+  EXPECT_TRUE(r.newton.converged) << r.reason;
+  EXPECT_TRUE(r.blockStart);
+  EXPECT_FALSE(r.byHomotopy);
+  EXPECT_NEAR(x(0), 1.0, 1e-12);
+  EXPECT_NEAR(x(1), 1.0, 1e-12);
 }

@@ -5,6 +5,33 @@
 
 namespace cyclone::continuation {
 
+namespace {
+
+// Newton on the added rows in the added unknowns alone (the others held): true when
+// those rows then hold to the tolerance.
+bool solveAddedRows(const ContinuationProblem& problem, Eigen::VectorXd& y, double p, const std::vector<int>& added,
+                    double tolerance) {
+  const int na = int(added.size());
+  if (na == 0) return false;
+  Eigen::VectorXd F, Fa(na);
+  Eigen::MatrixXd J, Jaa(na, na);
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    problem.residual(y, p, F);
+    for (int i = 0; i < na; ++i) Fa(i) = F(added[i]);
+    if (!Fa.allFinite()) return false;
+    if (Fa.norm() <= tolerance) return true;
+    problem.jacobian(y, p, J);
+    for (int i = 0; i < na; ++i)
+      for (int j = 0; j < na; ++j) Jaa(i, j) = J(added[i], added[j]);
+    const Eigen::VectorXd d = Jaa.partialPivLu().solve(-Fa);
+    if (!d.allFinite()) return false;
+    for (int i = 0; i < na; ++i) y(added[i]) += d(i);
+  }
+  return false;
+}
+
+}  // namespace
+
 HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::VectorXd& x, double p,
                                const std::vector<int>& added, double tolerance) {
   HomotopyResult result;
@@ -13,6 +40,19 @@ HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::Vector
   if (result.newton.converged) {
     x = guess;
     return result;
+  }
+  // The added unknowns solved with the others held, then Newton on the whole from
+  // there: the added harmonic's coefficients start at their own solution instead of
+  // zero, which plain Newton reaches only through the coupled rows' kinks.
+  if (Eigen::VectorXd y = x; solveAddedRows(problem, y, p, added, tolerance)) {
+    result.blockStart = true;
+    Eigen::VectorXd z = y;
+    result.newton = solveNewton(problem, z, p, tolerance, 30);
+    if (result.newton.converged) {
+      x = z;
+      return result;
+    }
+    x = y;  // the homotopy's start: the old rows relax around the added unknowns' solution
   }
   result.byHomotopy = true;
   const Eigen::VectorXd x0 = x;

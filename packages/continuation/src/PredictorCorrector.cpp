@@ -148,7 +148,7 @@ private:
   bool fixedParameterStep(const Point& z0, const Point& t0, Point& z1);
   bool passCreep(Point& z, Point& t, double dir);
   void rescale(const Point& z);
-  void endAt(double p, const Point& inside, const Point& outside);
+  bool endAt(double p, const Point& inside, const Point& outside);
   void progress();
 
   const ContinuationProblem& problem_;
@@ -420,11 +420,19 @@ void Tracer::rescale(const Point& z) {
 }
 
 // The branch left the range between `inside` and `outside`: its point at p, by
-// Newton at that p from the interpolation between the two.
-void Tracer::endAt(double p, const Point& inside, const Point& outside) {
+// Newton at that p from the interpolation between the two, else from either end
+// (at a kink of a friction residual one start can cycle where another converges).
+// False when none converges.
+bool Tracer::endAt(double p, const Point& inside, const Point& outside) {
   const double s = (p - inside.p) / (outside.p - inside.p);
-  Eigen::VectorXd x = inside.x + s * (outside.x - inside.x);
-  if (solveNewton(problem_, x, p, o_.tolerance, 30).converged) append({std::move(x), p});
+  for (const Eigen::VectorXd& start : {Eigen::VectorXd(inside.x + s * (outside.x - inside.x)), inside.x, outside.x}) {
+    Eigen::VectorXd x = start;
+    if (solveNewton(problem_, x, p, o_.tolerance, 30).converged) {
+      append({std::move(x), p});
+      return true;
+    }
+  }
+  return false;
 }
 
 void Tracer::progress() {
@@ -498,9 +506,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     // A step whose predictor passes the range's end: the end itself, by Newton there.
     const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
     if ((predictor.p - o_.to) * dir > 0) {
-      const std::size_t before = branch_.points.size();
-      endAt(o_.to, z, predictor);
-      if (branch_.points.size() > before) {
+      if (endAt(o_.to, z, predictor)) {
         branch_.finished = true;
         branch_.stopReason = "end of the parameter range reached";
         break;
@@ -599,16 +605,22 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     if (byTurn < byNewton) next = std::max(next, std::min(ds * byNewton, cornerStep));
     ds = std::clamp(next, o_.minStep, o_.maxStep);
     // Out of the range: the end reached, or the start passed on the way back.
+    // Where Newton at the end itself does not converge, the converged point just past
+    // it stays, and the reason says so.
     if ((z.p - o_.to) * dir >= 0) {
       dropLast();
-      endAt(o_.to, previous, z);
       branch_.finished = true;
       branch_.stopReason = "end of the parameter range reached";
+      if (!endAt(o_.to, previous, z)) {
+        append(z, t);
+        branch_.stopReason += " (the last point lies just past it, at p = " + std::to_string(z.p) +
+                              ": Newton at the end itself did not converge)";
+      }
       break;
     }
     if ((z.p - o_.from) * dir < 0) {
       dropLast();
-      endAt(o_.from, previous, z);
+      if (!endAt(o_.from, previous, z)) append(z, t);
       double reached = o_.from;
       for (const auto& pt : branch_.points) reached = dir > 0 ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
       branch_.returnedToStart = true;

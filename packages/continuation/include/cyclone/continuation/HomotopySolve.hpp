@@ -9,7 +9,12 @@
 //   G_i(x; s) = s F_i(x; p) + (1 - s) c (x_i - x0_i)       (the added rows i)
 // is solved by x0 at s = 0 and is F at s = 1; the predictor-corrector traces it
 // through the folds in s that plain Newton cannot pass. c is the added rows'
-// typical diagonal of dF/dx, so both parts weigh alike.
+// typical diagonal of dF/dx, so both parts weigh alike. Before the homotopy, the
+// added unknowns are solved with the others held (Newton on the added rows alone);
+// where those rows then hold, Newton on the whole starts from there, and where it
+// still fails the homotopy does, x0 being that block solution (on the default disc
+// H = 3 is then reached by Newton alone, H = 4 by a homotopy of 8 points instead of
+// 51).
 #include <string>
 #include <vector>
 
@@ -19,6 +24,9 @@ namespace cyclone::continuation {
 
 struct HomotopyResult {
   NewtonResult newton;   ///< the last Newton solve at s = 1 (converged: x solves F)
+  /// Plain Newton from x0 failed and the added unknowns were solved with the others
+  /// held (their rows then hold); Newton, or the homotopy, went on from there.
+  bool blockStart = false;
   bool byHomotopy = false;  ///< plain Newton from x0 failed and the homotopy was traced
   int points = 0;        ///< points of the homotopy path (0 when Newton sufficed)
   std::string reason;    ///< why no solution was found (empty when converged)
