@@ -52,6 +52,7 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   r.to = scale;
   r.initialStep = 0.05 * std::abs(scale);
   r.maxStep = 0.2 * std::abs(scale);
+  r.turnAngle = 0.12;
   r.minStep = 1e-8 * std::abs(scale);
   r.maxSteps = 500;
   // Each engine in turn: the ramp can meet a stretch where the stuck contacts' static

@@ -369,7 +369,11 @@ void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& 
   const std::string engine = cs.getString("engine", defaultEngine);
   if (engine == "predictor_corrector")
     opt.engine = Options::Engine::PredictorCorrector;
-  else if (engine == "loca")
+  else if (engine == "loca" && opt.engine != Options::Engine::Loca) {
+    const Options loca = continuation::locaOptions();  // LOCA's step defaults, its units
+    opt.engine = loca.engine;
+    opt.initialStep = loca.initialStep, opt.minStep = loca.minStep, opt.maxStep = loca.maxStep;
+  } else if (engine == "loca")
     opt.engine = Options::Engine::Loca;
   else
     throw InputError(cs.where("engine"), "'" + engine + "': must be predictor_corrector or loca");
@@ -616,8 +620,7 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   // Cyclone's predictor-corrector by default, LOCA retracing a curve it leaves
   // incomplete; an engine the scene names is used alone, as for the disc.
   if (!cs.has("engine")) {
-    setup.fallback = continuation::ContinuationOptions{};
-    setup.fallback->engine = continuation::ContinuationOptions::Engine::Loca;
+    setup.fallback = continuation::locaOptions();
   }
   readContinuationSteps(cs, opt, "predictor_corrector");
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);

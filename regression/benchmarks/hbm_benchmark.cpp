@@ -119,8 +119,9 @@ int main(int argc, char** argv) {
     };
     using Engine = continuation::ContinuationOptions::Engine;
     for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
-      continuation::ContinuationOptions o;
-      o.engine = engine;
+      // Each engine with its own default steps (their units differ).
+      continuation::ContinuationOptions o =
+          engine == Engine::Loca ? continuation::locaOptions() : continuation::ContinuationOptions{};
       o.from = 0.9, o.to = 1.6;
       Timer t;
       const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);

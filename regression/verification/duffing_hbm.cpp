@@ -47,7 +47,10 @@ CurveFeatures traceDuffing(int H, int samples) {
   EXPECT_TRUE(branch.finished) << "H = " << H << ": " << branch.stopReason;
   CurveFeatures out;
   out.points = branch.points.size();
-  // Peak of the first-harmonic amplitude, refined by the parabola through the top three points.
+  // Peak of the first-harmonic amplitude: the engine located its maximum on the path
+  // (the measure above) and inserted it as a point, a solution; a parabola through
+  // neighbouring points in omega would not improve it and is wrong next to the fold,
+  // where the amplitude is not a function of omega.
   std::size_t top = 0;
   std::vector<double> A(branch.points.size());
   for (std::size_t i = 0; i < A.size(); ++i) {
@@ -56,18 +59,6 @@ CurveFeatures traceDuffing(int H, int samples) {
   }
   out.peakAmplitude = A[top];
   out.peakOmega = branch.points[top].parameter;
-  if (top > 0 && top + 1 < A.size()) {
-    const double w0 = branch.points[top - 1].parameter, w1 = branch.points[top].parameter,
-                 w2 = branch.points[top + 1].parameter;
-    // Fit A(w) = a w^2 + b w + c through the three points (distinct w near the peak).
-    Eigen::Matrix3d V;
-    V << w0 * w0, w0, 1, w1 * w1, w1, 1, w2 * w2, w2, 1;
-    const Eigen::Vector3d coef = V.fullPivLu().solve(Eigen::Vector3d(A[top - 1], A[top], A[top + 1]));
-    if (coef(0) < 0) {
-      out.peakOmega = -coef(1) / (2 * coef(0));
-      out.peakAmplitude = coef(2) - coef(1) * coef(1) / (4 * coef(0));
-    }
-  }
   // Folds: where the parameter turns back (parabola through the three points in arclength order).
   for (std::size_t i = 1; i + 2 < branch.points.size(); ++i) {
     const double d1 = branch.points[i].parameter - branch.points[i - 1].parameter;

@@ -81,6 +81,7 @@ HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::Vector
   o.from = 0, o.to = 1;
   o.tolerance = tolerance;
   o.initialStep = 0.05, o.maxStep = 0.2;
+  o.turnAngle = 0.12;  // as measured for the harmonics check (docs/scenes.md)
   o.maxSteps = 120;  // a carried start is near: a longer path is another branch, not worth its LUs
   const Branch path = traceBranch(homotopy, x0, o);
   result.points = int(path.points.size());

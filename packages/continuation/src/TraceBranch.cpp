@@ -13,6 +13,13 @@ std::string noConvergedStart(const NewtonResult& start, double tolerance) {
   return why.str();
 }
 
+ContinuationOptions locaOptions() {
+  ContinuationOptions o;
+  o.engine = ContinuationOptions::Engine::Loca;
+  o.maxStep = 0.05;
+  return o;
+}
+
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   return o.engine == ContinuationOptions::Engine::Loca ? traceBranchWithLoca(problem, guess, o)
                                                        : traceBranchWithPredictorCorrector(problem, guess, o);

@@ -37,16 +37,19 @@ struct ContinuationOptions {
   double from = 0, to = 1;          ///< parameter range (either direction)
   /// Arclength steps. PredictorCorrector: in the scaled (x / ||x||, p / |to - from|)
   /// space, so 0.1 is a tenth of the range or a 10 % change of the solution. Loca: in
-  /// LOCA's units (the unknowns' RMS and the parameter).
+  /// LOCA's units (the unknowns' RMS and the parameter); locaOptions() gives LOCA's
+  /// defaults. The predictor-corrector's maximum is long: the turn of the tangent and
+  /// Newton's effort shorten the steps where the curve needs them, and each local
+  /// maximum of the measure is located on the curve whatever the step.
   double initialStep = 0.01;
-  double minStep = 1e-6, maxStep = 0.05;
+  double minStep = 1e-6, maxStep = 0.2;
   int maxSteps = 5000;
   double tolerance = 1e-10;         ///< Newton: ||F||_2
   int maxNewtonIterations = 15;
   /// PredictorCorrector: the turn of the tangent per step the step size aims at
   /// (radians). A half circle of the response (the phase through a resonance) takes
   /// about pi / turnAngle points.
-  double turnAngle = 0.12;
+  double turnAngle = 0.25;
   /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
@@ -69,6 +72,10 @@ struct ContinuationOptions {
   enum class LineSearch { FullStep, Backtrack, Polynomial };
   LineSearch lineSearch = LineSearch::FullStep;  // Loca only
 };
+
+/// LOCA's engine with its own step defaults (its steps are in its units; a maximum of
+/// 0.05 there, not the predictor-corrector's 0.2).
+ContinuationOptions locaOptions();
 
 /// What a curve cost: counts and seconds of the engine's work.
 struct ContinuationStatistics {
