@@ -480,6 +480,11 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     else
       line << "; an estimate, not converged in the harmonics: H " << best.belowHarmonic << " -> " << best.maxHarmonic
            << " changed it by " << 100 * best.change << " % (disc_frc_harmonics.csv)";
+    // A level above that was tried and not found leaves the error unbounded by the
+    // last change (the default disc at H = 5: docs/scenes.md).
+    if (best.notFoundHarmonic >= 0)
+      line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
+           << "the last change";
     summary.computed.insert(summary.computed.begin(), line.str());
     log::info(line.str());
   }

@@ -339,10 +339,13 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
     // The change between the last two levels whose peaks were both found.
     std::size_t j = levels.size() - 1;
     while (j >= 1 && !(levels[j].peak.found && levels[j - 1].peak.found)) --j;
-    for (std::size_t i = 0; i < levels.size() && levels[i].peak.found; ++i) {
+    std::size_t reached = 0;
+    for (; reached < levels.size() && levels[reached].peak.found; ++reached) {
       best.found = true;
-      best.maxHarmonic = levels[i].maxHarmonic, best.value = levels[i].peak.value, best.hz = levels[i].peak.parameter;
+      best.maxHarmonic = levels[reached].maxHarmonic, best.value = levels[reached].peak.value,
+      best.hz = levels[reached].peak.parameter;
     }
+    if (best.found && reached < levels.size()) best.notFoundHarmonic = levels[reached].maxHarmonic;
     if (j >= 1) {
       const auto &before = levels[j - 1].peak, &after = levels[j].peak;
       const double change = std::abs(after.value / before.value - 1);

@@ -24,6 +24,7 @@ struct HarmonicsConvergedPeak {
   double value = 0, hz = 0;
   int belowHarmonic = -1;  ///< the level compared with (-1: none found)
   double change = -1;      ///< |peak / peak below - 1| (-1: not known)
+  int notFoundHarmonic = -1;  ///< the next level, tried and its peak not found (-1: none)
 };
 
 struct ForcedResponseResult {
