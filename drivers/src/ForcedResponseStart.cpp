@@ -98,13 +98,40 @@ continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::Vect
   return branch;
 }
 
+// No start at the range's start: the curve from the other end, as far as it goes (a
+// start can fail where the response is large and close to a fold or an internal
+// resonance, and converge at the other end, off resonance: the default disc at H = 5,
+// docs/scenes.md).
+continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingPoint& failed) {
+  const auto upward = setup.continuation;
+  setup.continuation.from = upward.to, setup.continuation.to = upward.from;
+  const StartingPoint far = findStartingPoint(setup);
+  continuation::Branch down;
+  if (far.x.size() > 0) {
+    const double scale = setup.unknownScale != 0 ? setup.unknownScale : far.x.cwiseAbs().maxCoeff();
+    down = traceOneSweep(setup, far.x, scale);
+  }
+  setup.continuation = upward;
+  setup.apply(upward.from);
+  std::ostringstream why;
+  why << "no start at the start of the range (" << failed.method << "); from the end of the range ("
+      << (far.x.size() > 0 ? far.method : "no start either: " + far.method) << ") ";
+  if (down.points.empty()) {
+    why << "nothing traced";
+  } else {
+    double lowest = upward.to;  // the farthest the sweep got towards the start
+    for (const auto& pt : down.points)
+      lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+    why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
+    if (!down.finished) why << "; " << upward.from << " .. " << lowest << " not traced";
+  }
+  down.stopReason = why.str();
+  return down;
+}
+
 // Both sweeps with setup.continuation's engine.
 continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start) {
-  if (start.x.size() == 0) {
-    continuation::Branch branch;
-    branch.stopReason = start.method;
-    return branch;
-  }
+  if (start.x.size() == 0) return traceFromTheEnd(setup, start);
   double scale = setup.unknownScale;
   if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
   auto branch = traceOneSweep(setup, start.x, scale);

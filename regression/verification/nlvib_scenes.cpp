@@ -7,6 +7,7 @@
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -193,4 +194,47 @@ TEST(NlvibScenes, FirstPointByExcitationRampWhereNewtonStagnates) {
   Eigen::VectorXd R;
   setup.system->residual(start.x, 0.65, R, nullptr);
   EXPECT_LT(R.norm(), setup.continuation.tolerance);
+}
+
+// Where no first point converges at the start of the range, the curve is traced from
+// the other end (the default disc at H = 5 has no start near its peak, docs/scenes.md).
+// Example 02 with its start refused: the curve from the end of the range reaches the
+// start through both folds, and its peak and folds are those of the curve traced
+// from the start.
+TEST(NlvibScenes, ACurveWithoutAStartIsTracedFromTheEnd) {
+  auto forward = traceScene("nlvib_02.yaml");
+  ASSERT_TRUE(forward.branch.finished) << forward.branch.stopReason;
+  auto setup = scenes::loadForcedResponseScene(CYCLONE_SCENE_DIR "/nlvib_02.yaml");
+  const scenes::StartingPoint refused{Eigen::VectorXd(), "refused by the test", 0.0};
+  const auto branch = scenes::traceForcedResponse(setup, refused);
+  std::printf("nlvib_02.yaml without a start: %zu points, %s\n", branch.points.size(), branch.stopReason.c_str());
+  ASSERT_TRUE(branch.finished) << branch.stopReason;
+  EXPECT_NE(branch.stopReason.find("refused by the test"), std::string::npos) << branch.stopReason;
+  EXPECT_NE(branch.stopReason.find("from the end of the range"), std::string::npos) << branch.stopReason;
+  // Traced downwards: from the end of the range to its start.
+  EXPECT_NEAR(branch.points.front().parameter, setup.continuation.to, 1e-12);
+  EXPECT_NEAR(branch.points.back().parameter, setup.continuation.from, 1e-12);
+  // The peak of the scene's response measure (the first output DOF's max |x(t)|),
+  // which both traces locate on their paths.
+  const auto measure = scenes::continuationProblem(setup).measure;
+  ASSERT_TRUE(bool(measure));
+  auto peakOf = [&measure](const continuation::Branch& b) {
+    double best = 0;
+    for (const auto& pt : b.points) best = std::max(best, measure(pt.x));
+    return best;
+  };
+  auto foldsOf = [](const continuation::Branch& b) {
+    int folds = 0;
+    for (std::size_t i = 2; i < b.points.size(); ++i) {
+      const double d1 = b.points[i - 1].parameter - b.points[i - 2].parameter;
+      const double d2 = b.points[i].parameter - b.points[i - 1].parameter;
+      folds += (d1 > 0) != (d2 > 0);
+    }
+    return folds;
+  };
+  const double up = peakOf(forward.branch), down = peakOf(branch);
+  std::printf("  peak max|x(t)| of the output DOF: from the start %.10f, from the end %.10f; folds %d and %d\n", up, down,
+              foldsOf(forward.branch), foldsOf(branch));
+  EXPECT_NEAR(down / up, 1.0, 1e-7);
+  EXPECT_EQ(foldsOf(branch), foldsOf(forward.branch));
 }

@@ -88,8 +88,10 @@ struct StartingPoint {
 StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 
 /// The curve a scene describes: arclength continuation over the range from a
-/// starting point (by default findStartingPoint's; an empty one gives an empty branch
-/// whose stop reason is its method). A sweep that does not reach the end of the range
+/// starting point (by default findStartingPoint's). Without one (an empty x) the curve
+/// is traced from the end of the range towards its start, as far as a start found
+/// there allows; the stop reason says why the start failed and how far the sweep got.
+/// A sweep that does not reach the end of the range
 /// (it returned to its start, or stopped with a reason) is followed by a second sweep
 /// from the range's end, a second segment of the branch (Branch::segmentStarts); the
 /// stop reason says how far each got. The scene runner and the tests both trace here.
