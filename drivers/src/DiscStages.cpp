@@ -550,7 +550,10 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                                (name == "clearance" && v == spec.gap.clearance) ||
                                (name == "harmonics" && sv.harmonics == spec.harmonics);
       std::optional<ForcedResponseSetup> traced;
-      if (!isReference) traced.emplace(makeDiscForcedResponse(mesh, *m, sv));
+      if (!isReference) {
+        traced.emplace(makeDiscForcedResponse(mesh, *m, sv));
+        traced->whenNothingTraced = ForcedResponseSetup::WhenNothingTraced::Report;  // the table says so
+      }
       const auto result = isReference ? reference : traceOne(*traced, tag.str());
       if (isReference) {
         if (comm->getRank() == 0)

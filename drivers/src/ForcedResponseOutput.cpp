@@ -399,6 +399,8 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     log::info(msg.str());
   }
   const auto branch = traceForcedResponse(setup, start);
+  if (branch.points.empty() && setup.whenNothingTraced == ForcedResponseSetup::WhenNothingTraced::Fail)
+    throw SolverError(name + ": no point of the curve was computed, so nothing was written: " + branch.stopReason);
 
   // frc.csv: per point the frequency and, per output DOF, h0, amplitudes and max |x(t)|.
   const std::string csvPath = outDir + "/" + name + ".csv";

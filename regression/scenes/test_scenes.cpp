@@ -693,6 +693,30 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   EXPECT_NE(text.find("DATASET \"omega\""), std::string::npos) << text;
 }
 
+// A scene whose curve has no point (issue 20: Duffing with k3 = 1e300 exited 0 with a
+// header-only frc.csv): the run fails with the reason, and writes none of the curve's files.
+TEST(Scenes, ACurveWithoutAnyPointFailsTheRun) {
+  log::setQuiet(true);
+  const auto dir = freshDir("nopoint");
+  std::ifstream in(CYCLONE_SCENE_DIR "/duffing.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string yaml = std::regex_replace(text.str(), std::regex("k3: [-+.0-9eE]+"), "k3: 1.0e300");
+  ASSERT_NE(yaml.find("k3: 1.0e300"), std::string::npos);
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  std::string msg;
+  try {
+    scenes::runSceneText(yaml, "stiff.yaml", o, Tpetra::getDefaultComm());
+  } catch (const SolverError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("frc: no point of the curve was computed"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("no converged start"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+  EXPECT_FALSE(fs::exists(dir / "frc.h5"));
+}
+
 TEST(Scenes, ForcedResponseBadInputIsNamed) {
   const auto dir = freshDir("frcbad");
   const std::string base = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 2\n";

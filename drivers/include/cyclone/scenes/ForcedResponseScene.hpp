@@ -44,6 +44,10 @@ struct ForcedResponseSetup {
   /// The harmonics check of a frequency curve finds the peak with H, H + 1, ... up to this
   /// (0: H + 1), each level by a peak search from the one before; < 0: no harmonics check.
   int harmonicsCheckTo = 0;
+  /// A curve of which no point was computed: the run fails with the reason and writes
+  /// none of its files (the scene's curve), or the curve is reported empty and the run
+  /// goes on (one curve of a parameter study, whose table says so).
+  enum class WhenNothingTraced { Fail, Report } whenNothingTraced = WhenNothingTraced::Fail;
 
   /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.
   std::string parameterName() const;
