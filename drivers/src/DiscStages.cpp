@@ -89,6 +89,10 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
   spec.harmonics = readHarmonics(d);
   spec.samples = d.getInt("samples", 0);
+  if (spec.samples < 0 || spec.samples > kMaxSamples)
+    throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in 1.." +
+                                             std::to_string(kMaxSamples) + " time samples per period (leave it out "
+                                             "for the automatic count)");
   auto c = d.section("contact");
   auto& ct = spec.contact;
   ct.leftSet = c.getString("left_node_set", ct.leftSet);

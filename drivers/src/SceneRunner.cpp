@@ -441,6 +441,20 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   coupling.Cnext = squareMatrix(sys, "C_next", n, false);
   coupling.Mnext = squareMatrix(sys, "M_next", n, false);
   sys.rejectUnknownKeys();
+  // No physical system has a mass matrix that is not positive definite, or damping
+  // whose symmetric part (the part that dissipates) has a negative eigenvalue: such
+  // input was accepted and traced (issue 20). A cyclic sector's own matrices are
+  // checked only without next-sector coupling of the same kind (the ring's matrices
+  // per nodal diameter are what must be definite then).
+  if (coupling.Mnext.isZero(0) && Eigen::LLT<Eigen::MatrixXd>(M).info() != Eigen::Success)
+    throw InputError(sys.where("M"), "must be positive definite (a mass matrix: every DOF carries mass)");
+  if (coupling.Cnext.isZero(0) && C.size() > 0) {
+    const Eigen::MatrixXd dissipative = 0.5 * (C + C.transpose());
+    const double lowest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dissipative, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+    if (lowest < -1e-12 * dissipative.norm())
+      throw InputError(sys.location(), "the damping (C with rayleigh and modal_damping_ratio) generates energy: its "
+                                       "symmetric part has the eigenvalue " + std::to_string(lowest) + " < 0");
+  }
 
   std::vector<int> harmonicList;
   if (scene.has("harmonics")) {
@@ -525,6 +539,11 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
   for (const auto& p : placed) recommended = std::max(recommended, p.element->recommendedSamples());
   const int samples = scene.getInt("samples", recommended);
+  if (samples < 1 || samples > kMaxSamples)
+    throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in 1.." +
+                                                 std::to_string(kMaxSamples) + " time samples per period (every "
+                                                 "residual costs in proportion; the default here is " +
+                                                 std::to_string(recommended) + ")");
 
   ForcedResponseSetup setup;
   setup.elementNames = elementNames;
@@ -617,6 +636,10 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   }
   opt.from = cs.requireDouble("from");
   opt.to = cs.requireDouble("to");
+  // to < from is a downward sweep; to = from is no range (issue 20).
+  if (!(opt.from != opt.to))
+    throw InputError(cs.where("to"), "equals from (" + std::to_string(opt.from) +
+                                         "): a range needs two different ends (to < from sweeps downwards)");
   // Cyclone's predictor-corrector by default, LOCA retracing a curve it leaves
   // incomplete; an engine the scene names is used alone, as for the disc.
   if (!cs.has("engine")) {
@@ -878,6 +901,14 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
   if (overrides.outputDirectory) scene.getString("output_directory", "");
+  // A mass matrix needs a density: with rho = 0 the eigen-solver spun for minutes
+  // (issue 20). Checked before any work.
+  if (wants("modal") || wants("disc_response") || wants("reduced_model")) {
+    auto m = scene.section("material");
+    if (const auto material = readMaterial(m); !(material.rho > 0))
+      throw InputError(m.where("rho"), "must be positive for modes, reduced models and forced responses (the mass "
+                                       "matrix), got " + std::to_string(material.rho));
+  }
   if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
   comm->barrier();
 

@@ -16,6 +16,11 @@ namespace cyclone::scenes {
 
 class SceneSection;
 
+/// The most time samples per period a scene may ask for: every residual's cost grows in
+/// proportion (a friction contact's march too), and 2e6 ran for minutes without a point
+/// (issue 20). The largest shipped need is 4096 (the samples check of 2048).
+constexpr int kMaxSamples = 1 << 16;
+
 /// The peak of a frequency curve at the highest harmonic count the harmonics check
 /// reached, with the change from the level below: the run's headline.
 struct HarmonicsConvergedPeak {

@@ -608,6 +608,10 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   EXPECT_NE(msg.find("at least 2 sectors"), std::string::npos) << msg;
   msg = failure(base + "  cyclic:\n    sectors: 13\n", dir);  // faces do not match a 13-sector rotation
   EXPECT_NE(msg.find("do not match"), std::string::npos) << msg;
+  // A zero density (issue 20: the eigen-solver spun for minutes): rejected before any work.
+  msg = failure(base + "  material:\n    rho: 0.0\n", dir);
+  EXPECT_NE(msg.find("material/rho"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be positive for modes"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frequencies.csv"));
 }
 
@@ -743,6 +747,37 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                 dir);
   EXPECT_NE(msg.find("continuation/engine"), std::string::npos) << msg;
   EXPECT_NE(msg.find("predictor_corrector or loca"), std::string::npos) << msg;
+  // Nonsense accepted before (issue 20): a range of one point, a huge sample count, a
+  // negative mass, damping that generates energy.
+  const std::string aForce = "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n";
+  const std::string range = "  continuation:\n    from: 0.5\n    to: 1.5\n";
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce +
+                    "  continuation:\n    from: 0.5\n    to: 0.5\n",
+                dir);
+  EXPECT_NE(msg.find("continuation/to"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("equals from"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce + range +
+                    "  samples: 2000000\n",
+                dir);
+  EXPECT_NE(msg.find("cyclone/samples"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must lie in 1..65536"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, -1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce + range, dir);
+  EXPECT_NE(msg.find("cyclone/system/M"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("positive definite"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n    C: [0.1, 0.0, 0.0, -0.01]\n" +
+                    aForce + range,
+                dir);
+  EXPECT_NE(msg.find("cyclone/system"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("generates energy"), std::string::npos) << msg;
+  // A gyroscopic (skew) C dissipates nothing and is accepted: only its symmetric part counts.
+  {
+    scenes::SceneOverrides o;
+    o.outputDirectory = freshDir("frcgyro").string();
+    log::setQuiet(true);
+    EXPECT_NO_THROW(scenes::runSceneText(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
+                                                "    C: [0.02, 0.1, -0.1, 0.02]\n" + aForce + range,
+                                         "gyro.yaml", o, Tpetra::getDefaultComm()));
+  }
   msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n"
                        "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n  continuation:\n    from: 0.5\n"
                        "    to: 1.5\n    min_step: 0.1\n    max_step: 0.01\n",
