@@ -224,6 +224,11 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       throw InputError(m.where("nodal_diameters"), "nodal diameter " + std::to_string(k) + " is outside 0.." +
                                                         std::to_string(sectors / 2) + " for " +
                                                         std::to_string(sectors) + " sectors");
+  for (std::size_t i = 0; i < problem.harmonics.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (problem.harmonics[i] == problem.harmonics[j])
+        throw InputError(m.where("nodal_diameters"),
+                         "nodal diameter " + std::to_string(problem.harmonics[i]) + " is listed twice");
   if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (!(speeds[i] >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");

@@ -597,6 +597,9 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   auto msg = failure(base + "  modal:\n    nodal_diameters: [7]\n", dir);
   EXPECT_NE(msg.find("nodal_diameters"), std::string::npos) << msg;
   EXPECT_NE(msg.find("0..6"), std::string::npos) << msg;
+  msg = failure(base + "  modal:\n    nodal_diameters: [1, 3, 1]\n", dir);
+  EXPECT_NE(msg.find("modal/nodal_diameters"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("nodal diameter 1 is listed twice"), std::string::npos) << msg;
   msg = failure(base + "  modal:\n    eigen_solver: arpack\n", dir);
   EXPECT_NE(msg.find("eigen_solver"), std::string::npos) << msg;
   EXPECT_NE(msg.find("lobpcg"), std::string::npos) << msg;

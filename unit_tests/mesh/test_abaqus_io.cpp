@@ -256,6 +256,14 @@ TEST(AbaqusReader, BadInputNamesFileLineAndProblem) {
                    {"bad.inp:7", "element 5", "inverted or degenerate"});
   // No elements at all.
   expectInputError(read("*NODE\n1, 0, 0, 0\n"), {"bad.inp", "no elements"});
+  // Ids outside 1..2^31-1 (a larger one failed only at the Exodus write; issue 20), and
+  // coordinates that are not finite numbers (NaN gave "det J = nan" without the line).
+  expectInputError(read("*NODE\n0, 0, 0, 0\n"), {"bad.inp:2", "node id 0 must lie in 1..2147483647"});
+  expectInputError(read("*NODE\n-3, 0, 0, 0\n"), {"bad.inp:2", "node id -3 must lie in 1..2147483647"});
+  expectInputError(read("*NODE\n3000000000, 0, 0, 0\n"), {"bad.inp:2", "node id 3000000000 must lie"});
+  expectInputError(read(tetDeck("0, 1, 2, 3, 4\n")), {"bad.inp:7", "must lie in 1..2147483647"});
+  expectInputError(read("*NODE\n1, 0, nan, 0\n"), {"bad.inp:2", "'nan'", "coordinate 2 of node 1", "not a finite"});
+  expectInputError(read("*NODE\n1, 0, 0, inf\n"), {"bad.inp:2", "'inf'", "not a finite"});
   // Missing file.
   expectInputError([&] { readAbaqusInp(dir.file("nothere.inp")); }, {"nothere.inp", "does not exist"});
 }

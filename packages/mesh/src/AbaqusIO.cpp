@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
@@ -20,6 +21,7 @@ namespace cyclone::mesh {
 namespace {
 
 using Id = long long;
+constexpr Id kLargestId = 2147483647;  // Exodus II's 32-bit ids
 
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
@@ -177,6 +179,10 @@ private:
     if (field.empty()) fail("missing " + std::string(what()));
     const Id value = std::strtoll(field.c_str(), &end, 10);
     if (*end != '\0' || errno == ERANGE) fail("bad number '" + field + "' for " + std::string(what()));
+    // Abaqus ids are positive; Exodus stores 32-bit ones (a larger id was read, solved,
+    // and failed only at the Exodus write: issue 20).
+    if (value < 1 || value > kLargestId)
+      fail(std::string(what()) + " " + field + " must lie in 1.." + std::to_string(kLargestId));
     return value;
   }
   Id parseId(const std::string& field, const char* what) const {
@@ -192,6 +198,7 @@ private:
     if (field.empty()) fail("missing " + std::string(what()));
     const double value = std::strtod(field.c_str(), &end);
     if (*end != '\0' || errno == ERANGE) fail("bad number '" + field + "' for " + std::string(what()));
+    if (!std::isfinite(value)) fail("'" + field + "' for " + std::string(what()) + " is not a finite number");
     return value;
   }
 
