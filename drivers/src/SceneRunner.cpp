@@ -122,7 +122,11 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
     mesh = mesh::generateShroudedSector(p);
     builtInSectors = p.sectors;
   } else {
-    sector.rejectUnknownKeys();
+    // The built-in sector's keys do not apply to a mesh read from a file: say so, not
+    // "unknown key (known here: )" (issue 20).
+    if (s.has("shrouded_sector"))
+      throw InputError(s.where("shrouded_sector"), "applies to source: shrouded_sector only; the mesh is read from '" +
+                                                       source + "' (remove the block, or the source key)");
     const std::filesystem::path path = std::filesystem::path(source).is_absolute()
                                            ? std::filesystem::path(source)
                                            : std::filesystem::path(sceneDir) / source;
@@ -230,6 +234,14 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
         throw InputError(m.where("nodal_diameters"),
                          "nodal diameter " + std::to_string(problem.harmonics[i]) + " is listed twice");
   if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
+  // The eigen-solver's Krylov space, about 3 modes_per_nd vectors, must fit in the
+  // sector's 3 x nodes DOFs (100000 reached Anasazi and came back as its internal
+  // text: issue 20).
+  if (const long nodes = long(mesh.numNodes()); problem.modesPerHarmonic > nodes / 2)
+    throw InputError(m.where("modes_per_nd"), std::to_string(problem.modesPerHarmonic) +
+                                                  " is more than half the sector's " + std::to_string(nodes) +
+                                                  " nodes: the eigen-solver's space of about 3 x modes_per_nd "
+                                                  "vectors must fit in its 3 x nodes DOFs");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (!(speeds[i] >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
     if (i > 0 && !(speeds[i] > speeds[i - 1])) throw InputError(m.where("speeds_rpm"), "speeds must increase");

@@ -539,6 +539,11 @@ TEST(Scenes, MissingMeshFileIsNamed) {
   const std::string yaml = "cyclone:\n  analysis: mesh\n  mesh:\n    source: no_such_mesh.inp\n";
   const auto msg = failure(yaml, dir);
   EXPECT_NE(msg.find("no_such_mesh.inp"), std::string::npos) << msg;
+  // A built-in sector block left beside a file source (issue 20: "unknown key (known
+  // here: )"): the block is named and why it does not apply.
+  const auto both = failure(yaml + "    shrouded_sector:\n      sectors: 24\n", dir);
+  EXPECT_NE(both.find("mesh/shrouded_sector"), std::string::npos) << both;
+  EXPECT_NE(both.find("applies to source: shrouded_sector only"), std::string::npos) << both;
 }
 
 TEST(Scenes, ModalSceneWritesFrequenciesPerNodalDiameter) {
@@ -597,6 +602,9 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   auto msg = failure(base + "  modal:\n    nodal_diameters: [7]\n", dir);
   EXPECT_NE(msg.find("nodal_diameters"), std::string::npos) << msg;
   EXPECT_NE(msg.find("0..6"), std::string::npos) << msg;
+  msg = failure(base + "  modal:\n    modes_per_nd: 100000\n", dir);
+  EXPECT_NE(msg.find("modal/modes_per_nd"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("more than half the sector's"), std::string::npos) << msg;
   msg = failure(base + "  modal:\n    nodal_diameters: [1, 3, 1]\n", dir);
   EXPECT_NE(msg.find("modal/nodal_diameters"), std::string::npos) << msg;
   EXPECT_NE(msg.find("nodal diameter 1 is listed twice"), std::string::npos) << msg;
