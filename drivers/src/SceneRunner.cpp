@@ -587,7 +587,19 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   }
   if (cyclic && !haveOrder)
     throw InputError(ex.location(), "a cyclic system needs the travelling wave's engine_order on its forces");
-  if (cyclic) hb.setCyclic(coupling);
+  if (cyclic) {
+    hb.setCyclic(coupling);
+    // An engine order outside 0..N/2 excites the nodal diameter it folds to (issue 20:
+    // 100 on 24 sectors was accepted without a word; the disc scenes say it).
+    const int N = coupling.sectors, eo = coupling.engineOrder;
+    if (eo < 0 || eo > N / 2) {
+      std::ostringstream msg;
+      msg << "engine order " << eo << " on " << N << " sectors excites nodal diameter " << hb.nodalDiameter(1)
+          << " (the engine order folds: " << eo << " mod " << N << " = " << ((eo % N) + N) % N
+          << ", and k and N - k are the same nodal diameter travelling the other way)";
+      setup.notes.push_back(msg.str());
+    }
+  }
   for (auto& p : placed) hb.addElement(p.element, p.W, p.Wnext);
   for (const auto& name : excitations) {
     auto f = ex.section(name);
@@ -818,6 +830,10 @@ namespace {
 void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
                          SceneSummary& summary) {
   auto setup = readForcedResponseSetup(scene);
+  for (const auto& note : setup.notes) {
+    log::info(note);
+    summary.computed.push_back(note);
+  }
   traceAndWriteForcedResponse(setup, outDir, "frc", comm, summary);
 }
 

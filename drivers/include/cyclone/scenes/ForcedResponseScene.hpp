@@ -48,6 +48,9 @@ struct ForcedResponseSetup {
   /// none of its files (the scene's curve), or the curve is reported empty and the run
   /// goes on (one curve of a parameter study, whose table says so).
   enum class WhenNothingTraced { Fail, Report } whenNothingTraced = WhenNothingTraced::Fail;
+  /// What the scene's reading found worth saying (e.g. how an engine order folds onto a
+  /// nodal diameter); the run's summary lists them.
+  std::vector<std::string> notes;
 
   /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.
   std::string parameterName() const;
