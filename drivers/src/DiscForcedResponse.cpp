@@ -234,8 +234,6 @@ continuation::ContinuationOptions discContinuationOptions(continuation::Continua
     opt.initialStep = 0.01, opt.maxStep = 0.2, opt.minStep = 1e-6;
     opt.turnAngle = 0.12;  // the disc's curves as measured (docs/scenes.md); 0.25 not yet tried there
   } else {
-    opt = continuation::locaOptions();
-    opt.maxSteps = 2000, opt.tolerance = 1e-8;
     opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7;
     opt.arcLengthScaling = false;     // the unknowns are scaled to order one (unknownScale)
     opt.stopWhereItTurnsBack = true;  // never a false "range finished" after walking back from a kink

@@ -98,6 +98,14 @@ continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::Vect
   return branch;
 }
 
+// The parameter a sweep from the end of `upward`'s range got closest to its start.
+double farthestTowardsTheStart(const continuation::Branch& down, const continuation::ContinuationOptions& upward) {
+  double lowest = upward.to;
+  for (const auto& pt : down.points)
+    lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+  return lowest;
+}
+
 // No start at the range's start: the curve from the other end, as far as it goes (a
 // start can fail where the response is large and close to a fold or an internal
 // resonance, and converge at the other end, off resonance: the default disc at H = 5,
@@ -119,9 +127,7 @@ continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingP
   if (down.points.empty()) {
     why << "nothing traced";
   } else {
-    double lowest = upward.to;  // the farthest the sweep got towards the start
-    for (const auto& pt : down.points)
-      lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+    const double lowest = farthestTowardsTheStart(down, upward);
     why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
     if (!down.finished) why << "; " << upward.from << " .. " << lowest << " not traced";
   }
@@ -161,9 +167,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
   if (down.points.empty()) {
     why << "nothing traced: " << upward.to << " .. " << reached << " not traced";
   } else {
-    double lowest = upward.to;  // the farthest the second sweep got towards the start
-    for (const auto& pt : down.points)
-      lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+    const double lowest = farthestTowardsTheStart(down, upward);
     const bool covered = upward.to >= upward.from ? lowest <= reached : lowest >= reached;
     why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
     if (!covered) why << "; " << reached << " .. " << lowest << " not traced";
