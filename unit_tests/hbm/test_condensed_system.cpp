@@ -15,6 +15,7 @@
 #include "cyclone/hbm/CondensedSystem.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/HarmonicLoads.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 
@@ -156,4 +157,37 @@ TEST(CondensedSystem, RefusesDependentCoordinatesAndUnkeptLoads) {
   // The excitation's DOF 8 not kept.
   EXPECT_THROW(condenseOntoElements(*full, {9}), InputError);
   EXPECT_THROW(condenseOntoElements(*full, {8, 10}), InputError);
+}
+
+// The loads a condensed solution puts on the base model's DOFs (T_p^H f_q), driven
+// through the base model, give back the full system's solution at every DOF; and
+// they are the loads the full system's own solution puts there.
+TEST(HarmonicLoads, CondensedLoadsOnTheBaseModelReproduceTheFullSolution) {
+  const int N = 6;
+  double worstX = 0, worstF = 0;
+  for (int eo : {1, 2}) {
+    auto full = fullSystem(N, eo);
+    const auto c = condenseOntoElements(*full, {8, 9});
+    const auto& H = full->aft().harmonics();
+    const int nc = full->numCoefficients();
+    for (double w : {0.9, 1.7}) {
+      const Eigen::VectorXd X = solve(*full, w), Q = solve(*c.system, w);
+      const auto loads = harmonicLoads(*c.system, Q, w), direct = harmonicLoads(*full, X, w);
+      ASSERT_EQ(loads.size(), std::size_t(H.size()));
+      const auto x = harmonicResponse(c.receptance->base(), loads, w);
+      for (std::size_t k = 0; k < loads.size(); ++k) {
+        const int h = loads[k].harmonic;
+        ASSERT_EQ(loads[k].force.size(), kDofs);
+        for (int i = 0; i < kDofs; ++i) {
+          const std::complex<double> expected(X(i * nc + H.cosIndex(h)), h == 0 ? 0.0 : -X(i * nc + H.sinIndex(h)));
+          worstX = std::max(worstX, std::abs(x[k](i) - expected) / X.cwiseAbs().maxCoeff());
+        }
+        worstF = std::max(worstF, (loads[k].force - direct[k].force).norm() / (1 + direct[k].force.norm()));
+      }
+    }
+  }
+  std::printf("base model driven by the condensed solution's loads vs the full solution: %.1e; loads %.1e\n", worstX,
+              worstF);
+  EXPECT_LT(worstX, 1e-10);
+  EXPECT_LT(worstF, 1e-10);
 }

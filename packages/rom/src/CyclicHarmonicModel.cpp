@@ -130,6 +130,40 @@ Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   return A;
 }
 
+std::vector<Eigen::Vector3cd> CyclicHarmonicModel::fieldResponse(double omega, const Eigen::VectorXcd& forces,
+                                                                 int sign) const {
+  const auto& I = *impl_;
+  const auto nd = I.dofs.size();
+  if (forces.size() != nd)
+    throw InputError("field response", "forces on " + std::to_string(forces.size()) + " DOFs; the model retains " +
+                                           std::to_string(nd) + " per copy");
+  if (sign != 1 && sign != -1) throw InputError("field response", "the travelling wave's sign must be +1 or -1");
+  // Columns: the real and the imaginary part of the load, each on copy a's retained DOFs.
+  linalg::MultiVector rhs(I.G->getMap(), 2);
+  for (Eigen::Index k = 0; k < nd; ++k) {
+    const auto g = I.G->getVector(std::size_t(k));
+    if (forces(k).real() != 0) rhs.getVectorNonConst(0)->update(forces(k).real(), *g, 1.0);
+    if (forces(k).imag() != 0) rhs.getVectorNonConst(1)->update(forces(k).imag(), *g, 1.0);
+  }
+  const double eta = omega == 0 ? 0.0 : I.eta;
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, eta}, *I.op.M, -omega * omega, I.structure);
+  linalg::MultiVector xr(I.G->getMap(), 2), xi(I.G->getMap(), 2);
+  solver.solve(rhs, xr, xi);
+  const auto& mesh = I.op.assembler->mesh();
+  std::vector<Eigen::Vector3cd> u(std::size_t(mesh.numNodes()), Eigen::Vector3cd::Zero());
+  const std::complex<double> i(0, 1);
+  for (int c = 0; c < I.op.copies; ++c) {
+    // The copy's complex field: x(f_r) + i x(f_i), each solve giving xr + i xi.
+    const auto r0 = I.op.assembler->nodalField(xr, 0, c), i0 = I.op.assembler->nodalField(xi, 0, c);
+    const auto r1 = I.op.assembler->nodalField(xr, 1, c), i1 = I.op.assembler->nodalField(xi, 1, c);
+    const std::complex<double> weight = c == 0 ? std::complex<double>(1.0) : double(sign) * i;
+    for (std::size_t n = 0; n < u.size(); ++n)
+      for (int d = 0; d < 3; ++d)
+        u[n](d) += weight * std::complex<double>(r0[n][d] - i1[n][d], i0[n][d] + r1[n][d]);
+  }
+  return u;
+}
+
 Eigen::Index CyclicHarmonicModel::numLoads() const {
   return impl_->F.is_null() ? 0 : Eigen::Index(impl_->F->getNumVectors());
 }

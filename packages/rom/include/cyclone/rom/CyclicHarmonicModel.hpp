@@ -82,6 +82,14 @@ public:
   /// static response G^T (K - sigma M)^{-1} F comes from the same factorization.
   StaticCompliance staticCompliance(double omega0, const RetainedModes& modes) const;
 
+  /// The whole sector's displacement (per node, complex) under forces at the retained DOFs of
+  /// one copy, for the travelling wave SectorReceptance gives this nodal diameter with `sign`
+  /// (SectorReceptance::nodalDiameter): u = u_a + sign i u_b from one complex solve, so that u
+  /// at the retained DOFs is (P + sign i Q) f, the receptance the harmonic balance used.
+  /// omega = 0: the undamped static solve (harmonic 0's convention). The reference for a
+  /// reduced model's expansion, and what stresses are recovered from.
+  std::vector<Eigen::Vector3cd> fieldResponse(double omega, const Eigen::VectorXcd& forces, int sign) const;
+
   /// The real-form K_k, M_k and their unknowns: what reductions onto the retained
   /// DOFs (Guyan, Craig-Bampton: BoundaryReduction) work on.
   const cyclic::HarmonicOperators& operators() const;
