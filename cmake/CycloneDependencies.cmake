@@ -25,10 +25,11 @@ find_package(HDF5 REQUIRED COMPONENTS C CXX)
 
 find_path(EXODUS_INCLUDE_DIR exodusII.h REQUIRED)
 find_library(EXODUS_LIBRARY exoIIv2c REQUIRED)
+find_library(NETCDF_LIBRARY netcdf REQUIRED)  # Exodus files are netCDF: the reader checks their size
 if(NOT TARGET cyclone_exodus)
   add_library(cyclone_exodus INTERFACE)
   target_include_directories(cyclone_exodus SYSTEM INTERFACE ${EXODUS_INCLUDE_DIR})
-  target_link_libraries(cyclone_exodus INTERFACE ${EXODUS_LIBRARY} m)
+  target_link_libraries(cyclone_exodus INTERFACE ${EXODUS_LIBRARY} ${NETCDF_LIBRARY} m)
 endif()
 
 find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)

@@ -98,6 +98,17 @@ double ReducedModelCheck::maxError() const {
   return e;
 }
 
+std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                                   const DiscModelSpec& spec, linalg::CommPtr comm) {
+  if (spec.prestress == "none" || spec.rpm == 0) return std::nullopt;
+  fe::Axis axis;
+  axis.point = Eigen::Vector3d(spec.axis.point[0], spec.axis.point[1], spec.axis.point[2]);
+  axis.direction = Eigen::Vector3d(spec.axis.direction[0], spec.axis.direction[1], spec.axis.direction[2]);
+  const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, spec.fixedNodeSets);
+  return spec.prestress == "linear" ? cyclic::solveLinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm)
+                                    : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
+}
+
 DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
                                          const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
                                          linalg::CommPtr comm) {
@@ -126,18 +137,13 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   problem.fixedNodeSets = spec.fixedNodeSets;
   problem.retainedNodeSets = spec.retainedNodeSets;
   problem.lossFactor = spec.lossFactor;
-  cyclic::PrestressState prestress;
+  std::optional<cyclic::PrestressState> prestress;
   bool prestressed = false;
   auto ensurePrestress = [&] {
-    if (prestressed || spec.prestress == "none" || spec.rpm == 0) return;
-    fe::Axis axis;
-    axis.point = Eigen::Vector3d(spec.axis.point[0], spec.axis.point[1], spec.axis.point[2]);
-    axis.direction = Eigen::Vector3d(spec.axis.direction[0], spec.axis.direction[1], spec.axis.direction[2]);
-    const auto k0 = cyclic::cyclicTransform(mesh, out.sector, 0, spec.fixedNodeSets);
-    prestress = spec.prestress == "linear" ? cyclic::solveLinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm)
-                                           : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
+    if (prestressed) return;
+    prestress = discPrestress(mesh, out.sector, spec, comm);
     prestressed = true;
-    problem.prestress = &prestress;
+    if (prestress) problem.prestress = &*prestress;
   };
 
   // Every reduced kind has an HDF5 form; the full FE model is the reference and is rebuilt.
@@ -147,10 +153,20 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     const std::string path =
         cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
               : std::string();
+    std::optional<post::ReducedModelRecord> cached;
     if (cache && std::filesystem::exists(path)) {
+      try {
+        cached = post::readReducedModelHdf5(path);
+      } catch (const std::exception& e) {
+        // Truncated or damaged (a killed copy, a full disk): rebuilt and written again.
+        log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " cannot be read (" + e.what() +
+                  "); rebuilding it");
+      }
+    }
+    if (cached) {
       if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
         out.check = readCheck(path + ".check.csv", k);
-      const auto record = post::readReducedModelHdf5(path);
+      const auto& record = *cached;
       if (record.kind != spec.kind) throw InputError(path, "holds a " + record.kind + " model, " + spec.kind + " expected");
       // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
       out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"

@@ -162,24 +162,19 @@ std::string shortNumber(double v) {
   return s.str();
 }
 
-// The largest response of a curve: its point and the relative motion W and
-// force F (coefficients) of every contact there.
+// The relative motion W and force F (coefficients) of every contact at the peak point.
 struct PeakContactStates {
   double omega = 0;
   Eigen::MatrixXd X;                            // nc x dofs
   std::vector<Eigen::MatrixXd> W, F;            // per element: nc x d
 };
 
-PeakContactStates peakContactStates(ForcedResponseSetup& setup, const ForcedResponseResult& result) {
-  const auto& hb = *setup.system;
+PeakContactStates peakContactStates(const PeakPoint& point) {
+  const auto& hb = *point.system;
   const int nc = hb.numCoefficients();
-  const auto& pts = result.branch.points;
-  const auto& pt = *std::max_element(pts.begin(), pts.end(), [](const auto& a, const auto& b) {
-    return a.x.norm() < b.x.norm();
-  });
   PeakContactStates out;
-  out.omega = setup.apply(pt.parameter).first;
-  out.X = Eigen::Map<const Eigen::MatrixXd>(pt.x.data(), nc, hb.numDofs());
+  out.omega = point.omega;
+  out.X = Eigen::Map<const Eigen::MatrixXd>(point.x.data(), nc, hb.numDofs());
   for (const auto& c : hb.elements()) {
     Eigen::MatrixXd W = out.X * c.W;
     if (c.Wnext.size() != 0) W += hb.nextSectorMap() * (out.X * c.Wnext);
@@ -190,7 +185,7 @@ PeakContactStates peakContactStates(ForcedResponseSetup& setup, const ForcedResp
   return out;
 }
 
-// Per contact at the largest response: the energy friction dissipates per cycle,
+// Per contact at the peak point: the energy friction dissipates per cycle,
 // E = sum_h pi h (F_ch . W_sh - F_sh . W_ch) from the coefficients of the relative
 // motion w and of the contact force f (exact for the harmonics kept), and the
 // mean normal force. Returns the energies.
@@ -219,13 +214,13 @@ std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const PeakCo
   return energies;
 }
 
-// Contact hysteresis loops at the largest response: the sampled contact law
+// Contact hysteresis loops at the peak point: the sampled contact law
 // (not its truncated Fourier series, whose Gibbs ripples would blur the stick and
 // slip corners) against the relative motion over one period, for the chosen
 // contacts; and the response DOFs over that period.
-void writePeakTimeResponse(ForcedResponseSetup& setup, const PeakContactStates& peak, const std::vector<int>& contacts,
-                           const std::string& outDir, SceneSummary& summary) {
-  const auto& hb = *setup.system;
+void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& point, const PeakContactStates& peak,
+                           const std::vector<int>& contacts, const std::string& outDir, SceneSummary& summary) {
+  const auto& hb = *point.system;
   const auto& aft = hb.aft();
   const int N = aft.numSamples();
   const double hz = peak.omega / (2 * M_PI);
@@ -238,12 +233,13 @@ void writePeakTimeResponse(ForcedResponseSetup& setup, const PeakContactStates& 
     csv.precision(10);
     csv << "contact,freq_hz,t_over_T,slip_t1,slip_t2,approach,force_t1,force_t2,force_n\n";
     std::ostringstream title;
-    title << "Contact hysteresis at the largest response (" << hz << " Hz)";
+    title << "Contact hysteresis at " << point.what;
     // About each direction's mean: the static part differs between directions
     // and would push the loops apart.
     post::SvgPlot plot(title.str(), "relative tangential displacement about its mean (mm)",
                        "tangential contact force (N)");
     int line = 0;
+    double xLow = 0, xHigh = 0;  // the loops' extent: a margin on both sides, none drawn on the frame
     for (int e : contacts) {
       const Eigen::MatrixXd& W = peak.W[std::size_t(e)];
       const int d = int(W.cols());
@@ -260,12 +256,15 @@ void writePeakTimeResponse(ForcedResponseSetup& setup, const PeakContactStates& 
         std::vector<double> x(std::size_t(N) + 1), y(std::size_t(N) + 1);
         const double mean = w.col(c).mean();
         for (int i = 0; i <= N; ++i) x[std::size_t(i)] = w(i % N, c) - mean, y[std::size_t(i)] = f(i % N, c);
+        xLow = std::min(xLow, *std::min_element(x.begin(), x.end()));
+        xHigh = std::max(xHigh, *std::max_element(x.begin(), x.end()));
         plot.addLine(x, y, post::SvgPlot::palette(line++),
                      "contact " + std::to_string(e) + ", " + tangential[c]);
       }
     }
     csv.close();
     file.commit();
+    if (xHigh > xLow) plot.setXRange(xLow - 0.05 * (xHigh - xLow), xHigh + 0.05 * (xHigh - xLow));
     plot.write(outDir + "/disc_hysteresis.svg");
   }
   {
@@ -276,7 +275,7 @@ void writePeakTimeResponse(ForcedResponseSetup& setup, const PeakContactStates& 
     for (int dof : setup.outputDofs) csv << "," << setup.dofNames[std::size_t(dof)];
     csv << "\n";
     std::ostringstream title;
-    title << "Response over one period at the largest response (" << hz << " Hz)";
+    title << "Response over one period at " << point.what;
     post::SvgPlot plot(title.str(), "t / T", "displacement (mm)");
     Eigen::MatrixXd x(N, setup.outputDofs.size());
     for (std::size_t k = 0; k < setup.outputDofs.size(); ++k) {
@@ -309,8 +308,10 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   std::vector<int> nds;
   DiscResponseSpec spec;
   int harmonicsCheckTo = 0;
+  PeakStressSpec peakStress;
   if (forcedResponse) {
     spec = readResponseSpec(d);
+    peakStress = readPeakStressSpec(d, scene.section("material"), modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
     harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
     if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors) {
@@ -492,15 +493,20 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     summary.computed.insert(summary.computed.begin(), line.str());
     log::info(line.str());
   }
-  if (!reference.branch.points.empty() && comm->getRank() == 0) {
-    const PeakContactStates peak = peakContactStates(setup, reference);
-    const auto energies =
-        writeContactEnergies(setup.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
-    summary.written.push_back(outDir + "/disc_frc_contacts.csv");
-    // Default: the contact that dissipates most at the peak.
-    std::vector<int> loops = hysteresisContacts;
-    if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
-    writePeakTimeResponse(setup, peak, loops, outDir, summary);
+  if (!reference.branch.points.empty()) {
+    // Contacts, loops, the period and the sector's stresses at one point: the converged peak.
+    const PeakPoint point = referencePeakPoint(setup, reference);
+    if (comm->getRank() == 0) {
+      const PeakContactStates peak = peakContactStates(point);
+      const auto energies =
+          writeContactEnergies(point.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
+      summary.written.push_back(outDir + "/disc_frc_contacts.csv");
+      // Default: the contact that dissipates most at the peak.
+      std::vector<int> loops = hysteresisContacts;
+      if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
+      writePeakTimeResponse(setup, point, peak, loops, outDir, summary);
+    }
+    writePeakStress(peakStress, mesh, models, modelSpec, point, setup.excitationScale, outDir, comm, summary);
   }
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.

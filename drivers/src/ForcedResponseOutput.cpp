@@ -126,6 +126,8 @@ continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& syst
 // One level of the harmonics check on a frequency curve.
 struct PeakLevel {
   int maxHarmonic = 0;
+  std::vector<int> harmonics;  ///< the level's harmonic set
+  int samples = 0;             ///< and its samples per period
   continuation::PeakSearchResult peak;
   double seconds = 0;
   double startHz = 0;  ///< where the search started (the level below's peak, or its flank)
@@ -182,6 +184,7 @@ std::vector<PeakLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, con
     }
     PeakLevel level;
     level.maxHarmonic = H;
+    level.harmonics = set.harmonics(), level.samples = system->aft().numSamples();
     level.startHz = hz;
     bool started = true;  // X solves this level at hz (the search's own Newton would only repeat a failure)
     if (system != lower) {
@@ -344,6 +347,7 @@ std::string harmonicsCheck(ForcedResponseSetup& setup, const continuation::Branc
       best.found = true;
       best.maxHarmonic = levels[reached].maxHarmonic, best.value = levels[reached].peak.value,
       best.hz = levels[reached].peak.parameter;
+      best.x = levels[reached].peak.x, best.harmonics = levels[reached].harmonics, best.samples = levels[reached].samples;
     }
     if (best.found && reached < levels.size()) best.notFoundHarmonic = levels[reached].maxHarmonic;
     if (j >= 1) {

@@ -88,11 +88,23 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
   if (exists(outDir, "disc_time_response.svg"))
     r << "The response DOFs over one period (`disc_time_response.csv`):\n\n"
          "![time response](disc_time_response.svg)\n\n";
+  if (exists(outDir, "disc_goodman.svg")) {
+    r << "## Vibratory stress and fatigue margin at the peak\n\nThe whole sector solved with the forces the "
+         "harmonic balance solution puts on the reduced model (a full FE solve per harmonic), its stresses, and "
+         "per node the alternating von Mises stress (the largest excursion from the mean over the period) against "
+         "the signed von Mises mean stress (prestress + harmonic 0) in the Goodman-Haigh diagram; the safety factor "
+         "is the allowable alternating stress at the node's mean over its alternating stress "
+         "(`disc_peak_response.exo`: per harmonic displacement, stresses, safety factor; "
+         "`disc_peak_vibration.exo`: one period as time steps for ParaView).\n\n"
+         "![Goodman-Haigh diagram](disc_goodman.svg)\n\nThe worst nodes (`disc_peak_stress.csv`):\n\n"
+      << csvTable(outDir + "/disc_peak_stress.csv", 8) << "\n";
+  }
   bool studies = false;
   for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
     const auto name = entry.path().filename().string();
     if (name.rfind("study_", 0) != 0 || entry.path().extension() != ".svg") continue;
     const std::string base = name.substr(0, name.size() - 4);
+    if (exists(outDir, base + ".h5")) continue;  // one curve of a study (its points): the study's figure shows it
     if (!studies) r << "## Parameter studies\n\n", studies = true;
     r << "### " << base.substr(6) << "\n\n![" << base << "](" << name << ")\n\n";
     if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";

@@ -2,6 +2,8 @@
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_CommHelpers.hpp>
+
+#include <optional>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <Eigen/Eigenvalues>
@@ -45,6 +47,7 @@
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
+#include "RunManifest.hpp"
 #include "SceneStages.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
@@ -67,6 +70,7 @@ fe::IsotropicElastic readMaterial(SceneSection m) {
   material.E = m.getDouble("E", material.E);
   material.nu = m.getDouble("nu", material.nu);
   material.rho = m.getDouble("rho", material.rho);
+  if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readFatigueMaterial)
   m.rejectUnknownKeys();
   material.validate(m.location());
   return material;
@@ -814,12 +818,7 @@ ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
   if (!in) throw InputError(path, "cannot open the scene file");
   std::stringstream text;
   text << in.rdbuf();
-  Teuchos::RCP<Teuchos::ParameterList> root;
-  try {
-    root = Teuchos::getParametersFromYamlString(text.str());
-  } catch (const std::exception& e) {
-    throw InputError(path, std::string("not a valid YAML scene: ") + e.what());
-  }
+  const auto root = parseSceneYaml(text.str(), path);
   const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
   SceneSection scene(top, path, "cyclone");
   return readForcedResponseSetup(scene);
@@ -901,14 +900,15 @@ void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string&
 
 }  // namespace
 
+namespace {
+void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
+               const std::string& source, const std::string& sceneDir, const std::string& outDir,
+               linalg::CommPtr comm, SceneSummary& summary);
+}  // namespace
+
 SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
                           linalg::CommPtr comm) {
-  Teuchos::RCP<Teuchos::ParameterList> root;
-  try {
-    root = Teuchos::getParametersFromYamlString(yaml);
-  } catch (const std::exception& e) {
-    throw InputError(source, std::string("not a valid YAML scene: ") + e.what());
-  }
+  const auto root = parseSceneYaml(yaml, source);
   const std::string sceneDir = std::filesystem::path(source).has_parent_path()
                                    ? std::filesystem::path(source).parent_path().string()
                                    : ".";
@@ -943,8 +943,47 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
                                        "matrix), got " + std::to_string(material.rho));
   }
   if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
-  comm->barrier();
+  // The run's mark in the directory (rank 0), before anything is written: a second run
+  // into it is refused on every rank.
+  std::optional<RunManifest> manifest;
+  std::string refused, previousUnfinished;
+  if (comm->getRank() == 0) {
+    try {
+      manifest.emplace(outDir, source, previousUnfinished);
+    } catch (const InputError& e) {
+      refused = e.what();
+    }
+  }
+  int isRefused = refused.empty() ? 0 : 1;
+  Teuchos::broadcast(*comm, 0, &isRefused);
+  if (isRefused) throw InputError(outDir, comm->getRank() == 0 ? refused : "another run is writing into it");
+  if (!previousUnfinished.empty()) {
+    log::warn(previousUnfinished);
+    summary.computed.push_back("warning: " + previousUnfinished);
+  }
+  try {
+    runStages(scene, analyses, overrides, source, sceneDir, outDir, comm, summary);
+  } catch (const InputError& e) {
+    // The library names the entry ("excitation: DOF 5 out of range"); the scene file is
+    // added where the message does not start with it (issue 20).
+    const std::string what = e.what();
+    if (manifest) manifest->fail(what);
+    if (what.rfind(source, 0) == 0) throw;
+    throw InputError(source, what);
+  } catch (const std::exception& e) {
+    if (manifest) manifest->fail(e.what());
+    throw;
+  }
+  if (manifest) manifest->complete(summary.written);
+  return summary;
+}
 
+namespace {
+
+void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
+               const std::string& source, const std::string& sceneDir, const std::string& outDir,
+               linalg::CommPtr comm, SceneSummary& summary) {
+  auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   if (wants("forced_response")) {
     // Matrix-defined systems need no mesh.
     Timer stage;
@@ -952,11 +991,23 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     summary.stages.push_back({"forced response", stage.seconds(), "see the samples check"});
     if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
     summary.written.push_back(outDir + "/report.md");
-    return summary;
+    return;
   }
   int builtInSectors = 0;
   Timer stage;
   auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
+  // A node in no element has no stiffness: named here, not by the factorization's
+  // "not positive definite" (issue 20). Writing the mesh alone does not need it.
+  if (const auto orphans = mesh::orphanNodes(mesh);
+      !orphans.empty() && (wants("static") || wants("modal") || wants("disc_response") || wants("reduced_model"))) {
+    std::ostringstream ids;
+    for (std::size_t i = 0; i < std::min<std::size_t>(orphans.size(), 5); ++i)
+      ids << (i ? ", " : "") << mesh.nodeIds[std::size_t(orphans[i])];
+    if (orphans.size() > 5) ids << ", ...";
+    throw InputError(mesh.source, std::to_string(orphans.size()) + " node" + (orphans.size() > 1 ? "s" : "") +
+                                      " in no element (id " + ids.str() +
+                                      "): nothing holds them, so every solve would be singular; remove them");
+  }
   summary.stages.push_back({"mesh", stage.seconds(), "element Jacobians checked positive at every integration point"});
   if (wants("static")) {
     stage.restart();
@@ -973,8 +1024,9 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, comm, summary);
   if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
   summary.written.push_back(outDir + "/report.md");
-  return summary;
 }
+
+}  // namespace
 
 SceneSummary runSceneFile(const std::string& path, const SceneOverrides& overrides, linalg::CommPtr comm) {
   std::ifstream in(path);

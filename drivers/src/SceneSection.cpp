@@ -1,6 +1,10 @@
 #include "cyclone/scenes/SceneSection.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <Teuchos_YamlParameterListCoreHelpers.hpp>
+
+#include <regex>
+#include <sstream>
 
 #include "cyclone/core/Error.hpp"
 
@@ -12,6 +16,75 @@ const Teuchos::ParameterList& emptyList() {
   return empty;
 }
 }  // namespace
+
+namespace {
+// What an empty flow list `[]` becomes before Teuchos reads the text (it has no element
+// type to give an empty array); the list getters read it back as an empty list.
+const char* const kEmptyList = "__cyclone_empty_list__";
+bool isEmptyList(const Teuchos::ParameterList& list, const std::string& key) {
+  return list.isType<std::string>(key) && list.get<std::string>(key) == kEmptyList;
+}
+}  // namespace
+
+namespace {
+// Limits checked before Teuchos reads the text: its parser's time grows much faster than
+// the text with nesting and long lists (issue 20: 10 000 nested maps, 50 kB, over 60 s;
+// a 10 MB list over 100 s). Shipped scenes are about 2 kB, nested 5 deep; matrices and
+// meshes live in files.
+constexpr std::size_t kMaxSceneBytes = 1 << 20;
+constexpr int kMaxNesting = 32;
+
+void checkSceneLimits(const std::string& yaml, const std::string& source) {
+  if (yaml.size() > kMaxSceneBytes)
+    throw InputError(source, "the scene is " + std::to_string(yaml.size() / 1024) +
+                                 " kB; scenes are limited to 1 MB (put meshes and matrices in files)");
+  int depth = 0, line = 1;
+  bool quoted = false, comment = false, lineStart = true;
+  char quote = 0;
+  int indent = 0;
+  auto tooDeep = [&] {
+    throw InputError(source + ": line " + std::to_string(line),
+                     "nested more than " + std::to_string(kMaxNesting) + " levels deep (a scene needs about 5); not read");
+  };
+  for (const char c : yaml) {
+    if (c == '\n') {  // a quote left open ends with its line here (scenes have no multi-line strings)
+      ++line, comment = quoted = false, lineStart = true, indent = 0;
+      continue;
+    }
+    if (lineStart) {
+      if (c == ' ') {
+        ++indent;
+        continue;
+      }
+      lineStart = false;
+      if (indent > 2 * kMaxNesting) tooDeep();  // block nesting: two spaces a level in practice
+    }
+    if (comment) continue;
+    if (quoted) {
+      if (c == quote) quoted = false;
+      continue;
+    }
+    if (c == '#') comment = true;
+    else if (c == '"' || c == '\'') quoted = true, quote = c;
+    else if ((c == '{' || c == '[') && ++depth > kMaxNesting) tooDeep();
+    else if (c == '}' || c == ']') --depth;
+  }
+}
+}  // namespace
+
+Teuchos::RCP<Teuchos::ParameterList> parseSceneYaml(const std::string& yaml, const std::string& source) {
+  checkSceneLimits(yaml, source);
+  static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\]([ \t]*(#.*)?)$)");
+  std::istringstream in(yaml);
+  std::ostringstream text;
+  std::string line;
+  while (std::getline(in, line)) text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList + "$2") << "\n";
+  try {
+    return Teuchos::getParametersFromYamlString(text.str());
+  } catch (const std::exception& e) {
+    throw InputError(source, std::string("not a valid YAML scene: ") + e.what());
+  }
+}
 
 SceneSection::SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path)
     : list_(list), file_(std::move(file)), path_(std::move(path)) {}
@@ -60,6 +133,7 @@ std::string SceneSection::getString(const std::string& key, const std::string& f
 std::vector<std::string> SceneSection::getStringList(const std::string& key, const std::vector<std::string>& fallback) {
   markUsed(key);
   if (!has(key)) return fallback;
+  if (isEmptyList(list_, key)) return {};
   if (list_.isType<Teuchos::Array<std::string>>(key)) {
     const auto& a = list_.get<Teuchos::Array<std::string>>(key);
     return std::vector<std::string>(a.begin(), a.end());
@@ -71,6 +145,7 @@ std::vector<std::string> SceneSection::getStringList(const std::string& key, con
 std::vector<int> SceneSection::getIntList(const std::string& key, const std::vector<int>& fallback) {
   markUsed(key);
   if (!has(key)) return fallback;
+  if (isEmptyList(list_, key)) return {};
   if (list_.isType<Teuchos::Array<int>>(key)) {
     const auto& a = list_.get<Teuchos::Array<int>>(key);
     return std::vector<int>(a.begin(), a.end());
@@ -82,6 +157,7 @@ std::vector<int> SceneSection::getIntList(const std::string& key, const std::vec
 std::vector<double> SceneSection::getDoubleList(const std::string& key, const std::vector<double>& fallback) {
   markUsed(key);
   if (!has(key)) return fallback;
+  if (isEmptyList(list_, key)) return {};
   if (list_.isType<Teuchos::Array<double>>(key)) {
     const auto& a = list_.get<Teuchos::Array<double>>(key);
     return std::vector<double>(a.begin(), a.end());

@@ -1,10 +1,17 @@
 #pragma once
 // What the scene runner's stages share (private to the scenes library).
+#include <memory>
 #include <string>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/fatigue/GoodmanHaigh.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
+#include "cyclone/scenes/DiscReducedModels.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
@@ -30,6 +37,11 @@ struct HarmonicsConvergedPeak {
   int belowHarmonic = -1;  ///< the level compared with (-1: none found)
   double change = -1;      ///< |peak / peak below - 1| (-1: not known)
   int notFoundHarmonic = -1;  ///< the next level, tried and its peak not found (-1: none)
+  /// The peak's solution: the curve's system raised to `harmonics` with `samples`
+  /// (hbm::withHarmonics), at hz.
+  Eigen::VectorXd x;
+  std::vector<int> harmonics;
+  int samples = 0;
 };
 
 struct ForcedResponseResult {
@@ -58,6 +70,44 @@ int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic);
 /// report.md in the output directory: the run's summary, its figures (the SVGs the
 /// stages wrote), the studies' tables and the stages' error against run time.
 void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary);
+
+/// The point of a reference curve its peak outputs are written at: the harmonics check's
+/// highest level found (its system raised to those harmonics), else the traced point
+/// nearest the located peak with the curve's own system.
+struct PeakPoint {
+  std::unique_ptr<hbm::HarmonicBalanceSystem> raised;  ///< owns `system` when raised
+  const hbm::HarmonicBalanceSystem* system = nullptr;
+  Eigen::VectorXd x;
+  double omega = 0;
+  std::string what;  ///< "the peak with harmonics 0..4 at 1397.8 Hz", for titles and the summary
+  /// Empty when the point is converged in the harmonics to 1 %; else why it is an estimate,
+  /// for every number computed at it.
+  std::string caveat;
+};
+PeakPoint referencePeakPoint(ForcedResponseSetup& setup, const ForcedResponseResult& reference);
+
+/// What `disc_response/peak_stress` asks for: the sector's whole vibration at the
+/// friction-damped peak, its stresses and (margin) the Goodman-Haigh safety factor.
+struct PeakStressSpec {
+  bool run = false;
+  bool margin = true;
+  int animationSteps = 32;  ///< time steps of one period in disc_peak_vibration.exo
+  fatigue::FatigueMaterial material;
+  std::string stressUnit = "stress units";  ///< "MPa" or "Pa" when the material's E tells
+};
+/// Reads disc_response/peak_stress and material/fatigue (`material` as read). InputError
+/// when a margin is asked for without fatigue data, naming both keys.
+PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection materialSection,
+                                  const fe::IsotropicElastic& material);
+
+/// The sector's vibration at the reference curve's peak (the harmonics check's highest
+/// found level, else the traced point nearest the peak): disc_peak_response.exo (per
+/// harmonic displacement, stresses, safety factor), disc_peak_vibration.exo (one period
+/// as time steps), and with a margin disc_peak_stress.csv (every node, worst first) and
+/// disc_goodman.svg; lines for the summary.
+void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const DiscReducedModels& models,
+                     const DiscModelSpec& modelSpec, const PeakPoint& point, double excitationScale,
+                     const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
 
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.

@@ -3,6 +3,9 @@
 // product behind.
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <array>
 
@@ -19,6 +22,8 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "cyclone/mesh/AbaqusIO.hpp"
 #include "cyclone/post/ResponseCurveFile.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
@@ -276,6 +281,84 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     EXPECT_EQ(energies.at(contact), largest);
     std::printf("hysteresis loop of contact %d: area %.6e, energy from the harmonics %.6e\n", contact, area, largest);
     EXPECT_NEAR(area, largest, 0.02 * largest);
+  }
+
+  // The sector's vibration at the peak: the full FE field at the retained DOFs against the
+  // harmonic balance solution (the reduced model's error); the headline's safety factor is
+  // the worst node's, and the Goodman closed form of its own mean and alternating stress.
+  {
+    for (const char* f : {"disc_peak_response.exo", "disc_peak_vibration.exo", "disc_peak_stress.csv", "disc_goodman.svg"})
+      EXPECT_TRUE(fs::exists(dir / f)) << f;
+    double fieldError = -1;
+    for (const auto& line : summary.computed)
+      if (const auto at = line.find("differs from the harmonic balance solution by "); at != std::string::npos)
+        fieldError = std::stod(line.substr(at + 46));
+    std::printf("whole field at the retained DOFs against the harmonic balance solution: %.2e\n", fieldError);
+    EXPECT_GE(fieldError, 0.0);
+    EXPECT_LT(fieldError, 1e-3);  // the hybrid model with 20 modes per ND: a few 1e-6 on the default mesh
+    std::ifstream csv(dir / "disc_peak_stress.csv");
+    std::string line;
+    std::getline(csv, line);
+    std::getline(csv, line);
+    long node = 0;
+    double x, y, z, mean, alt, principal, top, factor;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &node, &x, &y, &z, &mean, &alt,
+                          &principal, &top, &factor), 9) << line;
+    // Ti-6Al-4V: S_e (1 - s_m / S_u), at most S_y - |s_m| (tensile mean here).
+    const double allowed = std::min(510 * (1 - std::max(mean, 0.0) / 950), 880 - std::abs(mean));
+    EXPECT_NEAR(factor, allowed / alt, 1e-6 * factor);
+    EXPECT_GT(alt, 0.0);
+    EXPECT_GE(principal, alt / std::sqrt(3.0));  // von Mises is at most sqrt(3) times the largest principal
+    std::ifstream report(dir / "report.md");
+    const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("![Goodman-Haigh diagram](disc_goodman.svg)"), std::string::npos);
+    const auto at = text.find("- fatigue margin at ");
+    ASSERT_NE(at, std::string::npos) << "the report states the margin";
+    const std::string headline = text.substr(at, text.find('\n', at) - at);
+    std::printf("%s\n", headline.c_str());
+    EXPECT_NE(headline.find("critical node " + std::to_string(node) + " "), std::string::npos) << headline;
+    const auto sf = headline.find("safety factor ");
+    ASSERT_NE(sf, std::string::npos);
+    EXPECT_NEAR(std::stod(headline.substr(sf + 14)), factor, 1e-3 * factor);
+    // The animation's first step (t = 0) is the sum of the harmonics' real parts.
+    const auto fields = mesh::readExodusResults((dir / "disc_peak_response.exo").string());
+    const auto period = mesh::readExodusResults((dir / "disc_peak_vibration.exo").string());
+    ASSERT_EQ(period.steps.size(), 32u);
+    ASSERT_EQ(period.nodalNames[0], "u_x");
+    double worst = 0, largest = 0;
+    for (std::size_t n = 0; n < period.steps[0].nodal[0].size(); ++n) {
+      double sum = 0;
+      for (std::size_t v = 0; v < fields.nodalNames.size(); ++v) {
+        const auto& name = fields.nodalNames[v];
+        if (name == "u_h0_x" || (name.rfind("u_h", 0) == 0 && name.size() > 8 && name.substr(name.size() - 5) == "_re_x"))
+          sum += fields.steps[0].nodal[v][n];
+      }
+      worst = std::max(worst, std::abs(sum - period.steps[0].nodal[0][n]));
+      largest = std::max(largest, std::abs(sum));
+    }
+    EXPECT_LT(worst, 1e-12 + 1e-12 * largest);
+    EXPECT_GT(largest, 0.0);
+    // A reader other than ours opens both files and sees the fields (python3-meshio, Debian).
+    const std::string script =
+        "import meshio, sys\n"
+        "m = meshio.read(sys.argv[1])\n"
+        "need = ['u_h1_re_x', 'u_h1_im_z', 'u_h0_x', 'sigma_alt_vm', 'sigma_mean_vm_signed', 'safety_factor']\n"
+        "missing = [k for k in need if k not in m.point_data]\n"
+        "assert not missing, missing\n"
+        "assert abs(m.point_data['safety_factor'].min() - float(sys.argv[3])) <= 1e-6 * float(sys.argv[3])\n"
+        "v = meshio.read(sys.argv[2])\n"
+        "assert 'u_x' in v.point_data and 'sigma_vm' in v.point_data, list(v.point_data)\n"
+        "print('meshio reads', len(m.points), 'nodes,', len(m.point_data), 'fields')\n";
+    {
+      std::ofstream py(dir / "check_exodus.py");
+      py << script;
+    }
+    std::ostringstream cmd;
+    cmd.precision(12);
+    cmd << "/usr/bin/python3 " << (dir / "check_exodus.py") << " " << (dir / "disc_peak_response.exo") << " "
+        << (dir / "disc_peak_vibration.exo") << " " << factor;
+    EXPECT_EQ(std::system(cmd.str().c_str()), 0) << cmd.str();
+    fs::remove(dir / "check_exodus.py");
   }
 
   const auto mesh = mesh::readExodus((dir / "static.exo").string());
@@ -544,6 +627,136 @@ TEST(Scenes, MissingMeshFileIsNamed) {
   const auto both = failure(yaml + "    shrouded_sector:\n      sectors: 24\n", dir);
   EXPECT_NE(both.find("mesh/shrouded_sector"), std::string::npos) << both;
   EXPECT_NE(both.find("applies to source: shrouded_sector only"), std::string::npos) << both;
+}
+
+// An empty YAML list means none (Teuchos cannot type `[]`; issue 18): a mesh scene with
+// `write: []` runs and writes no mesh file.
+TEST(Scenes, AnEmptyListMeansNone) {
+  log::setQuiet(true);
+  const auto dir = freshDir("empty_list");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const std::string yaml = "cyclone:\n  analysis: mesh\n  mesh:\n    source: shrouded_sector\n    write: []   # none\n"
+                           "    shrouded_sector:\n      mesh_size: 12.0\n";
+  scenes::runSceneText(yaml, "empty.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_FALSE(fs::exists(dir / "mesh.exo"));
+  EXPECT_FALSE(fs::exists(dir / "mesh.inp"));
+}
+
+// The run's mark in its output directory (issue 20): a second run into a directory whose
+// lock is held is refused, naming the other run; a run that died leaves "running",
+// which the next run reports; a finished run says "complete" with its files, a failed
+// one "failed" with the reason.
+TEST(Scenes, ARunMarksItsDirectoryAndAConcurrentRunIsRefused) {
+  log::setQuiet(true);
+  const auto dir = freshDir("manifest");
+  fs::create_directories(dir);
+  auto manifest = [&] {
+    std::ifstream in(dir / "run_manifest.txt");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  {
+    std::ofstream m(dir / "run_manifest.txt");
+    m << "status: running\nscene: other.yaml\npid: 4242\nstarted: 2026-11-25T10:00:00Z\n";
+  }
+  const int fd = ::open((dir / ".cyclone_run.lock").c_str(), O_CREAT | O_RDWR, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const auto busy = failure(smallScene(), dir);
+  EXPECT_NE(busy.find("another cyclone run is writing into this output directory"), std::string::npos) << busy;
+  EXPECT_NE(busy.find("4242"), std::string::npos) << busy;
+  EXPECT_NE(manifest().find("scene: other.yaml"), std::string::npos) << "the refused run left the manifest alone";
+  ::close(fd);  // the other run "dies": its manifest still says running
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(smallScene(), "small.yaml", o, Tpetra::getDefaultComm());
+  bool warned = false;
+  for (const auto& line : summary.computed) warned = warned || line.find("stopped without finishing") != std::string::npos;
+  EXPECT_TRUE(warned);
+  const auto done = manifest();
+  EXPECT_NE(done.find("status: complete"), std::string::npos) << done;
+  EXPECT_NE(done.find("static.exo"), std::string::npos) << done;
+  failure(smallScene("    nonsense_key: 1\n"), dir);
+  EXPECT_NE(manifest().find("status: failed"), std::string::npos) << manifest();
+}
+
+// Scenes the YAML parser would spend minutes on (issue 20: 10 000 nested flow maps, a
+// 10 MB list) are refused first, with the line or the size.
+TEST(Scenes, DeepOrHugeScenesAreRefusedBeforeParsing) {
+  const auto dir = freshDir("limits");
+  std::string nested = "cyclone: ";
+  for (int i = 0; i < 10000; ++i) nested += "{a: ";
+  nested += "1" + std::string(10000, '}') + "\n";
+  const auto deep = failure(nested, dir);
+  EXPECT_NE(deep.find("nested more than 32 levels"), std::string::npos) << deep;
+  EXPECT_NE(deep.find("line 1"), std::string::npos) << deep;
+  std::string block = "cyclone:\n";
+  for (int i = 1; i < 40; ++i) block += std::string(2 * i, ' ') + "a" + std::to_string(i) + ":\n";
+  const auto indented = failure(block + std::string(80, ' ') + "x: 1\n", dir);
+  EXPECT_NE(indented.find("nested more than 32 levels"), std::string::npos) << indented;
+  std::string huge = "cyclone:\n  analysis: static\n  list: [";
+  for (int i = 0; i < 400000; ++i) huge += "1.0, ";
+  const auto big = failure(huge + "1.0]\n", dir);
+  EXPECT_NE(big.find("limited to 1 MB"), std::string::npos) << big;
+}
+
+// A margin asked for without fatigue data names both keys before any FE work; a
+// known material in units E does not tell is refused with the reason.
+TEST(Scenes, AFatigueMarginNeedsFatigueData) {
+  const auto dir = freshDir("fatigue");
+  auto scene = [](int steps) {
+    return "cyclone:\n  analysis: disc_response\n  mesh:\n    source: shrouded_sector\n"
+           "  constraints:\n    fixed_node_sets: [bore]\n  disc_response:\n    engine_order: 3\n    peak_stress:\n      animation_steps: " +
+           std::to_string(steps) + "\n";
+  };
+  const std::string disc = scene(16);
+  const auto missing = failure(disc, dir);
+  EXPECT_NE(missing.find("material/fatigue"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("peak_stress"), std::string::npos) << missing;
+  const std::string inPsi = disc + "  material:\n    E: 16.8e6\n    fatigue:\n      data: Ti-6Al-4V\n";
+  const auto units = failure(inPsi, dir);
+  EXPECT_NE(units.find("material/fatigue/data"), std::string::npos) << units;
+  EXPECT_NE(units.find("stress unit"), std::string::npos) << units;
+  const auto bad = failure(disc + "  material:\n    fatigue:\n      ultimate_strength: 900\n      endurance_limit: 950\n", dir);
+  EXPECT_NE(bad.find("endurance_limit"), std::string::npos) << bad;
+  const auto steps = failure(scene(2), dir);
+  EXPECT_NE(steps.find("animation_steps"), std::string::npos) << steps;
+}
+
+// A message the library gives with the entry only ("excitation: DOF 5 out of range") names
+// the scene file too (issue 20).
+TEST(Scenes, LibraryMessagesNameTheSceneFile) {
+  const auto dir = freshDir("library_message");
+  const std::string scene = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 1\n    M: [1.0]\n    C: [0.05]\n"
+                            "    K: [1.0]\n  excitation:\n    force:\n      dof: 5\n      harmonic: 1\n      cos: 0.18\n"
+                            "  harmonics: [1]\n  continuation:\n    parameter: omega\n    from: 0.5\n    to: 2.0\n";
+  const auto msg = failure(scene, dir);
+  EXPECT_EQ(msg.rfind("bad.yaml", 0), 0u) << msg;
+  EXPECT_NE(msg.find("DOF 5"), std::string::npos) << msg;
+}
+
+// A node in no element is named before any solve (issue 20: CHOLMOD's "not positive
+// definite" named nothing); writing the mesh alone still works.
+TEST(Scenes, ANodeInNoElementIsNamed) {
+  log::setQuiet(true);
+  const auto dir = freshDir("orphan");
+  fs::create_directories(dir);
+  mesh::ShroudedSectorParameters p;
+  p.meshSize = 12.0;
+  auto m = mesh::generateShroudedSector(p);
+  m.assignDefaultIds();
+  m.coords.push_back({500.0, 0.0, 0.0});
+  m.nodeIds.push_back(987654);
+  mesh::writeAbaqusInp((dir / "deck.inp").string(), m);
+  const std::string scene = "cyclone:\n  analysis: static\n  mesh:\n    source: " + (dir / "deck.inp").string() +
+                            "\n  constraints:\n    fixed_node_sets: [bore]\n";
+  const auto msg = failure(scene, dir / "out");
+  EXPECT_NE(msg.find("deck.inp"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("1 node in no element (id 987654)"), std::string::npos) << msg;
+  scenes::SceneOverrides o;
+  o.outputDirectory = (dir / "mesh_only").string();
+  const std::string meshOnly = "cyclone:\n  analysis: mesh\n  mesh:\n    source: " + (dir / "deck.inp").string() + "\n";
+  EXPECT_NO_THROW(scenes::runSceneText(meshOnly, "mesh.yaml", o, Tpetra::getDefaultComm()));
 }
 
 TEST(Scenes, ModalSceneWritesFrequenciesPerNodalDiameter) {

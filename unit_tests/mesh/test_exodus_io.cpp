@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <functional>
 
 #include "MeshTestSupport.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
@@ -182,6 +184,46 @@ TEST(ExodusIO, ReaderRejectsMissingAndForeignFiles) {
   const std::string text = dir.write("text.exo", "this is not netCDF\n");
   expectInputError([&] { readExodus(text); }, {"text.exo", "not a readable Exodus II file"});
   expectInputError([&] { readExodusResults(text); }, {"text.exo"});
+}
+
+// A file cut short (a copy killed half way) is refused naming the file, at any cut, never
+// read as a mesh whose missing part is zeros (issue 20: "node id 0 is used twice"). A cut
+// inside the results leaves the mesh whole: it reads as the original, and the results
+// are refused.
+TEST(ExodusIO, TruncatedFilesAreRefusedAsSuch) {
+  TempDirectory dir;
+  const Mesh original = cubeWithTet();
+  const std::string whole = dir.file("whole.exo");
+  writeExodus(whole, original, twoSteps(original));
+  const auto size = std::filesystem::file_size(whole);
+  int meshRefused = 0, resultsRefused = 0;
+  for (double cut : {0.3, 0.5, 0.7, 0.8, 0.9, 0.95}) {
+    const std::string path = dir.file("cut" + std::to_string(int(100 * cut)) + ".exo");
+    std::filesystem::copy_file(whole, path);
+    std::filesystem::resize_file(path, std::uintmax_t(cut * double(size)));
+    auto refused = [&](const std::function<void()>& read) {
+      try {
+        read();
+      } catch (const cyclone::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path), std::string::npos) << what;
+        EXPECT_EQ(what.find("used twice"), std::string::npos) << what;
+        return true;
+      }
+      return false;
+    };
+    Mesh m;
+    if (refused([&] { m = readExodus(path); })) {
+      ++meshRefused;
+    } else {
+      EXPECT_EQ(m.coords, original.coords) << cut;
+      EXPECT_EQ(m.nodeIds, original.nodeIds) << cut;
+    }
+    if (refused([&] { readExodusResults(path); })) ++resultsRefused;
+    else ADD_FAILURE() << path << " (" << cut << " of the file): its results read as if whole";
+  }
+  std::printf("truncated Exodus files: mesh refused %d of 6, results refused %d of 6\n", meshRefused, resultsRefused);
+  EXPECT_GE(meshRefused, 1);
 }
 
 TEST(ExodusIO, ReaderChecksGeometry) {

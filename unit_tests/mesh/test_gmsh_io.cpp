@@ -2,6 +2,9 @@
 // and meshes built with the gmsh API here (a box), written to .msh and read back:
 // counts against gmsh's, volume against the box's, mid-edge nodes at mid-edges.
 #include <gtest/gtest.h>
+#include <iterator>
+#include <fstream>
+#include <cstring>
 
 #include <gmsh.h>
 
@@ -180,6 +183,40 @@ TEST(GmshModel, UnsupportedElementsAreAnInputError) {
 
   gmsh::model::add("empty");
   expectInputError([] { meshFromGmshModel("empty model"); }, {"empty model", "no 3D elements"});
+}
+
+// A binary file reads as the ASCII one does; a damaged count (a node block's size read at
+// the wrong offset, as in a file written with padding after its int fields: 16.9 GB
+// allocated for 600 bytes, issue 20) is refused before gmsh allocates anything.
+TEST(GmshReader, BinaryCountsAreCheckedAgainstTheFileSize) {
+  TempDirectory dir;
+  const std::string path = dir.file("box_binary.msh");
+  {
+    GmshSession session;
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.Binary", 1);
+    meshTet10Box(path);
+  }
+  const Mesh mesh = readGmsh(path);
+  EXPECT_GT(mesh.numNodes(), 100);
+  EXPECT_NEAR(meshVolume(mesh), 2 * 1 * 0.5, 1e-12);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto nodes = bytes.find("$Nodes\n") + 7;  // then 4 size_t, then the first block
+  auto damaged = [&](const std::string& name, std::size_t at, std::uint64_t value, bool insert) {
+    std::string b = bytes;
+    if (insert) b.insert(at, 4, '\0');
+    else std::memcpy(&b[at], &value, 8);
+    return dir.write(name, b);
+  };
+  expectInputError([&] { readGmsh(damaged("count.msh", nodes + 8, 1000000000000000ull, false)); },
+                   {"count.msh", "the number of nodes", "damaged"});
+  expectInputError([&] { readGmsh(damaged("block.msh", nodes + 32 + 12, 1ull << 40, false)); },
+                   {"block.msh", "a node block's number of nodes", "damaged"});
+  expectInputError([&] { readGmsh(damaged("padded.msh", nodes + 32 + 4, 0, true)); }, {"padded.msh", "binary Gmsh"});
 }
 
 TEST(GmshReader, BadFilesNameTheFile) {

@@ -291,7 +291,7 @@ void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>&
 void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,
                       const std::vector<HarmonicModes>& modes) {
   mesh::ExodusResults r;
-  r.nodalNames = {"ux", "uy", "uz", "ux_imag", "uy_imag", "uz_imag"};
+  r.nodalNames = {"ux", "uy", "uz", "u_imag_x", "u_imag_y", "u_imag_z"};  // ParaView groups both as vectors
   r.globalNames = {"nd", "mode", "rpm"};
   for (const auto& hm : modes)
     for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i) {

@@ -4,6 +4,26 @@
 
 namespace cyclone::fe {
 
+std::vector<std::array<double, 6>> averageToNodes(const mesh::Mesh& mesh,
+                                                  const std::vector<std::array<double, 6>>& elementValues) {
+  std::vector<std::array<double, 6>> out(std::size_t(mesh.numNodes()), {0, 0, 0, 0, 0, 0});
+  std::vector<int> count(std::size_t(mesh.numNodes()), 0);
+  mesh::Index e = 0;
+  for (const auto& block : mesh.blocks) {
+    const int n = mesh::nodesPerElement(block.type);
+    for (mesh::Index le = 0; le < block.numElements(); ++le, ++e)
+      for (int a = 0; a < n; ++a) {
+        const auto node = std::size_t(block.element(le)[a]);
+        for (int k = 0; k < 6; ++k) out[node][k] += elementValues[std::size_t(e)][k];
+        ++count[node];
+      }
+  }
+  for (std::size_t node = 0; node < out.size(); ++node)
+    if (count[node] > 0)
+      for (auto& v : out[node]) v /= count[node];
+  return out;
+}
+
 StressField recoverStresses(const Assembler& assembler, const IsotropicElastic& material,
                             const std::vector<std::array<double, 3>>& u) {
   const auto& mesh = assembler.mesh();
@@ -27,29 +47,15 @@ StressField recoverStresses(const Assembler& assembler, const IsotropicElastic& 
   StressField out;
   out.elementStress.resize(ne);
   out.elementVonMises.resize(ne);
-  out.nodalStress.assign(nn, {0, 0, 0, 0, 0, 0});
-  out.nodalVonMises.assign(nn, 0.0);
-  std::vector<int> count(nn, 0);
-  mesh::Index e = 0;
-  for (const auto& block : mesh.blocks) {
-    const int n = mesh::nodesPerElement(block.type);
-    for (mesh::Index le = 0; le < block.numElements(); ++le, ++e) {
-      Eigen::Matrix<double, 6, 1> s;
-      for (int k = 0; k < 6; ++k) out.elementStress[e][k] = s(k) = global[6 * e + k];
-      out.elementVonMises[e] = vonMises(s);
-      for (int a = 0; a < n; ++a) {
-        const auto node = block.element(le)[a];
-        for (int k = 0; k < 6; ++k) out.nodalStress[node][k] += s(k);
-        ++count[node];
-      }
-    }
-  }
-  for (mesh::Index node = 0; node < nn; ++node) {
-    if (count[node] == 0) continue;
+  for (mesh::Index e = 0; e < ne; ++e) {
     Eigen::Matrix<double, 6, 1> s;
-    for (int k = 0; k < 6; ++k) s(k) = out.nodalStress[node][k] /= count[node];
-    out.nodalVonMises[node] = vonMises(s);
+    for (int k = 0; k < 6; ++k) out.elementStress[e][k] = s(k) = global[6 * e + k];
+    out.elementVonMises[e] = vonMises(s);
   }
+  out.nodalStress = averageToNodes(mesh, out.elementStress);
+  out.nodalVonMises.assign(nn, 0.0);
+  for (mesh::Index node = 0; node < nn; ++node)
+    out.nodalVonMises[node] = vonMises(Eigen::Map<const Eigen::Matrix<double, 6, 1>>(out.nodalStress[node].data()));
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "cyclone/mesh/ExodusIO.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cstring>
@@ -62,6 +63,68 @@ private:
   std::string path_;
 };
 
+// A classic or 64-bit-offset netCDF file is its header (dimensions, attributes and
+// variable descriptions, serialized with every name and value padded to 4 bytes) and
+// then every variable's data, records last, so it is at least as long as both
+// together. netCDF reads a file cut short as zeros past its end (issue 20), so the
+// length is checked first; the sum is a lower bound (netCDF may leave room after the
+// header and align variables). A netCDF-4 file is HDF5, whose reader sees the cut.
+void checkNotTruncated(int ncid, const std::string& path) {
+  int format = 0;
+  if (nc_inq_format(ncid, &format) != NC_NOERR || (format != NC_FORMAT_CLASSIC && format != NC_FORMAT_64BIT_OFFSET))
+    return;
+  int ndims = 0, nvars = 0, natts = 0, unlimited = -1;
+  if (nc_inq(ncid, &ndims, &nvars, &natts, &unlimited) != NC_NOERR) return;
+  auto padded = [](std::uintmax_t bytes) { return (bytes + 3) / 4 * 4; };
+  char name[NC_MAX_NAME + 1];
+  auto nameBytes = [&](const char* n) { return 4 + padded(std::strlen(n)); };
+  auto typeBytes = [&](nc_type type) {
+    std::size_t bytes = 0;
+    nc_inq_type(ncid, type, nullptr, &bytes);
+    return std::uintmax_t(bytes);
+  };
+  auto attributeBytes = [&](int varid, int count) {
+    std::uintmax_t bytes = 8;  // the list's tag and length
+    for (int a = 0; a < count; ++a) {
+      nc_type type;
+      std::size_t len = 0;
+      if (nc_inq_attname(ncid, varid, a, name) != NC_NOERR || nc_inq_att(ncid, varid, name, &type, &len) != NC_NOERR)
+        return bytes;
+      bytes += nameBytes(name) + 8 + padded(len * typeBytes(type));
+    }
+    return bytes;
+  };
+  std::uintmax_t needed = 8 + 8;  // magic, number of records; the dimension list's tag and length
+  for (int d = 0; d < ndims; ++d)
+    if (nc_inq_dimname(ncid, d, name) == NC_NOERR) needed += nameBytes(name) + 4;
+  needed += attributeBytes(NC_GLOBAL, natts) + 8;  // then the variable list's tag and length
+  std::size_t records = 0;
+  if (unlimited >= 0) nc_inq_dimlen(ncid, unlimited, &records);
+  for (int v = 0; v < nvars; ++v) {
+    nc_type type;
+    int vdims = 0, vatts = 0, dimids[NC_MAX_VAR_DIMS];
+    if (nc_inq_var(ncid, v, name, &type, &vdims, dimids, &vatts) != NC_NOERR) return;
+    needed += nameBytes(name) + 4 + 4 * std::uintmax_t(vdims) + attributeBytes(v, vatts) + 8 +
+              (format == NC_FORMAT_64BIT_OFFSET ? 8 : 4);
+    std::uintmax_t size = typeBytes(type);
+    bool record = false;
+    for (int d = 0; d < vdims; ++d) {
+      if (dimids[d] == unlimited) {
+        record = true;
+        continue;
+      }
+      std::size_t len = 0;
+      nc_inq_dimlen(ncid, dimids[d], &len);
+      size *= len;
+    }
+    needed += record ? size * records : size;
+  }
+  const auto actual = std::filesystem::file_size(path);
+  if (actual < needed)
+    throw InputError(path, "the file is " + std::to_string(actual) + " bytes, but its header and data need at least " +
+                               std::to_string(needed) + ": it is truncated (a copy or a write cut short)");
+}
+
 ExodusFile openForReading(const std::string& path) {
   quietExodus();
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "file does not exist");
@@ -70,6 +133,7 @@ ExodusFile openForReading(const std::string& path) {
   const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version);
   if (id < 0) throw InputError(path, "not a readable Exodus II file (" + exodusMessage() + ")");
   ExodusFile file(id, path);
+  checkNotTruncated(id, path);
   // Names as long as the file holds them.
   const int64_t longest = ex_inquire_int(id, EX_INQ_DB_MAX_USED_NAME_LENGTH);
   if (longest > 0) check(ex_set_max_name_length(id, static_cast<int>(longest)), "ex_set_max_name_length", path);
@@ -209,6 +273,12 @@ Mesh readExodus(const std::string& path) {
     for (int64_t n = 0; n < numNodes; ++n) mesh.coords[n] = {x[n], y[n], z[n]};
     mesh.nodeIds.resize(numNodes);
     if (numNodes > 0) check(ex_get_id_map(exoid, EX_NODE_MAP, mesh.nodeIds.data()), "ex_get_id_map", path);
+    // A truncated file reads as zeros past its end (issue 20: "node id 0 is used twice").
+    for (int64_t n = 0; n < numNodes; ++n)
+      if (mesh.nodeIds[n] <= 0)
+        throw InputError(path, "node " + std::to_string(n + 1) + " of " + std::to_string(numNodes) + " has id " +
+                                   std::to_string(mesh.nodeIds[n]) +
+                                   ": ids are positive, so the file is truncated or damaged");
   }
 
   std::vector<int64_t> elementIdMap(init.num_elem);
@@ -233,7 +303,9 @@ Mesh readExodus(const std::string& path) {
     block.connectivity.resize(info.numElements * info.nodesPerElement);
     check(ex_get_conn(exoid, EX_ELEM_BLOCK, info.id, block.connectivity.data(), nullptr, nullptr), "ex_get_conn",
           path);
-    for (auto& node : block.connectivity) --node;  // 1-based in the file
+    for (auto& node : block.connectivity)
+      if (--node < 0)  // 1-based in the file: 0 is what a truncated file reads as
+        throw InputError(where, "its connectivity holds node 0: the file is truncated or damaged");
     block.elementIds.assign(elementIdMap.begin() + firstElement,
                             elementIdMap.begin() + firstElement + info.numElements);
     firstElement += info.numElements;

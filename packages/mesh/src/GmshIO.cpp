@@ -11,6 +11,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/GmshNodeOrder.hpp"
 #include "cyclone/mesh/MeshGeometryCheck.hpp"
+#include "GmshBinaryCheck.hpp"
 
 namespace cyclone::mesh {
 namespace {
@@ -210,6 +211,13 @@ Mesh readGmsh(const std::string& path) {
   Mesh mesh;
   {
     GmshSession session;
+    detail::checkBinaryMshCounts(path, [](int type) {
+      std::string name;
+      int dim, order, numNodes, numPrimary;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(type, name, dim, order, numNodes, local, numPrimary);
+      return numNodes;
+    });
     // gmsh 4.8 (General.AbortOnError = 2 under the API) throws std::string or std::exception.
     try {
       gmsh::open(path);

@@ -67,6 +67,17 @@ void Mesh::assignDefaultIds() {
   }
 }
 
+std::vector<Index> orphanNodes(const Mesh& mesh) {
+  std::vector<char> used(std::size_t(mesh.numNodes()), 0);
+  for (const auto& block : mesh.blocks)
+    for (Index n : block.connectivity)
+      if (n >= 0 && n < mesh.numNodes()) used[std::size_t(n)] = 1;
+  std::vector<Index> out;
+  for (Index n = 0; n < mesh.numNodes(); ++n)
+    if (!used[std::size_t(n)]) out.push_back(n);
+  return out;
+}
+
 void checkConsistency(const Mesh& mesh) {
   const std::string& where = mesh.source;
   const Index numNodes = mesh.numNodes();

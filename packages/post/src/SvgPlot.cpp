@@ -81,7 +81,13 @@ std::string SvgPlot::render() const {
       }
     if (ax > bx) ax = 0, bx = 1, ay = 0, by = 1;
     if (!xFixed_) x0 = ax, x1 = bx > ax ? bx : ax + 1;
-    if (!yFixed_) y0 = std::min(0.0, ay), y1 = by > y0 ? by * 1.05 : y0 + 1;
+    if (!yFixed_) {
+      // From zero (amplitudes, frequencies) or below the lowest value, 5 % of the span
+      // above the highest (and below the lowest when it is negative): nothing drawn on the frame.
+      const double lo = std::min(0.0, ay), span = std::max(by, 0.0) - lo;
+      y0 = ay < 0 ? lo - 0.05 * span : 0.0;
+      y1 = span > 0 ? std::max(by, 0.0) + 0.05 * span : y0 + 1;
+    }
   }
   const double pw = kWidth - kLeft - kRight, ph = kHeight - kTop - kBottom;
   auto X = [&](double x) { return kLeft + (x - x0) / (x1 - x0) * pw; };

@@ -7,10 +7,12 @@
 // the content hash of everything they depend on, and reused when it matches.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/ComplianceModel.hpp"
@@ -33,6 +35,11 @@ struct DiscModelSpec {
   int checkNodalDiameter = -1;          ///< compare this diameter's model with the full FE model (-1: none)
   int checkFrequencies = 12;            ///< how many frequencies the check spans (first to fifth family)
 };
+
+/// The centrifugal prestress the spec's models are built on (k = 0 transform of `sector`);
+/// none when spec.prestress is "none" or the speed is 0.
+std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                                   const DiscModelSpec& spec, linalg::CommPtr comm);
 
 /// The reduced model against the full FE compliance at one nodal diameter.
 struct ReducedModelCheck {

@@ -12,6 +12,11 @@
 
 namespace cyclone::scenes {
 
+/// The scene's YAML as a parameter list; InputError naming `source` when it is not valid
+/// YAML. An empty list (`write: []`), which Teuchos cannot type, reads as an empty list
+/// through SceneSection's list getters.
+Teuchos::RCP<Teuchos::ParameterList> parseSceneYaml(const std::string& yaml, const std::string& source);
+
 class SceneSection {
 public:
   SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path);

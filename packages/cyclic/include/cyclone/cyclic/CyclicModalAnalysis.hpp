@@ -84,7 +84,7 @@ struct SpeedModes {
 /// frequencies.csv: rpm,nd,mode,freq_hz (mode from 1 within each nd). Atomic.
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds);
 /// Modes in Exodus: one step per mode (time = frequency in Hz), nodal ux,uy,uz (real
-/// part) and ux_imag,uy_imag,uz_imag, globals nd, mode, rpm. Atomic.
+/// part) and u_imag_x,u_imag_y,u_imag_z (ParaView: vectors u and u_imag), globals nd, mode, rpm. Atomic.
 void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,
                       const std::vector<HarmonicModes>& modes);
 

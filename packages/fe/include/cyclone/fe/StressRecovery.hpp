@@ -16,6 +16,11 @@ struct StressField {
   std::vector<double> nodalVonMises;
 };
 
+/// Nodal values as the mean of the adjacent elements' values (global element order);
+/// nodes in no element get zero.
+std::vector<std::array<double, 6>> averageToNodes(const mesh::Mesh& mesh,
+                                                  const std::vector<std::array<double, 6>>& elementValues);
+
 /// Same result on every rank (each element is evaluated by the rank that assembles it).
 StressField recoverStresses(const Assembler& assembler, const IsotropicElastic& material,
                             const std::vector<std::array<double, 3>>& nodalDisplacement);

@@ -57,6 +57,10 @@ public:
   void assignDefaultIds();
 };
 
+/// Nodes that belong to no element (indices, ascending): nothing holds them, so a solve
+/// with their DOFs free is singular.
+std::vector<Index> orphanNodes(const Mesh& mesh);
+
 /// Structural checks every reader runs before handing a mesh out: ids unique,
 /// connectivity in range, sets in range and not empty. Throws InputError.
 void checkConsistency(const Mesh& mesh);

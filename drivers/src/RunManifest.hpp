@@ -1,0 +1,33 @@
+#pragma once
+// A run's mark in its output directory: `run_manifest.txt` says "running" from the
+// start (with the scene, the process and the time), and "complete" with the files
+// written, or "failed" with the reason, at the end; a run killed on the way leaves
+// "running", so its directory is never mistaken for a finished run's. A lock file
+// held for the run's life (flock: released by the kernel when the process dies)
+// refuses a second run into the same directory while the first is alive.
+#include <string>
+#include <vector>
+
+namespace cyclone::scenes {
+
+class RunManifest {
+public:
+  /// Takes the directory's lock (InputError naming the directory and the other run when
+  /// it is held) and marks the run as running. `previousUnfinished` is filled when a
+  /// former run into the directory stopped without finishing (its manifest said running).
+  RunManifest(const std::string& outDir, const std::string& scene, std::string& previousUnfinished);
+  ~RunManifest();
+  RunManifest(const RunManifest&) = delete;
+  RunManifest& operator=(const RunManifest&) = delete;
+
+  void complete(const std::vector<std::string>& written);
+  void fail(const std::string& reason);
+
+private:
+  void write(const std::string& status, const std::string& extra);
+  std::string dir_, scene_, started_;
+  int lock_ = -1;
+  bool finished_ = false;
+};
+
+}  // namespace cyclone::scenes
