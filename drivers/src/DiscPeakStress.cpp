@@ -17,6 +17,7 @@
 #include "cyclone/fatigue/SectorVibration.hpp"
 #include "cyclone/hbm/HarmonicLoads.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/hbm/ProjectedReceptance.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/post/SvgPlot.hpp"
@@ -33,6 +34,9 @@ PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection mater
   auto s = discResponse.section("peak_stress");
   spec.margin = s.getString("margin", "true") != "false";
   spec.animationSteps = s.getInt("animation_steps", spec.animationSteps);
+  spec.atHz = s.getDouble("at_hz", 0.0);
+  if (s.has("at_hz") && !(spec.atHz > 0 && std::isfinite(spec.atHz)))
+    throw InputError(s.where("at_hz"), "must be a positive frequency in Hz (leave it out for the peak)");
   if (spec.animationSteps < 4 || spec.animationSteps > 1000)
     throw InputError(s.where("animation_steps"), std::to_string(spec.animationSteps) +
                                                      ": one period needs 4..1000 time steps (about 32 play smoothly)");
@@ -106,6 +110,36 @@ PeakPoint referencePeakPoint(ForcedResponseSetup& setup, const ForcedResponseRes
     p.caveat = "an estimate: the harmonic convergence of this point is not known (no harmonics check found its peak)";
   }
   p.what = what.str();
+  return p;
+}
+
+PeakPoint referencePointAt(ForcedResponseSetup& setup, const ForcedResponseResult& reference, double hz) {
+  const auto& pts = reference.branch.points;
+  if (pts.empty()) throw Error("no point of the reference curve");
+  double lo = 1e300, hi = -1e300;
+  const continuation::BranchPoint* nearest = nullptr;
+  for (const auto& pt : pts) {
+    const double f = setup.apply(pt.parameter).first / (2 * M_PI);
+    lo = std::min(lo, f), hi = std::max(hi, f);
+    if (!nearest || std::abs(f - hz) < std::abs(setup.apply(nearest->parameter).first / (2 * M_PI) - hz)) nearest = &pt;
+  }
+  if (hz < lo || hz > hi)
+    throw InputError("disc_response/peak_stress/at_hz", std::to_string(hz) + " Hz lies outside the traced curve (" +
+                                                            std::to_string(lo) + ".." + std::to_string(hi) + " Hz)");
+  PeakPoint p;
+  p.system = setup.system.get();
+  p.omega = 2 * M_PI * hz;
+  p.x = nearest->x;
+  const auto problem = continuationProblem(*p.system, ForcedResponseSetup::Parameter::ForceScale, p.omega);
+  const auto newton = continuation::solveNewton(problem, p.x, setup.excitationScale, setup.continuation.tolerance);
+  if (!newton.converged)
+    throw SolverError("disc_response/peak_stress/at_hz: no solution at " + std::to_string(hz) +
+                      " Hz from the traced point nearest it (residual " + std::to_string(newton.residualNorm) + ")");
+  std::ostringstream what;
+  what.precision(6);
+  what << hz << " Hz (harmonics 0.." << p.system->aft().harmonics().maxHarmonic() << ")";
+  p.what = what.str();
+  p.caveat = "at a chosen frequency of the reference curve, whose harmonics check concerns its peak";
   return p;
 }
 

@@ -506,7 +506,11 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
       writePeakTimeResponse(setup, point, peak, loops, outDir, summary);
     }
-    writePeakStress(peakStress, mesh, models, modelSpec, point, setup.excitationScale, outDir, comm, summary);
+    if (peakStress.atHz > 0)
+      writePeakStress(peakStress, mesh, models, modelSpec, referencePointAt(setup, reference, peakStress.atHz),
+                      setup.excitationScale, outDir, comm, summary);
+    else
+      writePeakStress(peakStress, mesh, models, modelSpec, point, setup.excitationScale, outDir, comm, summary);
   }
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.

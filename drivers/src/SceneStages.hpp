@@ -85,6 +85,10 @@ struct PeakPoint {
   std::string caveat;
 };
 PeakPoint referencePeakPoint(ForcedResponseSetup& setup, const ForcedResponseResult& reference);
+/// The reference curve's solution at `hz` (its harmonics): Newton at that frequency from the
+/// traced point nearest it (on a fold, the branch that point is on); SolverError when
+/// Newton does not converge, InputError when hz lies outside the traced points.
+PeakPoint referencePointAt(ForcedResponseSetup& setup, const ForcedResponseResult& reference, double hz);
 
 /// What `disc_response/peak_stress` asks for: the sector's whole vibration at the
 /// friction-damped peak, its stresses and (margin) the Goodman-Haigh safety factor.
@@ -92,6 +96,7 @@ struct PeakStressSpec {
   bool run = false;
   bool margin = true;
   int animationSteps = 32;  ///< time steps of one period in disc_peak_vibration.exo
+  double atHz = 0;          ///< 0: at the peak; else at this frequency of the reference curve
   fatigue::FatigueMaterial material;
   std::string stressUnit = "stress units";  ///< "MPa" or "Pa" when the material's E tells
 };

@@ -721,6 +721,8 @@ TEST(Scenes, AFatigueMarginNeedsFatigueData) {
   EXPECT_NE(bad.find("endurance_limit"), std::string::npos) << bad;
   const auto steps = failure(scene(2), dir);
   EXPECT_NE(steps.find("animation_steps"), std::string::npos) << steps;
+  const auto at = failure(disc + "      at_hz: -5\n", dir);
+  EXPECT_NE(at.find("at_hz"), std::string::npos) << at;
 }
 
 // A message the library gives with the entry only ("excitation: DOF 5 out of range") names

@@ -2,6 +2,8 @@
 // and meshes built with the gmsh API here (a box), written to .msh and read back:
 // counts against gmsh's, volume against the box's, mid-edge nodes at mid-edges.
 #include <gtest/gtest.h>
+#include <vector>
+#include <sstream>
 #include <iterator>
 #include <fstream>
 #include <cstring>
@@ -217,6 +219,60 @@ TEST(GmshReader, BinaryCountsAreCheckedAgainstTheFileSize) {
   expectInputError([&] { readGmsh(damaged("block.msh", nodes + 32 + 12, 1ull << 40, false)); },
                    {"block.msh", "a node block's number of nodes", "damaged"});
   expectInputError([&] { readGmsh(damaged("padded.msh", nodes + 32 + 4, 0, true)); }, {"padded.msh", "binary Gmsh"});
+  // The first element's first node tag outside the nodes' tags: gmsh 4.8 does not check
+  // it and crashed (SIGSEGV in GModel::getMeshVertexByTag) or, for a tag that wraps
+  // around its int, silently took another node (both found by fuzz_readers).
+  const auto elements = bytes.find("$Elements\n") + 10;
+  for (std::uint64_t tag : {4294967291ull, 1ull << 40}) {
+    try {
+      readGmsh(damaged("node_tag.msh", elements + 32 + 20 + 8, tag, false));
+      ADD_FAILURE() << "node_tag.msh read with node tag " << tag;
+    } catch (const cyclone::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("node_tag.msh"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("outside the nodes' tags"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// An element naming a node tag the file never defines made gmsh 4.8 crash (SIGSEGV in
+// GModel::getMeshVertexByTag, found by fuzz_readers): now an InputError naming the file.
+TEST(GmshReader, AnElementWithAnUndefinedNodeIsAnErrorNotACrash) {
+  TempDirectory dir;
+  const std::string path = dir.file("box.msh");
+  {
+    GmshSession session;
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    meshTet10Box(path);
+  }
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The first tet10 line: "tag n1 ... n10" -> n1 = 99999999.
+  std::istringstream lines(text.substr(text.find("$Elements\n")));
+  std::string line, out = text.substr(0, text.find("$Elements\n"));
+  bool done = false;
+  while (std::getline(lines, line)) {
+    std::istringstream cells(line);
+    std::vector<std::string> c{std::istream_iterator<std::string>(cells), std::istream_iterator<std::string>()};
+    if (!done && c.size() == 11) {
+      c[1] = "99999999";
+      line.clear();
+      for (const auto& x : c) line += x + " ";
+      done = true;
+    }
+    out += line + "\n";
+  }
+  ASSERT_TRUE(done);
+  const std::string bad = dir.write("undefined_node.msh", out);
+  try {
+    readGmsh(bad);
+    ADD_FAILURE() << "read";
+  } catch (const cyclone::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("undefined_node.msh"), std::string::npos) << e.what();
+    std::printf("%s\n", e.what());
+  }
 }
 
 TEST(GmshReader, BadFilesNameTheFile) {

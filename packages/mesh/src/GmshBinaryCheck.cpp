@@ -4,7 +4,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <vector>
 
 #include "cyclone/core/Error.hpp"
 
@@ -53,6 +55,12 @@ public:
     }
     return n;
   }
+  template <class T>
+  void values(T* to, std::size_t n, const char* what) {
+    if (n * sizeof(T) > left()) fail(std::string("the file ends inside ") + what);
+    in_.read(reinterpret_cast<char*>(to), std::streamsize(n * sizeof(T)));
+    pos_ += n * sizeof(T);
+  }
   void skip(std::uintmax_t bytes, const char* what) {
     if (bytes > left()) fail(std::string("the file ends inside ") + what);
     in_.seekg(std::streamoff(bytes), std::ios::cur);
@@ -92,10 +100,20 @@ void checkEntities(Reader& r) {
     }
 }
 
-void checkNodes(Reader& r) {
+struct TagRange {
+  std::uint64_t min = 0, max = 0;
+  bool known = false;
+};
+
+void checkNodes(Reader& r, TagRange& tags) {
   const auto blocks = r.count("the number of node blocks", 3 * 4 + 8);
   r.count("the number of nodes", 8 + 3 * 8);
-  r.skip(16, "the node tag range");
+  tags.min = r.value<std::uint64_t>("the node tag range");
+  tags.max = r.value<std::uint64_t>("the node tag range");
+  tags.known = true;
+  // gmsh 4.8 keeps node tags as int: a larger one wraps around and reads as another node.
+  if (tags.max > std::uint64_t(std::numeric_limits<std::int32_t>::max()))
+    r.fail("node tags up to " + std::to_string(tags.max) + ": gmsh reads tags up to 2147483647");
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const auto dim = r.value<std::int32_t>("a node block");
     r.skip(4, "a node block");
@@ -107,10 +125,11 @@ void checkNodes(Reader& r) {
   }
 }
 
-void checkElements(Reader& r, int (*nodesPerElement)(int)) {
+void checkElements(Reader& r, int (*nodesPerElement)(int), const TagRange& tags) {
   const auto blocks = r.count("the number of element blocks", 3 * 4 + 8);
   r.count("the number of elements", 2 * 8);
   r.skip(16, "the element tag range");
+  if (!tags.known) r.fail("$Elements before $Nodes");
   for (std::uint64_t b = 0; b < blocks; ++b) {
     r.skip(8, "an element block");
     const auto type = r.value<std::int32_t>("an element block");
@@ -122,7 +141,17 @@ void checkElements(Reader& r, int (*nodesPerElement)(int)) {
              std::to_string(r.offset() - 4));
     }
     const auto n = r.count("an element block's number of elements", 8 * (1 + std::uintmax_t(nodes)));
-    r.skip(n * 8 * (1 + std::uintmax_t(nodes)), "an element block");
+    // Every node tag within the nodes' range: gmsh 4.8 does not check it, and crashed
+    // (SIGSEGV) or took another node (found by fuzz_readers).
+    std::vector<std::uint64_t> element(std::size_t(nodes) + 1);
+    for (std::uint64_t e = 0; e < n; ++e) {
+      r.values(element.data(), element.size(), "an element block");
+      for (int k = 1; k <= nodes; ++k)
+        if (element[std::size_t(k)] < tags.min || element[std::size_t(k)] > tags.max)
+          r.fail("element " + std::to_string(element[0]) + " names node " + std::to_string(element[std::size_t(k)]) +
+                 ", outside the nodes' tags " + std::to_string(tags.min) + ".." + std::to_string(tags.max) +
+                 " (byte " + std::to_string(r.offset()) + "): the file is damaged");
+    }
   }
 }
 
@@ -140,14 +169,15 @@ void checkBinaryMshCounts(const std::string& path, int (*nodesPerElement)(int)) 
   if (dataSize != 8) r.fail("data size " + std::to_string(dataSize) + " (8 expected)");
   if (r.value<std::int32_t>("the byte-order mark") != 1) r.fail("byte order other than this machine's");
   r.skipSection("MeshFormat");
+  TagRange tags;
   while (r.left() > 0) {
     std::string header = r.line();
     if (header.empty()) continue;
     if (header[0] != '$') r.fail("'" + header.substr(0, 40) + "' where a section starts, at byte " + std::to_string(r.offset()));
     const std::string name = header.substr(1);
     if (name == "Entities") checkEntities(r);
-    else if (name == "Nodes") checkNodes(r);
-    else if (name == "Elements") checkElements(r, nodesPerElement);
+    else if (name == "Nodes") checkNodes(r, tags);
+    else if (name == "Elements") checkElements(r, nodesPerElement, tags);
     r.skipSection(name);
   }
 }

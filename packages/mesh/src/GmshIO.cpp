@@ -12,6 +12,7 @@
 #include "cyclone/mesh/GmshNodeOrder.hpp"
 #include "cyclone/mesh/MeshGeometryCheck.hpp"
 #include "GmshBinaryCheck.hpp"
+#include "IsolatedRead.hpp"
 
 namespace cyclone::mesh {
 namespace {
@@ -208,8 +209,8 @@ struct GmshSession {
 
 Mesh readGmsh(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "file does not exist");
-  Mesh mesh;
-  {
+  // gmsh runs in a child process: some damaged files make gmsh 4.8 crash (IsolatedRead.hpp).
+  Mesh mesh = detail::readInChildProcess(path, [&] {
     GmshSession session;
     detail::checkBinaryMshCounts(path, [](int type) {
       std::string name;
@@ -224,7 +225,7 @@ Mesh readGmsh(const std::string& path) {
       std::string error;
       gmsh::logger::getLastError(error);
       if (!error.empty()) throw InputError(path, "gmsh could not read the file: " + error);
-      mesh = meshFromGmshModel(path);
+      return meshFromGmshModel(path);
     } catch (const cyclone::Error&) {
       throw;
     } catch (const std::string& e) {
@@ -232,7 +233,7 @@ Mesh readGmsh(const std::string& path) {
     } catch (const std::exception& e) {
       throw InputError(path, std::string("gmsh could not read the file: ") + e.what());
     }
-  }
+  });
   checkConsistency(mesh);
   checkElementGeometry(mesh);
   return mesh;
