@@ -11,6 +11,7 @@
 #include "cyclone/core/Timer.hpp"
 
 #include <LOCA.H>
+#include <Teuchos_oblackholestream.hpp>
 #include <LOCA_LAPACK.H>
 
 #include <algorithm>
@@ -175,6 +176,11 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
   step.set("Min Step Size", o.minStep);
   step.set("Max Step Size", o.maxStep);
   params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  // LOCA's own lines ("Step size reached minimum step size bound", printed as errors,
+  // which NOX prints whatever the output level) go nowhere: the branch's stop reason
+  // says it, once, in the scene's words (issue 20). LOCA's utilities read this sublist.
+  params->sublist("NOX").sublist("Printing").set(
+      "Error Stream", Teuchos::RCP<std::ostream>(Teuchos::rcp(new Teuchos::oblackholestream)));
   if (o.lineSearch != ContinuationOptions::LineSearch::FullStep)  // else LOCA's default, untouched
     params->sublist("NOX").sublist("Line Search").set(
         "Method", std::string(o.lineSearch == ContinuationOptions::LineSearch::Backtrack ? "Backtrack" : "Polynomial"));

@@ -15,6 +15,8 @@ public:
   void compute(const Eigen::MatrixXd& A);
   /// A^-1 b; not finite where A is singular (an exactly zero pivot).
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// A^-T b (the same factors).
+  Eigen::VectorXd solveTransposed(const Eigen::VectorXd& b) const;
 
 private:
   Eigen::MatrixXd factors_;
