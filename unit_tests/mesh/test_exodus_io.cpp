@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iterator>
+#include <fstream>
 #include <functional>
 
 #include "MeshTestSupport.hpp"
@@ -224,6 +226,28 @@ TEST(ExodusIO, TruncatedFilesAreRefusedAsSuch) {
   }
   std::printf("truncated Exodus files: mesh refused %d of 6, results refused %d of 6\n", meshRefused, resultsRefused);
   EXPECT_GE(meshRefused, 1);
+}
+
+// A damaged count in the netCDF header (a 42 kB file whose variable claimed 2.4e9
+// dimensions made netCDF allocate 18.9 GB before failing; found by fuzz_readers under
+// ASan) is refused before netCDF reads the header: here the global attribute
+// api_version claims 2^31 - 1 values.
+TEST(ExodusIO, DamagedHeaderCountsAreRefusedBeforeNetcdfAllocates) {
+  TempDirectory dir;
+  const std::string whole = dir.file("whole.exo");
+  writeExodus(whole, cubeWithTet());
+  std::string bytes;
+  {
+    std::ifstream in(whole, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto at = bytes.find("api_version");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t count = at + 12 + 4;  // the name padded to 12 bytes, the type, then the count
+  bytes[count] = '\x7f', bytes[count + 1] = bytes[count + 2] = bytes[count + 3] = '\xff';
+  const std::string damaged = dir.write("damaged.exo", bytes);
+  expectInputError([&] { readExodus(damaged); },
+                   {"damaged.exo", "damaged netCDF header", "an attribute's number of values 2147483647"});
 }
 
 TEST(ExodusIO, ReaderChecksGeometry) {

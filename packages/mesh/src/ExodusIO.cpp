@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstring>
+
+#include "NetcdfHeaderCheck.hpp"
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -128,6 +130,7 @@ void checkNotTruncated(int ncid, const std::string& path) {
 ExodusFile openForReading(const std::string& path) {
   quietExodus();
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "file does not exist");
+  detail::checkNetcdfHeader(path);  // before netCDF allocates what a damaged header says
   int cpuWordSize = sizeof(double), ioWordSize = 0;
   float version = 0;
   const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version);
