@@ -32,7 +32,9 @@ PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection mater
   if (!discResponse.has("peak_stress")) return spec;
   spec.run = true;
   auto s = discResponse.section("peak_stress");
-  spec.margin = s.getString("margin", "true") != "false";
+  const std::string margin = s.getString("margin", "true");
+  if (margin != "true" && margin != "false") throw InputError(s.where("margin"), "must be true or false, got '" + margin + "'");
+  spec.margin = margin == "true";
   spec.animationSteps = s.getInt("animation_steps", spec.animationSteps);
   spec.atHz = s.getDouble("at_hz", 0.0);
   if (s.has("at_hz") && !(spec.atHz > 0 && std::isfinite(spec.atHz)))
@@ -118,10 +120,11 @@ PeakPoint referencePointAt(ForcedResponseSetup& setup, const ForcedResponseResul
   if (pts.empty()) throw Error("no point of the reference curve");
   double lo = 1e300, hi = -1e300;
   const continuation::BranchPoint* nearest = nullptr;
+  double nearestGap = 1e300;
   for (const auto& pt : pts) {
     const double f = setup.apply(pt.parameter).first / (2 * M_PI);
     lo = std::min(lo, f), hi = std::max(hi, f);
-    if (!nearest || std::abs(f - hz) < std::abs(setup.apply(nearest->parameter).first / (2 * M_PI) - hz)) nearest = &pt;
+    if (std::abs(f - hz) < nearestGap) nearestGap = std::abs(f - hz), nearest = &pt;
   }
   if (hz < lo || hz > hi)
     throw InputError("disc_response/peak_stress/at_hz", std::to_string(hz) + " Hz lies outside the traced curve (" +

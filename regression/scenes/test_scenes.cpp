@@ -724,6 +724,8 @@ TEST(Scenes, AFatigueMarginNeedsFatigueData) {
   EXPECT_NE(steps.find("animation_steps"), std::string::npos) << steps;
   const auto at = failure(disc + "      at_hz: -5\n", dir);
   EXPECT_NE(at.find("at_hz"), std::string::npos) << at;
+  const auto yes = failure(disc + "      margin: yes\n", dir);
+  EXPECT_NE(yes.find("margin"), std::string::npos) << yes;
 }
 
 // A message the library gives with the entry only ("excitation: DOF 5 out of range") names

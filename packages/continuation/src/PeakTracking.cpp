@@ -11,7 +11,7 @@ namespace {
 
 // The pieces at (x, w; p): the residual, J, dR/dw, the tangent z, lambda and g.
 struct PeakState {
-  Eigen::VectorXd R, Rw, z, lambda, gradient;
+  Eigen::VectorXd R, Rp, Rm, Rw, z, lambda, gradient;  // Rp, Rm: R at w +- frequencyStep(w)
   Eigen::MatrixXd J;
   double m = 0, g = 0;
 };
@@ -23,10 +23,9 @@ PeakState evaluate(const PeakTrackingProblem& P, const Eigen::VectorXd& x, doubl
   P.residual(x, w, p, s.R);
   P.jacobian(x, w, p, s.J);
   const double d = frequencyStep(w);
-  Eigen::VectorXd Rp, Rm;
-  P.residual(x, w + d, p, Rp);
-  P.residual(x, w - d, p, Rm);
-  s.Rw = (Rp - Rm) / (2 * d);
+  P.residual(x, w + d, p, s.Rp);
+  P.residual(x, w - d, p, s.Rm);
+  s.Rw = (s.Rp - s.Rm) / (2 * d);
   DenseLu lu(s.J);
   s.z = -lu.solve(s.Rw);
   s.m = P.measure(x);
@@ -119,10 +118,7 @@ ContinuationProblem peakCondition(const PeakTrackingProblem& P) {
     // d(grad m . z)/dx = H z - (lambda . dJ z + lambda . dRw/dx).
     const Eigen::VectorXd dGdx = P.measureHessianTimes(x, s.z) - lambdaDJz - lambdaDRw;
     // d(grad m . z)/dw = -lambda . (dJ/dw z + d2R/dw2).
-    Eigen::VectorXd Rp, Rm;
-    P.residual(x, w + d, p, Rp);
-    P.residual(x, w - d, p, Rm);
-    const Eigen::VectorXd Rww = (Rp - 2 * s.R + Rm) / (d * d);
+    const Eigen::VectorXd Rww = (s.Rp - 2 * s.R + s.Rm) / (d * d);  // the same step as evaluate's
     const double dGdw = -s.lambda.dot((Jw - s.J) * s.z / d + Rww);
     // g = (w / m) G, G = grad m . z.
     const double G = s.gradient.dot(s.z);
