@@ -11,6 +11,7 @@
 
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/ContentHash.hpp"
+#include "cyclone/mesh/MeshDigest.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -39,15 +40,9 @@ namespace {
 std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
   ContentHash h;
   h.add(std::string("cyclone reduced model v1"));
-  for (const auto& p : mesh.coords) h.add(p.data(), sizeof(double) * 3);
-  for (const auto& b : mesh.blocks) {
-    h.add(int(b.type));
-    h.addAll(std::vector<long long>(b.connectivity.begin(), b.connectivity.end()));
-  }
-  for (const auto& sets : {s.fixedNodeSets, s.leftSets, s.rightSets, s.retainedNodeSets}) {
-    h.addAll(sets);
-    for (const auto& name : sets) h.addAll(std::vector<long long>(mesh.nodeSet(name).begin(), mesh.nodeSet(name).end()));
-  }
+  mesh::addToHash(h, mesh);
+  for (const auto& sets : {s.fixedNodeSets, s.leftSets, s.rightSets, s.retainedNodeSets})
+    mesh::addNodeSetsToHash(h, mesh, sets);
   h.add(s.material.E).add(s.material.nu).add(s.material.rho);
   h.add(s.sectors).add(s.axis.point.data(), sizeof(double) * 3).add(s.axis.direction.data(), sizeof(double) * 3);
   h.add(s.rpm).add(s.prestress).add(s.kind).add(s.modes).add(s.omega0).add(s.lossFactor).add(nd);

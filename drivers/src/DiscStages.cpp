@@ -46,8 +46,10 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
     if (spec.sectors < 2) throw InputError(cy.where("sectors"), "is required (>= 2) for a mesh read from a file");
     spec.axis.point = cy.getVector3("axis_point", {0, 0, 0});
     spec.axis.direction = cy.getVector3("axis_direction", {0, 0, 1});
-    cy.getString("configuration", "");  // the modal stage's; the reduced model is always cantilever
-    cy.getStringList("left_node_sets", {}), cy.getStringList("right_node_sets", {});
+    // The reduced models are cantilevered: the disc's faces cyclic, the shroud's free
+    // (configuration and the shroud's faces are the modal analysis's).
+    const auto faces = readCyclicFaces(cy);
+    spec.leftSets = faces.discLeft, spec.rightSets = faces.discRight;
     cy.rejectUnknownKeys();
   }
   double loadsRpm = 0;
@@ -57,8 +59,6 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
   }
   spec.kind = r.getString("kind", spec.kind);
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
-  spec.leftSets = r.getStringList("disc_left_node_sets", spec.leftSets);
-  spec.rightSets = r.getStringList("disc_right_node_sets", spec.rightSets);
   spec.modes = r.getInt("modes", spec.modes);
   spec.omega0 = r.getDouble("omega0", spec.omega0);
   spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
@@ -300,7 +300,8 @@ void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& po
 }  // namespace
 
 void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
-                const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+                const std::string& outDir, const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints,
+                linalg::CommPtr comm, SceneSummary& summary) {
   std::string cache;
   auto r = scene.section("reduced_model");
   auto d = scene.section("disc_response");
@@ -399,6 +400,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   readContinuationSteps(cs, opt, "predictor_corrector");
   opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
   cs.rejectUnknownKeys();
+  opt.checkpoints = checkpoints;
+  if (fallback) fallback->checkpoints = checkpoints;
 
   // The reference system: the range from its resonance estimate unless given.
   auto setup = makeDiscForcedResponse(mesh, models, spec);
@@ -440,6 +443,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto traceOne = [&](ForcedResponseSetup& s, const std::string& name) {
     s.omegaUnit = 2 * M_PI * fromHz;
     s.stability = stability;
+    s.harmonicsKey = "disc_response/harmonics";
     // The reference curve's peak is checked up to harmonics_check_to; a study's curves
     // are not (each level costs peak searches; the stage's error is the reference's).
     s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : -1;

@@ -64,6 +64,28 @@ std::string samplesCheck(ForcedResponseSetup& setup, const continuation::BranchP
   return out.str();
 }
 
+// The solvers hold about four dense matrices of the unknowns' size (the Jacobian, the
+// bordered one and the factors of two of them): refused where they would not fit in
+// this machine's memory, a warning where each Newton iteration takes seconds (one
+// Jacobian and LU took about 1 s at 2349 unknowns on the default disc).
+void checkDenseSize(const hbm::HarmonicBalanceSystem& hb, const std::string& harmonicsKey) {
+  constexpr double kMaxGigabytes = 12, kSlowUnknowns = 5000;
+  const double n = hb.numUnknowns(), gigabytes = 4 * 8 * n * n / 1e9;
+  std::ostringstream what;
+  what.precision(3);
+  what << hb.aft().harmonics().size() << " harmonics (up to " << hb.aft().harmonics().maxHarmonic() << ") on "
+       << hb.numDofs() << " DOFs make " << hb.numUnknowns() << " unknowns";
+  if (gigabytes > kMaxGigabytes) {
+    what << ": the dense Jacobian and its factors would take " << gigabytes << " GB (at most " << kMaxGigabytes
+         << " here); use fewer harmonics";
+    throw InputError(harmonicsKey, what.str());
+  }
+  if (n > kSlowUnknowns)
+    log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
+              std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");
+}
+
+
 // `set` and one harmonic more (h), with at least the system's samples.
 hbm::HarmonicSet withHarmonic(const hbm::HarmonicSet& set, int h) {
   std::vector<int> list = set.harmonics();
@@ -72,7 +94,9 @@ hbm::HarmonicSet withHarmonic(const hbm::HarmonicSet& set, int h) {
 }
 std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
                                                          const hbm::HarmonicSet& raised) {
-  return hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+  auto system = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+  checkDenseSize(*system, "harmonics_check_to");
+  return system;
 }
 
 // The largest response of DOF `dof` along a frequency curve near the solution X at
@@ -396,6 +420,7 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
     }
     log::info(msg.str());
   }
+  checkDenseSize(hb, setup.harmonicsKey);
   const StartingPoint start = findStartingPoint(setup);
   if (start.x.size() > 0) {
     std::ostringstream msg;

@@ -37,6 +37,8 @@
 #include "cyclone/hbm/UnilateralSpring.hpp"
 #include "cyclone/post/CampbellDiagram.hpp"
 #include "cyclone/post/ResponseCurveFile.hpp"
+#include "cyclone/post/ResultCheckpointDirectory.hpp"
+#include "cyclone/post/TraceCheckpointDirectory.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/post/Mac.hpp"
 #include "cyclone/core/Error.hpp"
@@ -62,6 +64,38 @@ int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic) {
                      "must exceed the curve's highest harmonic " + std::to_string(maxHarmonic) + ", got " +
                          std::to_string(upTo) + " (the check raises H from there)");
   return upTo;
+}
+
+std::vector<std::string> CyclicFaces::left() const {
+  auto faces = discLeft;
+  if (shroudCyclic) faces.insert(faces.end(), shroudLeft.begin(), shroudLeft.end());
+  return faces;
+}
+
+std::vector<std::string> CyclicFaces::right() const {
+  auto faces = discRight;
+  if (shroudCyclic) faces.insert(faces.end(), shroudRight.begin(), shroudRight.end());
+  return faces;
+}
+
+CyclicFaces readCyclicFaces(SceneSection& cy) {
+  CyclicFaces f;
+  const std::string configuration = cy.getString("configuration", "fixed_shroud");
+  if (configuration != "fixed_shroud" && configuration != "cantilever")
+    throw InputError(cy.where("configuration"), "unknown configuration '" + configuration +
+                                                    "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc "
+                                                    "faces only)");
+  f.shroudCyclic = configuration == "fixed_shroud";
+  f.discLeft = cy.getStringList("disc_left_node_sets", f.discLeft);
+  f.discRight = cy.getStringList("disc_right_node_sets", f.discRight);
+  f.shroudLeft = cy.getStringList("shroud_left_node_sets", f.shroudLeft);
+  f.shroudRight = cy.getStringList("shroud_right_node_sets", f.shroudRight);
+  if (f.discLeft.empty() || f.discLeft.size() != f.discRight.size())
+    throw InputError(cy.where("disc_right_node_sets"), "the disc's left and right side faces need as many sets each "
+                                                       "(at least one): right = left rotated by +360/N degrees");
+  if (f.shroudLeft.size() != f.shroudRight.size())
+    throw InputError(cy.where("shroud_right_node_sets"), "the shroud's left and right side faces need as many sets each");
+  return f;
 }
 
 fe::IsotropicElastic readMaterial(SceneSection m) {
@@ -177,14 +211,8 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto cy = scene.section("cyclic");
   const int sectors = cy.getInt("sectors", builtInSectors);
   if (sectors == 0) throw InputError(cy.where("sectors"), "is required for a mesh read from a file");
-  const std::string configuration = cy.getString("configuration", "fixed_shroud");
-  std::vector<std::string> left, right;
-  if (configuration == "fixed_shroud") left = {"disc_left", "shroud_left"}, right = {"disc_right", "shroud_right"};
-  else if (configuration == "cantilever") left = {"disc_left"}, right = {"disc_right"};
-  else throw InputError(cy.where("configuration"), "unknown configuration '" + configuration +
-                                                       "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc faces only)");
-  left = cy.getStringList("left_node_sets", left);
-  right = cy.getStringList("right_node_sets", right);
+  const auto faces = readCyclicFaces(cy);
+  const auto left = faces.left(), right = faces.right();
   const auto ap = cy.getVector3("axis_point", {0, 0, 0}), ad = cy.getVector3("axis_direction", {0, 0, 1});
   cy.rejectUnknownKeys();
   mesh::RotationAxis axis{ap, ad};
@@ -218,6 +246,9 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   // Without a shift the solver picks one (0 when K factors; below the first elastic
   // eigenvalue when rigid-body modes exist).
   problem.shift = m.has("shift") ? m.getDouble("shift", 0.0) : solvers::ModalOptions::automaticShift();
+  // Each nodal diameter's modes are kept as solved: a killed sweep resumed with --resume
+  // reads them back (the directory is emptied at the start of any other run).
+  problem.checkpoints = std::make_shared<post::ResultCheckpointDirectory>(outDir + "/checkpoints");
   const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
   const std::string prestress = m.getString("prestress", "linear");
   const std::string macChoice = m.getString("mac", "none");
@@ -826,9 +857,12 @@ ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
 
 namespace {
 
-void forcedResponseStage(SceneSection& scene, const std::string& outDir, linalg::CommPtr comm,
+void forcedResponseStage(SceneSection& scene, const std::string& outDir,
+                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
                          SceneSummary& summary) {
   auto setup = readForcedResponseSetup(scene);
+  setup.continuation.checkpoints = checkpoints;
+  if (setup.fallback) setup.fallback->checkpoints = checkpoints;
   for (const auto& note : setup.notes) {
     log::info(note);
     summary.computed.push_back(note);
@@ -903,7 +937,8 @@ void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string&
 namespace {
 void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
                const std::string& source, const std::string& sceneDir, const std::string& outDir,
-               linalg::CommPtr comm, SceneSummary& summary);
+               const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
+               SceneSummary& summary);
 }  // namespace
 
 SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
@@ -961,8 +996,28 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     log::warn(previousUnfinished);
     summary.computed.push_back("warning: " + previousUnfinished);
   }
+  // Curves save their traces in <out>/checkpoints as they go (rank 0 writes; the
+  // others, which trace the same curves, only read). --resume reads them: finished
+  // traces are read back, the one the kill interrupted continues; any other run starts
+  // without them. Removed when the run completes.
+  const std::string checkpointDir = outDir + "/checkpoints";
+  if (!(overrides.checkpointSeconds >= 0))
+    throw InputError("--checkpoint-seconds", "must be zero or positive, got " + std::to_string(overrides.checkpointSeconds));
+  if (comm->getRank() == 0) {
+    if (!overrides.resume) {
+      std::filesystem::remove_all(checkpointDir);
+    } else if (!std::filesystem::exists(checkpointDir)) {
+      log::warn("--resume: " + checkpointDir + " holds nothing to continue (the run before completed, or saved "
+                "no curve): everything is computed");
+    } else {
+      log::info("--resume: traces saved in " + checkpointDir + " are read back or continued");
+    }
+  }
+  Teuchos::barrier(*comm);
+  auto checkpoints = std::make_shared<post::TraceCheckpointDirectory>(checkpointDir, comm->getRank() != 0);
+  checkpoints->intervalSeconds = overrides.checkpointSeconds;
   try {
-    runStages(scene, analyses, overrides, source, sceneDir, outDir, comm, summary);
+    runStages(scene, analyses, overrides, source, sceneDir, outDir, checkpoints, comm, summary);
   } catch (const InputError& e) {
     // The library names the entry ("excitation: DOF 5 out of range"); the scene file is
     // added where the message does not start with it (issue 20).
@@ -975,6 +1030,10 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     throw;
   }
   if (manifest) manifest->complete(summary.written);
+  if (comm->getRank() == 0) {
+    std::error_code ignored;  // a leftover directory costs disk space, not the run
+    std::filesystem::remove_all(checkpointDir, ignored);
+  }
   return summary;
 }
 
@@ -982,12 +1041,13 @@ namespace {
 
 void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
                const std::string& source, const std::string& sceneDir, const std::string& outDir,
-               linalg::CommPtr comm, SceneSummary& summary) {
+               const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
+               SceneSummary& summary) {
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   if (wants("forced_response")) {
     // Matrix-defined systems need no mesh.
     Timer stage;
-    forcedResponseStage(scene, outDir, comm, summary);
+    forcedResponseStage(scene, outDir, checkpoints, comm, summary);
     summary.stages.push_back({"forced response", stage.seconds(), "see the samples check"});
     if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
     summary.written.push_back(outDir + "/report.md");
@@ -1021,7 +1081,7 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
                               "every mode's backward error ||K x - l M x|| / ((||K||_F + |l| ||M||_F) ||x||) below 1e-6, its value from a Rayleigh-Ritz on the solver's vectors matching the solver's value"});
   }
   if (wants("disc_response") || wants("reduced_model"))
-    discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, comm, summary);
+    discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, checkpoints, comm, summary);
   if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
   summary.written.push_back(outDir + "/report.md");
 }

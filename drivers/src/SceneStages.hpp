@@ -62,6 +62,22 @@ ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, con
 
 fe::IsotropicElastic readMaterial(SceneSection section);
 
+/// The sector's side faces from the scene's `cyclic` section, by part: the disc's
+/// (cyclic in every analysis) and the shroud's (cyclic in a modal analysis with
+/// configuration fixed_shroud; in the reduced models, which are cantilevered, the
+/// shroud is free and its contact carries the coupling). One set of keys for every
+/// analysis, so a mesh with its own set names works everywhere.
+struct CyclicFaces {
+  std::vector<std::string> discLeft{"disc_left"}, discRight{"disc_right"};
+  std::vector<std::string> shroudLeft{"shroud_left"}, shroudRight{"shroud_right"};
+  bool shroudCyclic = true;  ///< configuration: fixed_shroud (true) or cantilever
+  /// The modal analysis's cyclic faces (disc, and shroud with fixed_shroud).
+  std::vector<std::string> left() const;
+  std::vector<std::string> right() const;
+};
+/// Reads configuration and the disc's and shroud's left and right node sets.
+CyclicFaces readCyclicFaces(SceneSection& cyclic);
+
 /// `harmonics_check_to` of a forced-response section: the highest harmonic the
 /// harmonics check of a frequency curve raises H to (0 when absent: H + 1); given,
 /// it must exceed the curve's H.
@@ -116,7 +132,9 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
 
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.
+/// Its curves save their traces in `checkpoints` as they go (none: not saved).
 void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
-                const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
+                const std::string& outDir, const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints,
+                linalg::CommPtr comm, SceneSummary& summary);
 
 }  // namespace cyclone::scenes

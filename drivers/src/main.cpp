@@ -1,6 +1,7 @@
 // The cyclone program: runs scenes (YAML) and the embedded demo.
 #include <Tpetra_Core.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -15,14 +16,19 @@ namespace {
 const char* kUsage = R"(cyclone - vibration of bladed discs with friction at the shrouds
 
 usage:
-  cyclone demo [--output DIR] [--mesh-size H]   the main job on the built-in default disc
-  cyclone run SCENE.yaml [--output DIR] [--mesh-size H]
+  cyclone demo [--output DIR] [--mesh-size H] [--resume]   the main job on the built-in default disc
+  cyclone run SCENE.yaml [--output DIR] [--mesh-size H] [--resume] [--checkpoint-seconds S]
   cyclone print-demo-scene                      the demo scene, to copy and edit
   cyclone --help | --version
 
 A scene is a YAML file with a top-level key 'cyclone'; docs/scenes.md lists
 every key. Products go to the scene's output_directory (or --output); nothing is
 half-written. Run on several MPI ranks with mpirun -np N cyclone ...
+
+Forced-response curves save their traces in <output>/checkpoints every S seconds
+of work (default 5); --resume continues a killed run into the same directory from
+them (finished curves are read back, the interrupted one goes on from its last
+save). The directory is removed when a run completes.
 )";
 
 int usageError(const std::string& message) {
@@ -71,6 +77,14 @@ int main(int argc, char** argv) {
       const double h = std::strtod(argv[++i], &end);
       if (*end != '\0' || !(h > 0)) return usageError("--mesh-size needs a positive number, got '" + std::string(argv[i]) + "'");
       overrides.meshSize = h;
+    } else if (arg == "--resume") {
+      overrides.resume = true;
+    } else if (arg == "--checkpoint-seconds" && i + 1 < argc) {
+      char* end = nullptr;
+      const double seconds = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(seconds >= 0) || !std::isfinite(seconds))
+        return usageError("--checkpoint-seconds needs a number of seconds >= 0, got '" + std::string(argv[i]) + "'");
+      overrides.checkpointSeconds = seconds;
     } else {
       return usageError("unknown or incomplete option '" + arg + "'");
     }

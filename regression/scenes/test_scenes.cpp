@@ -4,7 +4,10 @@
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 #include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/file.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -22,10 +25,13 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
+#include "cyclone/post/ReducedModelFile.hpp"
 #include "cyclone/post/ResponseCurveFile.hpp"
+#include "cyclone/post/TraceCheckpointDirectory.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
@@ -448,6 +454,62 @@ TEST(Scenes, ReducedModelsAreReusedWhileTheirInputsMatch) {
   EXPECT_NE(msg.find("5"), std::string::npos) << msg;
 }
 
+// A disc scene on a mesh with its own set names (issue 20: the reduced models demanded
+// the built-in sector's disc_left/disc_right and ignored cyclic's keys): the built-in
+// sector written as .inp with its sets renamed, the cyclic faces, the bore and the
+// retained nodes named by the scene, builds the same reduced model (its eigenvalues
+// equal the built-in names' to the eigen-solver's tolerance); the built-in names, absent there,
+// are named in the error.
+TEST(Scenes, ADiscSceneTakesTheMeshsOwnSetNames) {
+  log::setQuiet(true);
+  const auto dir = freshDir("own_sets");
+  scenes::SceneOverrides o;
+  o.outputDirectory = (dir / "builtin").string();
+  const std::string rom = "  loads:\n    speed_rpm: 10000.0\n  reduced_model:\n    prestress: linear\n"
+                          "    modes: 6\n    nodal_diameters: [2]\n";
+  const std::string builtin = discScene("reduced_model");
+  const std::string withInp = builtin.substr(0, builtin.find("  constraints:")) + "    write: [inp]\n" +
+                              builtin.substr(builtin.find("  constraints:")) + rom;
+  scenes::runSceneText(withInp, "builtin.yaml", o, Tpetra::getDefaultComm());
+  std::ifstream in(dir / "builtin" / "mesh.inp");
+  std::string inp((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"disc_left", "hub_l"}, {"disc_right", "hub_r"}, {"shroud_contact_left", "patch_l"},
+           {"shroud_contact_right", "patch_r"}, {"mid_blade", "gauge"}, {"NSET=bore", "NSET=inner"}}) {
+    for (std::size_t at = inp.find(from); at != std::string::npos; at = inp.find(from, at + to.size()))
+      inp.replace(at, from.size(), to);
+  }
+  std::ofstream(dir / "own.inp") << inp;
+  auto own = [&](const std::string& cyclicKeys) {
+    return "cyclone:\n  analysis: reduced_model\n  mesh:\n    source: " + (dir / "own.inp").string() +
+           "\n  constraints:\n    fixed_node_sets: [inner]\n  cyclic:\n    sectors: 8\n" + cyclicKeys + rom +
+           "    retained_node_sets: [patch_l, patch_r, gauge]\n";
+  };
+  const auto missing = failure(own(""), dir / "missing");
+  EXPECT_NE(missing.find("disc_left"), std::string::npos) << missing;
+  o.outputDirectory = (dir / "own").string();
+  scenes::runSceneText(own("    disc_left_node_sets: [hub_l]\n    disc_right_node_sets: [hub_r]\n"), "own.yaml", o,
+                       Tpetra::getDefaultComm());
+  auto eigenvalues = [](const fs::path& d) {
+    for (const auto& e : fs::directory_iterator(d / "reduced_models"))
+      if (e.path().extension() == ".h5") return post::readReducedModelHdf5(e.path().string()).modes.eigenvalues;
+    return std::vector<double>();
+  };
+  const auto a = eigenvalues(dir / "builtin"), b = eigenvalues(dir / "own");
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  double largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, std::abs(b[i] / a[i] - 1));
+  std::printf("own set names: %zu eigenvalues, largest relative difference from the built-in names' %.1e\n", a.size(),
+              largest);
+  // The .inp keeps 16 significant digits (CalculiX's field width): the coordinates
+  // move by up to 1e-16 and the eigen-solver (whose random start vectors also depend
+  // on what ran before in the process) stops at other iterates inside its tolerance
+  // (1e-10 relative residual): 8e-11 .. 1.0e-10 measured. With the shroud's faces
+  // cyclic too (the wrong faces for a reduced model) the lowest is 15 times larger.
+  EXPECT_LT(largest, 1e-9);
+}
+
 TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   log::setQuiet(true);
   const auto dir = freshDir("disc_eo");
@@ -605,6 +667,18 @@ TEST(Scenes, WrongTypeAndImpossibleGeometryAreReported) {
   EXPECT_FALSE(fs::exists(dir / "static.exo"));
 }
 
+// A built-in sector meshed so finely that its stiffness matrix alone would not fit in
+// memory is refused before gmsh meshes it (issue 20's limits), with the key and the
+// estimate (gmsh would mesh for hours first: the test would time out).
+TEST(Scenes, AMeshTooFineForMemoryIsRefusedBeforeMeshing) {
+  const auto dir = freshDir("too_fine");
+  const std::string yaml = "cyclone:\n  analysis: mesh\n  mesh:\n    source: shrouded_sector\n    write: []\n"
+                           "    shrouded_sector:\n      mesh_size: 0.1\n";
+  const auto msg = failure(yaml, dir);
+  EXPECT_NE(msg.find("mesh_size"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknowns in the sector"), std::string::npos) << msg;
+}
+
 TEST(Scenes, MissingNodeSetAndMissingConstraintsAreReported) {
   const auto dir = freshDir("sets");
   std::string yaml = smallScene();
@@ -679,6 +753,95 @@ TEST(Scenes, ARunMarksItsDirectoryAndAConcurrentRunIsRefused) {
   EXPECT_NE(done.find("static.exo"), std::string::npos) << done;
   failure(smallScene("    nonsense_key: 1\n"), dir);
   EXPECT_NE(manifest().find("status: failed"), std::string::npos) << manifest();
+}
+
+// A run killed with SIGKILL in the middle of its curve and run again with --resume
+// (issue 20): the killed run's directory says "running" and holds the trace saved
+// so far; the resumed run continues from it (the log says from how many points) and
+// its curve is an uninterrupted run's, point for point; the checkpoints go once the
+// run completes. A friction scene whose corrector steps over a wall at a fixed
+// parameter after the resume point.
+TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) {
+  const std::string scene = std::string(CYCLONE_SCENE_DIR) + "/friction3d_rotating.yaml";
+  const auto whole = freshDir("resume_whole"), killed = freshDir("resume_killed");
+  fs::create_directories(killed);
+  auto cyclone = [&](const fs::path& out, const std::string& extra, const fs::path& log) {
+    const std::string cmd = std::string(CYCLONE_EXE) + " run " + scene + " --output " + out.string() + " " + extra +
+                            " > " + log.string() + " 2>&1";
+    return std::system(cmd.c_str());
+  };
+  ASSERT_EQ(cyclone(whole, "", whole.string() + ".log"), 0);
+
+  // The run to kill, saving at every step.
+  const std::string logPath = killed.string() + "_first.log";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  const std::string out = killed.string();
+  std::vector<std::string> args{CYCLONE_EXE, "run", scene, "--output", out, "--checkpoint-seconds", "0"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, CYCLONE_EXE, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  const fs::path checkpoints = killed / "checkpoints";
+  post::TraceCheckpointDirectory store(checkpoints.string(), true);
+  auto savedTrace = [&]() -> std::optional<continuation::TraceState> {
+    if (!fs::exists(checkpoints)) return std::nullopt;
+    for (const auto& f : fs::directory_iterator(checkpoints)) {
+      const std::string name = f.path().filename().string();
+      if (name.rfind("trace_", 0) != 0 || f.path().extension() != ".h5") continue;
+      return store.load(name.substr(6, name.size() - 9));
+    }
+    return std::nullopt;
+  };
+  bool killedMidCurve = false;
+  for (int i = 0; i < 3000 && !killedMidCurve; ++i) {  // up to a minute
+    ::usleep(20000);
+    const auto s = savedTrace();
+    if (s && !s->complete && s->branch.points.size() >= 10) {
+      ::kill(pid, SIGKILL);
+      killedMidCurve = true;
+    }
+    int status = 0;
+    if (!killedMidCurve && ::waitpid(pid, &status, WNOHANG) == pid) break;  // ended by itself: the test fails below
+  }
+  int status = 0;
+  if (killedMidCurve) ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(killedMidCurve) << "the run ended before its curve had 10 saved points (" << logPath << ")";
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  {
+    std::ifstream m(killed / "run_manifest.txt");
+    const std::string text((std::istreambuf_iterator<char>(m)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("status: running"), std::string::npos) << text;
+  }
+  EXPECT_FALSE(fs::exists(killed / "frc.h5"));
+  const auto atKill = savedTrace();
+  ASSERT_TRUE(atKill && !atKill->complete);
+  const std::size_t savedPoints = atKill->branch.points.size();
+
+  const fs::path resumeLog = killed.string() + "_resume.log";
+  ASSERT_EQ(cyclone(killed, "--resume", resumeLog), 0);
+  std::ifstream in(resumeLog);
+  const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(log.find("resumed from its checkpoint (" + std::to_string(savedPoints) + " points"), std::string::npos)
+      << log;
+  EXPECT_FALSE(fs::exists(checkpoints)) << "the checkpoints outlived the completed run";
+
+  const auto a = post::readResponseCurveHdf5((whole / "frc.h5").string());
+  const auto b = post::readResponseCurveHdf5((killed / "frc.h5").string());
+  ASSERT_EQ(a.omega.size(), b.omega.size());
+  ASSERT_GT(a.omega.size(), savedPoints);
+  double largest = 0;
+  for (std::size_t i = 0; i < a.omega.size(); ++i) {
+    EXPECT_EQ(a.omega[i], b.omega[i]) << "point " << i;
+    largest = std::max(largest, (a.coefficients[i] - b.coefficients[i]).cwiseAbs().maxCoeff());
+  }
+  EXPECT_EQ(largest, 0.0);
+  std::printf("killed at %zu saved points of %zu; the resumed curve equals the uninterrupted one (largest "
+              "difference %g)\n", savedPoints, a.omega.size(), largest);
 }
 
 // Scenes the YAML parser would spend minutes on (issue 20: 10 000 nested flow maps, a
@@ -1277,6 +1440,35 @@ TEST(Scenes, ExcitationByAmplitudeAndPhase) {
 
 // A sparse matrix (triplets) is the same matrix as its dense form; DOF names
 // label the outputs.
+// Harmonic balances too large for this machine's memory are refused with the keys
+// before anything large is allocated (issue 20's limits): 20000 harmonics at 65536
+// samples (the transform's dense matrices, 54.7 GB); 2200 DOFs with harmonics 0..4
+// (19 800 unknowns: the dense Jacobian and its factors, 12.5 GB).
+TEST(Scenes, HarmonicBalancesTooLargeForMemoryAreRefused) {
+  const auto dir = freshDir("hb_limits");
+  const std::string oneDof = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 1\n    M: [1.0]\n"
+                             "    C: [0.01]\n    K: [1.0]\n  harmonics: 20000\n  samples: 65536\n"
+                             "  excitation:\n    f: {dof: 0, cos: 1.0}\n  continuation:\n    from: 0.5\n    to: 1.5\n";
+  const auto aft = failure(oneDof, dir);
+  EXPECT_NE(aft.find("harmonics and samples"), std::string::npos) << aft;
+  EXPECT_NE(aft.find("54.7 GB"), std::string::npos) << aft;
+  std::ostringstream diagonal;
+  diagonal << "{rows: [";
+  for (int i = 0; i < 2200; ++i) diagonal << (i ? ", " : "") << i;
+  diagonal << "], cols: [";
+  for (int i = 0; i < 2200; ++i) diagonal << (i ? ", " : "") << i;
+  diagonal << "], values: [";
+  for (int i = 0; i < 2200; ++i) diagonal << (i ? ", " : "") << "1.0";
+  diagonal << "]}";
+  const std::string many = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 2200\n    M: " + diagonal.str() +
+                           "\n    K: " + diagonal.str() + "\n  harmonics: 4\n  samples: 64\n"
+                           "  excitation:\n    f: {dof: 0, cos: 1.0}\n  continuation:\n    from: 0.5\n    to: 1.5\n";
+  const auto jacobian = failure(many, dir);
+  EXPECT_NE(jacobian.find("harmonics: 5 harmonics (up to 4) on 2200 DOFs make 19800 unknowns"), std::string::npos)
+      << jacobian;
+  EXPECT_NE(jacobian.find("12.5 GB"), std::string::npos) << jacobian;
+}
+
 TEST(Scenes, SparseMatricesAndDofNames) {
   const auto dir = freshDir("sparse");
   fs::create_directories(dir);

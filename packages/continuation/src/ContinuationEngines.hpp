@@ -1,5 +1,6 @@
 #pragma once
 // The two engines behind traceBranch (ArclengthContinuation.hpp).
+#include <functional>
 #include <string>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
@@ -7,8 +8,19 @@
 
 namespace cyclone::continuation {
 
+struct TraceState;
+
+/// The predictor-corrector's saving: where from (a saved unfinished state, or none)
+/// and how to save (TraceCheckpoint.hpp).
+struct TraceCheckpointing {
+  const TraceState* resumeFrom = nullptr;
+  std::function<void(const TraceState&)> save;
+  double intervalSeconds = 5;  ///< of work between two saves
+};
+
 Branch traceBranchWithPredictorCorrector(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
-                                         const ContinuationOptions& options);
+                                         const ContinuationOptions& options,
+                                         const TraceCheckpointing* checkpointing = nullptr);
 Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
                            const ContinuationOptions& options);
 

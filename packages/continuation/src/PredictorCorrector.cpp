@@ -18,6 +18,7 @@
 #include "ContinuationEngines.hpp"
 #include "cyclone/continuation/DenseLu.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/continuation/TraceCheckpoint.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 
@@ -50,8 +51,9 @@ struct Correction {
 
 class Tracer {
 public:
-  Tracer(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch)
-      : problem_(problem), o_(o), branch_(branch), n_(problem.size) {}
+  Tracer(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch,
+         const TraceCheckpointing* checkpointing)
+      : problem_(problem), o_(o), branch_(branch), n_(problem.size), checkpointing_(checkpointing) {}
 
   void run(const Eigen::VectorXd& guess);
 
@@ -150,6 +152,11 @@ private:
   void rescale(const Point& z);
   bool endAt(double p, const Point& inside, const Point& outside);
   void progress();
+  bool start(const Eigen::VectorXd& guess, Point& z, Point& t);
+  // The state between two steps (z is the last point): saved every intervalSeconds of
+  // work, and restored to continue a saved trace exactly.
+  void save(const Point& t, double ds);
+  void restore(const TraceState& s, Point& z, Point& t, double& ds);
 
   const ContinuationProblem& problem_;
   const ContinuationOptions& o_;
@@ -165,7 +172,9 @@ private:
   std::size_t anchor_ = 0;
   std::size_t creepChecked_ = 0;  // passCreep looked back from this point and found no step
   std::vector<Point> tangents_;   // the tangent along the path at each point (empty where not known)
-  Timer total_, sinceLog_;
+  Timer total_, sinceLog_, sinceSave_;
+  const TraceCheckpointing* checkpointing_;
+  double secondsBefore_ = 0;  // of the saved trace this one continues
 };
 
 // Newton on [F(z); g(z)] = 0 from the predictor z0 + ds t0 (ds < 0: behind z0, for
@@ -446,12 +455,43 @@ void Tracer::progress() {
   sinceLog_.restart();
 }
 
-void Tracer::run(const Eigen::VectorXd& guess) {
-  Point z{guess, o_.from};
+void Tracer::save(const Point& t, double ds) {
+  if (!checkpointing_ || !checkpointing_->save || sinceSave_.seconds() < checkpointing_->intervalSeconds) return;
+  TraceState s;
+  s.branch = branch_;
+  s.branch.statistics.seconds = secondsBefore_ + total_.seconds();
+  for (const auto& tz : tangents_) {
+    s.tangentX.push_back(tz.x);
+    s.tangentP.push_back(tz.p);
+  }
+  s.measures = measures_;
+  s.directionX = t.x, s.directionP = t.p, s.step = ds;
+  s.scaleX = metric_.sx, s.scaleP = metric_.sp, s.largestNorm = largestNorm_, s.scaleFloor = sxFloor_;
+  s.retractions = retractions_, s.anchor = long(anchor_), s.creepChecked = long(creepChecked_);
+  checkpointing_->save(s);
+  sinceSave_.restart();
+}
+
+void Tracer::restore(const TraceState& s, Point& z, Point& t, double& ds) {
+  branch_ = s.branch;
+  secondsBefore_ = s.branch.statistics.seconds;
+  tangents_.clear();
+  for (std::size_t i = 0; i < s.tangentX.size(); ++i) tangents_.push_back({s.tangentX[i], s.tangentP[i]});
+  measures_ = s.measures;
+  t = {s.directionX, s.directionP}, ds = s.step;
+  metric_.sx = s.scaleX, metric_.sp = s.scaleP, largestNorm_ = s.largestNorm, sxFloor_ = s.scaleFloor;
+  retractions_ = int(s.retractions), anchor_ = std::size_t(s.anchor), creepChecked_ = std::size_t(s.creepChecked);
+  z = {branch_.points.back().x, branch_.points.back().parameter};
+}
+
+// The first point (Newton from the guess) and the first tangent; false with the stop
+// reason set where there is none.
+bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
+  z = {guess, o_.from};
   const auto start = solveNewton(problem_, z.x, o_.from, o_.tolerance, 100);
   if (!start.converged) {
     branch_.stopReason = noConvergedStart(start, o_.tolerance);
-    return;
+    return false;
   }
   const double dir = o_.to >= o_.from ? 1.0 : -1.0;
   metric_.sp = std::abs(o_.to - o_.from);
@@ -459,38 +499,47 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     append(z);
     branch_.finished = true;
     branch_.stopReason = "the range is a single point";
-    return;
+    return false;
   }
   // The first tangent: dp = dir, J dx = -dF/dp dp; the unknowns' floor scale from it
   // (the change of x over the range at the start's slope), for a start from rest.
-  Point t;
-  {
-    metric_.sx = std::max(z.x.norm(), 1e-300);
-    Eigen::VectorXd F;
-    Eigen::MatrixXd A;
-    if (!residual(z, F) || !jacobian(z, F, A)) {
-      branch_.stopReason = "the residual or Jacobian failed at the start of the range";
-      return;
-    }
-    A.bottomRows(1).setZero();
-    A(n_, n_) = 1;
-    DenseLu lu;
-    factor(A, lu);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
-    rhs(n_) = dir;
-    const Eigen::VectorXd v = lu.solve(rhs);
-    if (!v.allFinite()) {
-      branch_.stopReason = "singular Jacobian at the start of the range";
-      return;
-    }
-    sxFloor_ = std::max(1e-3 * v.head(n_).norm() * metric_.sp, 1e-300);
-    rescale(z);
-    t = {v.head(n_), v(n_)};
-    const double norm = metric_.norm(t);
-    t.x /= norm, t.p /= norm;
+  metric_.sx = std::max(z.x.norm(), 1e-300);
+  Eigen::VectorXd F;
+  Eigen::MatrixXd A;
+  if (!residual(z, F) || !jacobian(z, F, A)) {
+    branch_.stopReason = "the residual or Jacobian failed at the start of the range";
+    return false;
   }
+  A.bottomRows(1).setZero();
+  A(n_, n_) = 1;
+  DenseLu lu;
+  factor(A, lu);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
+  rhs(n_) = dir;
+  const Eigen::VectorXd v = lu.solve(rhs);
+  if (!v.allFinite()) {
+    branch_.stopReason = "singular Jacobian at the start of the range";
+    return false;
+  }
+  sxFloor_ = std::max(1e-3 * v.head(n_).norm() * metric_.sp, 1e-300);
+  rescale(z);
+  t = {v.head(n_), v(n_)};
+  const double norm = metric_.norm(t);
+  t.x /= norm, t.p /= norm;
   append(z, t);
-  double ds = std::clamp(o_.initialStep, o_.minStep, o_.maxStep);
+  return true;
+}
+
+void Tracer::run(const Eigen::VectorXd& guess) {
+  const double dir = o_.to >= o_.from ? 1.0 : -1.0;
+  Point z, t;
+  double ds = 0;
+  if (checkpointing_ && checkpointing_->resumeFrom) {
+    restore(*checkpointing_->resumeFrom, z, t, ds);
+  } else {
+    if (!start(guess, z, t)) return;
+    ds = std::clamp(o_.initialStep, o_.minStep, o_.maxStep);
+  }
   const double cornerStep = std::max(16 * o_.minStep, 1e-3);
   while (true) {
     if (int(branch_.points.size()) >= o_.maxSteps) {
@@ -499,6 +548,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       break;
     }
     progress();
+    save(t, ds);
     if (passCreep(z, t, dir)) {
       ds = cornerStep;
       continue;
@@ -632,7 +682,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       break;
     }
   }
-  stats().seconds = total_.seconds();
+  stats().seconds = secondsBefore_ + total_.seconds();
   const auto& s = stats();
   std::ostringstream msg;
   msg << "continuation: " << branch_.points.size() << " points, " << s.newtonIterations << " Newton iterations ("
@@ -645,9 +695,9 @@ void Tracer::run(const Eigen::VectorXd& guess) {
 }  // namespace
 
 Branch traceBranchWithPredictorCorrector(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
-                                         const ContinuationOptions& o) {
+                                         const ContinuationOptions& o, const TraceCheckpointing* checkpointing) {
   Branch branch;
-  Tracer(problem, o, branch).run(guess);
+  Tracer(problem, o, branch, checkpointing).run(guess);
   return branch;
 }
 

@@ -1,6 +1,9 @@
-#include "ContinuationEngines.hpp"
-
 #include <sstream>
+
+#include "ContinuationEngines.hpp"
+#include "cyclone/continuation/TraceCheckpoint.hpp"
+#include "cyclone/core/ContentHash.hpp"
+#include "cyclone/core/Log.hpp"
 
 namespace cyclone::continuation {
 
@@ -20,9 +23,66 @@ ContinuationOptions locaOptions() {
   return o;
 }
 
+std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
+  ContentHash h;
+  h.add(std::string("cyclone trace 1")).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
+  h.add(o.initialStep).add(o.minStep).add(o.maxStep).add(o.maxSteps).add(o.tolerance).add(o.maxNewtonIterations);
+  h.add(o.turnAngle).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
+  h.add(int(o.restartWhereTheCorrectorJumps)).add(int(o.lineSearch)).add(int(bool(problem.measure)));
+  h.add((long long)guess.size()).add(guess.data(), std::size_t(guess.size()) * sizeof(double));
+  // The residual at the guess tells the problem: two problems with the same size and
+  // options that agree there would start alike.
+  Eigen::VectorXd F;
+  try {
+    problem.residual(guess, o.from, F);
+    h.add((long long)F.size()).add(F.data(), std::size_t(F.size()) * sizeof(double));
+  } catch (...) {
+    h.add(std::string("residual failed at the guess"));
+  }
+  return h.hex();
+}
+
+namespace {
+
+void saveQuietly(TraceCheckpoints& store, const std::string& key, const TraceState& state) {
+  try {
+    store.save(key, state);
+  } catch (const std::exception& e) {
+    log::warn(std::string("continuation: the trace's checkpoint was not saved (the run goes on): ") + e.what());
+  }
+}
+
+}  // namespace
+
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
-  return o.engine == ContinuationOptions::Engine::Loca ? traceBranchWithLoca(problem, guess, o)
-                                                       : traceBranchWithPredictorCorrector(problem, guess, o);
+  const bool loca = o.engine == ContinuationOptions::Engine::Loca;
+  if (!o.checkpoints) return loca ? traceBranchWithLoca(problem, guess, o) : traceBranchWithPredictorCorrector(problem, guess, o);
+  TraceCheckpoints& store = *o.checkpoints;
+  const std::string key = traceKey(problem, guess, o);
+  std::optional<TraceState> saved = store.load(key);
+  if (saved && saved->complete) {
+    log::info("continuation: trace " + key.substr(0, 8) + " read back from its checkpoint (" +
+              std::to_string(saved->branch.points.size()) + " points; " + saved->branch.stopReason + ")");
+    return std::move(saved->branch);
+  }
+  Branch branch;
+  if (loca) {
+    branch = traceBranchWithLoca(problem, guess, o);
+  } else {
+    if (saved)
+      log::info("continuation: trace " + key.substr(0, 8) + " resumed from its checkpoint (" +
+                std::to_string(saved->branch.points.size()) + " points, to p = " +
+                std::to_string(saved->branch.points.empty() ? o.from : saved->branch.points.back().parameter) + ")");
+    const TraceCheckpointing checkpointing{saved ? &*saved : nullptr,
+                                           [&store, &key](const TraceState& s) { saveQuietly(store, key, s); },
+                                           store.intervalSeconds};
+    branch = traceBranchWithPredictorCorrector(problem, guess, o, &checkpointing);
+  }
+  TraceState done;
+  done.branch = branch;
+  done.complete = true;
+  saveQuietly(store, key, done);
+  return branch;
 }
 
 }  // namespace cyclone::continuation

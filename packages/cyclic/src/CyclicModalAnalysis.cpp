@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/ContentHash.hpp"
+#include "cyclone/mesh/MeshDigest.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -196,6 +198,27 @@ HarmonicModes unpack(const std::vector<double>& in, mesh::Index numNodes) {
   return hm;
 }
 
+// Everything one nodal diameter's modes depend on (ResultCheckpoints' key).
+std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector, const CyclicModalProblem& problem,
+                             int k) {
+  ContentHash h;
+  h.add(std::string("cyclone harmonic modes v1"));
+  mesh::addToHash(h, mesh);
+  mesh::addNodeSetsToHash(h, mesh, problem.fixedNodeSets);
+  h.add(sector.sectors).addAll(std::vector<long long>(sector.left.begin(), sector.left.end()));
+  h.addAll(std::vector<long long>(sector.right.begin(), sector.right.end()));
+  h.add(sector.axis.point.data(), sizeof(double) * 3).add(sector.axis.direction.data(), sizeof(double) * 3);
+  h.add(problem.material.E).add(problem.material.nu).add(problem.material.rho);
+  h.add(problem.modesPerHarmonic).add(problem.shift).add(int(problem.method)).add(k);
+  if (const auto* p = problem.prestress) {
+    h.add(std::string("prestress")).add(p->speedRpm).add(p->omega).add(int(p->nonlinear));
+    h.add(p->axis.point.data(), sizeof(double) * 3).add(p->axis.direction.data(), sizeof(double) * 3);
+    for (const auto& u : p->displacement) h.add(u.data(), sizeof(double) * 3);
+    for (const auto& s : p->stress) h.add(s.data(), sizeof(double) * std::size_t(s.size()));
+  }
+  return h.hex();
+}
+
 }  // namespace
 
 std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
@@ -208,11 +231,35 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   if (problem.modesPerHarmonic < 1) throw InputError("modes_per_nd", "must be at least 1");
 
   std::vector<HarmonicModes> out;
+  // A nodal diameter saved by an earlier run under the same inputs.
+  auto readBack = [&](int k, std::string& key) -> std::optional<HarmonicModes> {
+    if (!problem.checkpoints) return std::nullopt;
+    key = harmonicModesKey(mesh, sector, problem, k);
+    const auto saved = problem.checkpoints->load(key);
+    if (!saved) return std::nullopt;
+    HarmonicModes hm;
+    try {
+      hm = unpack(*saved, mesh.numNodes());
+    } catch (const std::exception&) {  // too short: not this mesh's modes
+      return std::nullopt;
+    }
+    hm.rank = comm->getRank();
+    if (hm.harmonic != k) return std::nullopt;
+    log::info("nodal diameter " + std::to_string(k) + ": " + std::to_string(hm.frequenciesHz.size()) +
+              " modes read back from the checkpoint of an earlier run (" + key.substr(0, 8) + ")");
+    return hm;
+  };
   if (problem.method == solvers::EigenMethod::Lobpcg) {
     // Distributed operators and preconditioner: every rank works on every nodal diameter.
     for (int k : harmonics) {
+      std::string key;
+      if (auto hm = readBack(k, key)) {
+        out.push_back(std::move(*hm));
+        continue;
+      }
       out.push_back(solveAssembled(mesh, sector, k, problem, comm));
       log::info(describe(out.back(), problem.method));
+      if (problem.checkpoints && comm->getRank() == 0) problem.checkpoints->save(key, pack(out.back()));
     }
     return out;
   }
@@ -230,10 +277,13 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());
   FactorCache factors;
   auto solveOne = [&](std::size_t i) {
+    std::string key;
+    if (auto saved = readBack(harmonics[i], key)) return std::move(*saved);
     auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
     HarmonicModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
     if (rank == 0) log::info(describe(hm, problem.method));
+    if (problem.checkpoints) problem.checkpoints->save(key, pack(hm));
     return hm;
   };
   if (ranks == 1) {

@@ -1,5 +1,7 @@
 #include "cyclone/hbm/Aft.hpp"
 
+#include <sstream>
+
 #include "cyclone/core/Error.hpp"
 
 #include <fftw3.h>
@@ -18,6 +20,22 @@ Aft::Aft(HarmonicSet harmonics, int samples) : harmonics_(std::move(harmonics)),
     throw InputError("Aft", std::to_string(n_) + " samples per period cannot resolve harmonic " +
                                 std::to_string(harmonics_.maxHarmonic()) + " (need at least " +
                                 std::to_string(harmonics_.minimumSamples()) + ")");
+  // The dense maps between coefficients and samples (E, P, D) are held for the
+  // elements' Jacobians: a harmonic count and sample count that make them larger than
+  // a workstation's memory are refused before anything is allocated.
+  {
+    constexpr double kMaxGigabytes = 8;
+    const double nc = harmonics_.numCoefficients();
+    const double gigabytes = 8.0 * (2.0 * n_ * nc + nc * nc) / 1e9;
+    if (gigabytes > kMaxGigabytes) {
+      std::ostringstream why;
+      why.precision(3);
+      why << harmonics_.size() << " harmonics (up to " << harmonics_.maxHarmonic() << ") at " << n_
+          << " samples per period: the transform's dense matrices would take " << gigabytes << " GB (at most "
+          << kMaxGigabytes << "); use fewer harmonics or samples";
+      throw InputError("harmonics and samples", why.str());
+    }
+  }
   real_ = static_cast<double*>(fftw_malloc(sizeof(double) * n_));
   spectrum_ = static_cast<double*>(fftw_malloc(sizeof(fftw_complex) * (n_ / 2 + 1)));
   // ESTIMATE: deterministic plans, and planning does not touch the buffers.

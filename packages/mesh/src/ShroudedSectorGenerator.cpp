@@ -15,6 +15,11 @@
 
 namespace cyclone::mesh {
 
+namespace {
+constexpr double kMaxSectorUnknowns = 2e7;    // about 20 GB for a tet10 stiffness matrix alone
+constexpr double kLargeSectorUnknowns = 5e5;  // where a direct factorization nears 10 GB
+}  // namespace
+
 void ShroudedSectorParameters::validate(const std::string& where) const {
   auto need = [&](bool ok, const std::string& param, const std::string& why) {
     if (!ok) throw InputError(where, "parameter '" + param + "' " + why);
@@ -135,6 +140,28 @@ Mesh generateShroudedSector(const ShroudedSectorParameters& p) {
     const std::vector<double> T = {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     gmsh::model::mesh::setPeriodic(2, {right[0].tag, right[1].tag}, {left[0].tag, left[1].tag}, T);
 
+    // The sector needs at least V / (h^3 / (6 sqrt 2)) tetrahedra at size h (regular ones
+    // fill it), each tet10 bringing at least 1.35 nodes (1.68 measured at h = 2), a tet4
+    // 0.16: a lower bound on the unknowns, so nothing that would fit is refused. Above
+    // it gmsh would spend minutes and gigabytes before the solver ran out of memory.
+    double volume = 0;
+    occ::getMass(3, fused[0].second, volume);
+    const double tets = volume / (std::pow(p.meshSize, 3) / (6 * std::sqrt(2.0)));
+    const double unknowns = 3 * tets * (p.elementOrder == 2 ? 1.35 : 0.16);
+    if (unknowns > kMaxSectorUnknowns) {
+      std::ostringstream why;
+      why << "parameter 'mesh_size' " << p.meshSize << " would make at least " << tets << " elements and "
+          << unknowns << " unknowns in the sector (volume " << volume << "): more than " << kMaxSectorUnknowns
+          << ", whose stiffness matrix alone would fill this machine's memory; use a larger mesh_size";
+      throw InputError("shrouded_sector/mesh_size", why.str());
+    }
+    if (unknowns > kLargeSectorUnknowns) {
+      std::ostringstream cost;
+      cost << "mesh_size " << p.meshSize << ": at least " << unknowns << " unknowns in the sector; the direct "
+           << "solvers' factors grow faster than the model (CHOLMOD took 10 GB at 5e5, docs/solvers.md): "
+           << "check the peak memory lines, or use modal: eigen_solver: lobpcg";
+      log::warn(cost.str());
+    }
     gmsh::option::setNumber("Mesh.CharacteristicLengthMax", p.meshSize);
     gmsh::option::setNumber("Mesh.CharacteristicLengthMin", 0.0);
     // A thin blade needs elements no thicker than itself to bend right.

@@ -44,6 +44,9 @@ struct ForcedResponseSetup {
   /// The harmonics check of a frequency curve finds the peak with H, H + 1, ... up to this
   /// (0: H + 1), each level by a peak search from the one before; < 0: no harmonics check.
   int harmonicsCheckTo = 0;
+  /// The scene key that sets the harmonics, for the message when the harmonic balance
+  /// would not fit in memory.
+  std::string harmonicsKey = "harmonics";
   /// A curve of which no point was computed: the run fails with the reason and writes
   /// none of its files (the scene's curve), or the curve is reported empty and the run
   /// goes on (one curve of a parameter study, whose table says so).

@@ -12,6 +12,10 @@ namespace cyclone::scenes {
 struct SceneOverrides {
   std::optional<std::string> outputDirectory;
   std::optional<double> meshSize;  ///< built-in sector only
+  /// Continue a killed run into the same directory from its saved traces
+  /// (<output>/checkpoints, docs/scenes.md); otherwise a run starts without them.
+  bool resume = false;
+  double checkpointSeconds = 5;  ///< of work between two saves of an unfinished curve
 };
 
 /// One stage of a run: how long it took and what its error estimate says.

@@ -11,10 +11,13 @@
 // The branch up to a failure is kept, with the reason it stopped.
 #include <Eigen/Dense>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace cyclone::continuation {
+
+class TraceCheckpoints;  // TraceCheckpoint.hpp
 
 struct ContinuationProblem {
   int size = 0;
@@ -71,6 +74,9 @@ struct ContinuationOptions {
   /// kinks of many friction contacts (docs/scenes.md: the default disc at H = 3).
   enum class LineSearch { FullStep, Backtrack, Polynomial };
   LineSearch lineSearch = LineSearch::FullStep;  // Loca only
+  /// Where the trace saves its state as it goes and looks for a saved one to continue
+  /// (TraceCheckpoint.hpp); none: nothing is saved. Not part of the trace's key.
+  std::shared_ptr<TraceCheckpoints> checkpoints;
 };
 
 /// LOCA's engine with its own step defaults (its steps are in its units; a maximum of

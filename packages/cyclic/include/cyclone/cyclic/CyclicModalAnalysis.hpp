@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/core/ResultCheckpoints.hpp"
 #include "cyclone/cyclic/CyclicSector.hpp"
 #include "cyclone/cyclic/Prestress.hpp"
 #include "cyclone/fe/Assembler.hpp"
@@ -33,6 +34,11 @@ struct CyclicModalProblem {
   solvers::EigenMethod method = solvers::EigenMethod::ShiftInvert;
   /// Prestressed tangent K + K_sigma - K_Omega at this state's speed; null: K alone.
   const PrestressState* prestress = nullptr;
+  /// Each nodal diameter's modes are saved here when solved and read back instead of
+  /// solved when they are there under the same inputs (mesh, sector, material, fixed
+  /// sets, prestress state, modes, shift, method): a killed sweep resumes per nodal
+  /// diameter. None: nothing saved.
+  std::shared_ptr<ResultCheckpoints> checkpoints;
 };
 
 struct HarmonicModes {
