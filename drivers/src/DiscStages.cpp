@@ -50,6 +50,13 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
     // (configuration and the shroud's faces are the modal analysis's).
     const auto faces = readCyclicFaces(cy);
     spec.leftSets = faces.discLeft, spec.rightSets = faces.discRight;
+    const auto analyses = scene.getStringList("analysis", {});
+    if (std::find(analyses.begin(), analyses.end(), "modal") == analyses.end())
+      for (const char* key : {"configuration", "shroud_left_node_sets", "shroud_right_node_sets"})
+        if (cy.has(key))
+          log::warn(cy.where(key) + " is the modal analysis's (the reduced models are cantilevered: the disc's "
+                                    "faces cyclic, the shroud's free for the contacts); this scene has none, so it is "
+                                    "not used");
     cy.rejectUnknownKeys();
   }
   double loadsRpm = 0;
@@ -523,6 +530,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                                        "modes", "clearance"};
   Timer studiesTimer;
   int studyCurves = 0;
+  std::map<std::string, std::vector<StudyPeak>> studyPeaks;  // for the peak studies' comparison
   for (const auto& name : known) {
     if (!studies.has(name)) continue;
     const auto values = studies.getDoubleList(name, {});
@@ -600,6 +608,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                      k == 0 ? label.str() : std::string());
       }
       ++studyCurves;
+      if (result.peak > 0) studyPeaks[name].push_back({v, result.peak, result.peakOmega});
       table << v << "," << result.peakOmega / (2 * M_PI) << "," << result.peak << "," << result.branch.points.size()
             << "," << (result.branch.finished ? 1 : 0) << "," << t.seconds() << "\n";
     }
@@ -615,6 +624,8 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     summary.written.push_back(outDir + "/study_" + name + ".csv");
   }
   studies.rejectUnknownKeys();
+  auto peakStudies = d.section("peak_studies");
+  followDiscPeaks(peakStudies, mesh, models, spec, setup, reference, fromHz, toHz, studyPeaks, outDir, comm, summary);
   d.rejectUnknownKeys();
   if (studyCurves > 0)
     summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),

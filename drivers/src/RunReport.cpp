@@ -109,6 +109,17 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
     r << "### " << base.substr(6) << "\n\n![" << base << "](" << name << ")\n\n";
     if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";
   }
+  // The peaks followed over a parameter (disc_response/peak_studies), this run's only.
+  for (const auto& path : summary.written) {
+    const auto name = std::filesystem::path(path).filename().string();
+    if (name.rfind("peak_", 0) != 0 || std::filesystem::path(path).extension() != ".svg") continue;
+    const std::string base = name.substr(0, name.size() - 4);
+    if (!studies) r << "## Parameter studies\n\n", studies = true;
+    r << "### " << base.substr(5) << ": the peak followed\n\nOne peak search per value from the reference curve's "
+      << "peak (`" << base << ".csv`; the optimum, the smallest peak, is marked; the frequency curves' peaks of the "
+      << "study at the same values beside it):\n\n![" << base << "](" << name << ")\n\n";
+    if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";
+  }
   r << "## Files\n\n";
   for (const auto& f : summary.written) r << "- `" << std::filesystem::path(f).filename().string() << "`\n";
   AtomicFile file(outDir + "/report.md");

@@ -844,6 +844,33 @@ continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup
   return problem;
 }
 
+continuation::PeakTrackingProblem peakFollowingProblem(ForcedResponseSetup& setup) {
+  if (setup.parameter == ForcedResponseSetup::Parameter::Omega)
+    throw InputError("peak following", "the parameter must be other than the frequency");
+  if (setup.outputDofs.empty()) throw InputError("peak following", "needs an output DOF (its max |x(t)| is the peak)");
+  continuation::PeakTrackingProblem problem;
+  problem.size = setup.system->numUnknowns();
+  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
+  const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
+  problem.residual = [&setup, f](const Eigen::VectorXd& X, double w, double p, Eigen::VectorXd& R) {
+    const double s = setup.apply(p).second;
+    setup.system->residual(X, w, R, nullptr, s);
+    R.array() /= f.array();
+  };
+  problem.jacobian = [&setup, f](const Eigen::VectorXd& X, double w, double p, Eigen::MatrixXd& J) {
+    const double s = setup.apply(p).second;
+    Eigen::VectorXd R;
+    setup.system->residual(X, w, R, &J, s);
+    J = f.cwiseInverse().asDiagonal() * J;
+  };
+  const int dof = setup.outputDofs.front(), nc = setup.system->numCoefficients();
+  const hbm::HarmonicSet harmonics = setup.system->aft().harmonics();
+  problem.measure = [harmonics, dof, nc](const Eigen::VectorXd& X) {
+    return hbm::peakMagnitude(harmonics, Eigen::VectorXd(X.segment(dof * nc, nc)));
+  };
+  return problem;
+}
+
 ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "cannot open the scene file");

@@ -1,5 +1,6 @@
 #pragma once
 // What the scene runner's stages share (private to the scenes library).
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
+#include "cyclone/scenes/DiscForcedResponse.hpp"
 #include "cyclone/scenes/DiscReducedModels.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
@@ -129,6 +131,21 @@ PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection mater
 void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const DiscReducedModels& models,
                      const DiscModelSpec& modelSpec, const PeakPoint& point, double excitationScale,
                      const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
+
+/// A value-list study's peak at one value (its frequency curve's largest point).
+struct StudyPeak {
+  double value = 0, peak = 0, omega = 0;
+};
+
+/// disc_response/peak_studies (preload, mu): the largest peak followed over the
+/// parameter by a peak search per value from the reference curve's peak; peak_<name>.csv
+/// and .svg (the optimum marked, the value-list study's peaks beside it); lines for the
+/// summary, with the largest difference from the study's peaks at shared values.
+void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const DiscReducedModels& models,
+                     const DiscResponseSpec& spec, const ForcedResponseSetup& reference,
+                     const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
+                     const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
+                     linalg::CommPtr comm, SceneSummary& summary);
 
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.

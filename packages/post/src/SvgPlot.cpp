@@ -38,7 +38,7 @@ double tickStep(double range) {
 
 std::string number(double v) {
   std::ostringstream s;
-  s << v;
+  s << (v == 0 ? 0.0 : v);  // no "-0" tick
   return s.str();
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/continuation/PeakTracking.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 
 namespace cyclone::scenes {
@@ -76,6 +77,12 @@ continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup
 continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& system,
                                                       ForcedResponseSetup::Parameter parameter, double omega = 0,
                                                       double excitationScale = 1.0);
+
+/// The scene's system with the frequency (rad/s) and its parameter (setup.parameter:
+/// an element parameter, the damping or the force scale) as separate arguments, the
+/// rows scaled as continuationProblem's; the measure is the first output DOF's
+/// max |x(t)|. For continuation::followPeak (the closures keep a reference to `setup`).
+continuation::PeakTrackingProblem peakFollowingProblem(ForcedResponseSetup& setup);
 
 /// A converged harmonic balance solution at the start of a scene's range, and how it was found.
 struct StartingPoint {

@@ -1,0 +1,63 @@
+#pragma once
+// The largest resonance peak of a frequency response followed over a parameter
+// by a peak search at each parameter value (PeakSearch.hpp: Newton at fixed
+// frequencies, golden section), for systems whose Jacobian jumps (friction
+// through AFT: each stick-slip instant crossing a time sample). There the peak
+// condition's derivatives jump too and an arclength corrector on it creeps
+// (trackPeak; docs/decisions.md); a fixed-frequency Newton passes those
+// corners. Each value starts from the peak before (a secant predictor in the
+// parameter). Where the followed local maximum vanishes (it merges with a
+// trough: a fold of the peak curve in the parameter) the band is swept and the
+// largest peak there is taken, marked as a jump: the engineer's peak against
+// the parameter is then discontinuous, as it is physically. The smallest peak
+// (the optimum, e.g. the preload where friction damps most) is located by a
+// golden section on the peaks between its grid neighbours.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "cyclone/continuation/PeakSearch.hpp"
+#include "cyclone/continuation/PeakTracking.hpp"
+
+namespace cyclone::continuation {
+
+struct PeakFollowingOptions {
+  /// The parameter values, monotone; the first is the start's (logarithmicValues()
+  /// spaces them evenly in log p).
+  std::vector<double> parameters;
+  double bandFrom = 0, bandTo = 0;  ///< the frequency band a sweep covers (at
+                                    ///< the start and at a jump)
+  PeakSearchOptions search;         ///< in the frequency; window and steps relative to
+                                    ///< it are set per value
+  ContinuationOptions sweep;        ///< the band sweeps' options (from, to are the band)
+  bool locateOptimum = true;        ///< the smallest peak by golden section between its grid neighbours
+};
+
+struct FollowedPeak {
+  double parameter = 0, frequency = 0, measure = 0;
+  Eigen::VectorXd x;
+  bool jump = false;  ///< the followed maximum vanished before this value; this
+                      ///< one is the band's largest
+};
+
+struct FollowedPeakCurve {
+  std::vector<FollowedPeak> points;  ///< in parameter order (the optimum among them when located)
+  bool complete = false;             ///< every parameter value has a peak
+  std::string stopReason;
+  int sweeps = 0, searches = 0, solves = 0;
+  double seconds = 0;
+  /// The optimum: the smallest peak; located (to the search's tolerance in the
+  /// parameter) when locateOptimum and it lies inside the range.
+  int optimum = -1;  ///< index into points
+  bool optimumLocated = false;
+};
+
+/// n values from `from` to `to` (both ends included), evenly spaced in log p.
+std::vector<double> logarithmicValues(double from, double to, int n);
+
+/// From a peak (x0 at frequency w0, parameter options.parameters[0]) or, with x0 empty,
+/// from a sweep of the band there.
+FollowedPeakCurve followPeak(const PeakTrackingProblem& problem, const Eigen::VectorXd& x0, double w0,
+                             const PeakFollowingOptions& options);
+
+}  // namespace cyclone::continuation

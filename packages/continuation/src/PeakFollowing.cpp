@@ -1,0 +1,185 @@
+#include "cyclone/continuation/PeakFollowing.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+
+namespace cyclone::continuation {
+
+namespace {
+
+// The frequency response at parameter p (the problem's frequency as the
+// continuation parameter).
+ContinuationProblem atParameter(const PeakTrackingProblem& P, double p) {
+  ContinuationProblem f;
+  f.size = P.size;
+  f.residual = [P, p](const Eigen::VectorXd& x, double w, Eigen::VectorXd& R) { P.residual(x, w, p, R); };
+  f.jacobian = [P, p](const Eigen::VectorXd& x, double w, Eigen::MatrixXd& J) { P.jacobian(x, w, p, J); };
+  f.measure = P.measure;
+  return f;
+}
+
+class Follower {
+ public:
+  Follower(const PeakTrackingProblem& P, const PeakFollowingOptions& o, FollowedPeakCurve& out)
+      : P_(P), o_(o), out_(out) {}
+
+  // The largest local maximum of the band's sweep at p (none: false).
+  bool largestInBand(double p, FollowedPeak& peak) {
+    ++out_.sweeps;
+    ContinuationOptions s = o_.sweep;
+    s.from = o_.bandFrom, s.to = o_.bandTo;
+    const auto f = atParameter(P_, p);
+    const auto branch = traceBranch(f, Eigen::VectorXd::Zero(P_.size), s);
+    const auto& pts = branch.points;
+    int best = -1;
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+      const double m = P_.measure(pts[i].x);
+      if (m >= P_.measure(pts[i - 1].x) && m >= P_.measure(pts[i + 1].x) && (best < 0 || m > peak.measure)) {
+        best = int(i);
+        peak = {p, pts[i].parameter, m, pts[i].x, false};
+      }
+    }
+    if (best < 0) return false;
+    // The sweep's points are the path's; its maximum is located on it (the
+    // measure was the problem's), and the search narrows it to the search's
+    // tolerance.
+    return searchFrom(p, peak.x, peak.frequency, peak);
+  }
+
+  // The local maximum near (x, w) at p.
+  bool searchFrom(double p, const Eigen::VectorXd& x, double w, FollowedPeak& peak) {
+    ++out_.searches;
+    PeakSearchOptions s = o_.search;
+    const auto r = findLocalPeak(atParameter(P_, p), x, w, P_.measure, s);
+    out_.solves += r.solves;
+    if (!r.found) return false;
+    peak = {p, r.parameter, r.value, r.x, false};
+    return true;
+  }
+
+  void run(const Eigen::VectorXd& x0, double w0);
+
+ private:
+  void locateOptimum();
+
+  const PeakTrackingProblem& P_;
+  const PeakFollowingOptions& o_;
+  FollowedPeakCurve& out_;
+};
+
+void Follower::run(const Eigen::VectorXd& x0, double w0) {
+  FollowedPeak first;
+  const double p0 = o_.parameters.front();
+  const bool started = x0.size() > 0 ? searchFrom(p0, x0, w0, first) : largestInBand(p0, first);
+  if (!started) {
+    out_.stopReason = "no peak at the start of the range (p = " + std::to_string(p0) + ")";
+    return;
+  }
+  out_.points.push_back(first);
+  for (std::size_t i = 1; i < o_.parameters.size(); ++i) {
+    const double p = o_.parameters[i];
+    const auto& a = out_.points.back();
+    // The secant predictor from the last two peaks (in the parameter's
+    // spacing).
+    Eigen::VectorXd x = a.x;
+    double w = a.frequency;
+    if (out_.points.size() >= 2 && !a.jump) {
+      const auto& b = out_.points[out_.points.size() - 2];
+      const double s = (p - a.parameter) / (a.parameter - b.parameter);
+      x += s * (a.x - b.x), w += s * (a.frequency - b.frequency);
+    }
+    FollowedPeak next;
+    if (!searchFrom(p, x, w, next) && !searchFrom(p, a.x, a.frequency, next)) {
+      // The followed maximum vanished: the band's largest, marked.
+      if (!largestInBand(p, next)) {
+        out_.stopReason = "the followed peak vanished at p = " + std::to_string(p) + " and the band's sweep found none";
+        return;
+      }
+      next.jump = true;
+      std::ostringstream msg;
+      msg << "peak following: the peak at frequency " << a.frequency << " (the problem's unit) vanished between p = "
+          << a.parameter << " and " << p << "; the band's largest is at " << next.frequency;
+      log::info(msg.str());
+    }
+    out_.points.push_back(std::move(next));
+  }
+  out_.complete = true;
+  out_.stopReason = "end of the parameter range reached";
+  if (o_.locateOptimum) locateOptimum();
+}
+
+// Golden section on the peak's measure in p between the grid neighbours of the
+// smallest peak (each trial a peak search from the nearer neighbour), when both
+// neighbours exist and neither side is a jump.
+void Follower::locateOptimum() {
+  auto& pts = out_.points;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (pts[i].measure < pts[k].measure) k = i;
+  out_.optimum = int(k);
+  if (k == 0 || k + 1 >= pts.size() || pts[k].jump || pts[k + 1].jump) return;
+  auto peakAt = [&](double p, FollowedPeak& peak) {
+    const auto& near =
+        std::abs(p - pts[k - 1].parameter) < std::abs(p - pts[k + 1].parameter) &&
+                std::abs(p - pts[k - 1].parameter) < std::abs(p - pts[k].parameter)
+            ? pts[k - 1]
+            : (std::abs(p - pts[k + 1].parameter) < std::abs(p - pts[k].parameter) ? pts[k + 1] : pts[k]);
+    return searchFrom(p, near.x, near.frequency, peak);
+  };
+  const double golden = 0.5 * (std::sqrt(5.0) - 1);
+  double a = pts[k - 1].parameter, b = pts[k + 1].parameter;
+  double c = b - golden * (b - a), d = a + golden * (b - a);
+  FollowedPeak pc, pd;
+  if (!peakAt(c, pc) || !peakAt(d, pd)) return;
+  const double tolerance = 1e-6 * std::abs(o_.parameters.back() - o_.parameters.front());
+  while (std::abs(b - a) > tolerance) {
+    if (pc.measure < pd.measure) {
+      b = d, d = c, pd = pc, c = b - golden * (b - a);
+      if (!peakAt(c, pc)) return;
+    } else {
+      a = c, c = d, pc = pd, d = a + golden * (b - a);
+      if (!peakAt(d, pd)) return;
+    }
+  }
+  FollowedPeak best = pc.measure < pd.measure ? pc : pd;
+  const auto at = pts.begin() + long(best.parameter < pts[k].parameter ? k : k + 1);
+  const std::size_t index = std::size_t(at - pts.begin());
+  if (best.measure < pts[k].measure) {
+    pts.insert(at, std::move(best));
+    out_.optimum = int(index);
+    out_.optimumLocated = true;
+  }
+}
+
+}  // namespace
+
+std::vector<double> logarithmicValues(double from, double to, int n) {
+  if (n < 2 || !(from > 0 && to > 0) || from == to)
+    throw InputError("peak following", "logarithmic values need n >= 2 and two different positive ends");
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(i + 1 == n ? to : from * std::pow(to / from, double(i) / (n - 1)));
+  return v;
+}
+
+FollowedPeakCurve followPeak(const PeakTrackingProblem& problem, const Eigen::VectorXd& x0, double w0,
+                             const PeakFollowingOptions& o) {
+  const auto& v = o.parameters;
+  if (v.size() < 2) throw InputError("peak following", "needs at least 2 parameter values");
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (!((v[i] - v[i - 1]) * (v[1] - v[0]) > 0))
+      throw InputError("peak following", "the parameter values must be strictly monotone");
+  if (x0.size() == 0 && !(o.bandTo > o.bandFrom && o.bandFrom > 0))
+    throw InputError("peak following", "a start by sweep needs a frequency band 0 < from < to");
+  if (!problem.measure) throw InputError("peak following", "the problem needs its response measure");
+  Timer timer;
+  FollowedPeakCurve out;
+  Follower(problem, o, out).run(x0, w0);
+  out.seconds = timer.seconds();
+  return out;
+}
+
+}  // namespace cyclone::continuation
