@@ -76,6 +76,74 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
   summary.written.push_back(outDir + "/peak_" + name + ".svg");
 }
 
+// From the reference value down and up the grid, joined in parameter order; the
+// optimum by `merit` over the whole.
+template <class Merit>
+continuation::FollowedPeakCurve followBothWays(const continuation::PeakTrackingProblem& problem, const Eigen::VectorXd& x0,
+                                               double w0, continuation::PeakFollowingOptions o,
+                                               const std::vector<double>& grid, double refValue, Merit merit) {
+  Timer timer;
+  continuation::FollowedPeakCurve whole;
+  std::vector<double> up, down;
+  for (double v : grid) (v >= refValue ? up : down).push_back(v);
+  std::reverse(down.begin(), down.end());
+  if (up.front() != refValue) up.insert(up.begin(), refValue);
+  down.insert(down.begin(), refValue);
+  for (const auto* part : {&down, &up}) {
+    if (part->size() < 2) continue;
+    o.parameters = *part;
+    const auto c = continuation::followPeak(problem, x0, w0, o);
+    whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
+    if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
+    auto points = c.points;
+    if (part == &down) std::reverse(points.begin(), points.end());
+    if (part == &up && !whole.points.empty()) points.erase(points.begin());  // the reference, already there
+    whole.points.insert(whole.points.end(), points.begin(), points.end());
+    if (c.optimumLocated) whole.optimumLocated = true;
+  }
+  whole.seconds = timer.seconds();
+  whole.complete = whole.stopReason.empty();
+  for (std::size_t i = 0; i < whole.points.size(); ++i)
+    if (whole.optimum < 0 || merit(whole.points[i]) < merit(whole.points[std::size_t(whole.optimum)]))
+      whole.optimum = int(i);
+  return whole;
+}
+
+// The summary's line: the work, the optimum and where it lies, the difference from the
+// value-list study's frequency curves at shared values.
+template <class Merit>
+std::string peakStudyLine(const std::string& name, const std::vector<double>& range,
+                          const continuation::FollowedPeakCurve& whole, const std::vector<double>& grid, bool byForce,
+                          Merit merit, const std::map<std::string, std::vector<StudyPeak>>& listed) {
+  const auto& best = whole.points[std::size_t(whole.optimum)];
+  int jumps = 0;
+  for (const auto& p : whole.points) jumps += p.jump;
+  std::ostringstream line;
+  line.precision(6);
+  line << "peak following over the " << name << " " << range[0] << ".." << range[1] << ": " << whole.points.size()
+       << " values in " << whole.seconds << " s (" << whole.searches << " peak searches, " << whole.solves
+       << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); smallest peak"
+       << (byForce ? " per unit force " : " ") << merit(best) << " at " << name << " " << best.parameter << " ("
+       << best.frequency / (2 * M_PI) << " Hz, "
+       << (best.parameter == grid.front() || best.parameter == grid.back()
+               ? "at the range's end: the optimum may lie beyond it"
+               : whole.optimumLocated ? "located between its neighbours" : "the grid's") << ")";
+  // The value-list study's peaks (frequency curves) at the same values.
+  if (const auto it = listed.find(name); it != listed.end()) {
+    double worst = 0;
+    int compared = 0;
+    for (const auto& sp : it->second)
+      for (const auto& p : whole.points)
+        if (std::abs(p.parameter - sp.value) <= 1e-12 * std::abs(sp.value) && sp.peak > 0) {
+          worst = std::max(worst, std::abs(p.measure / sp.peak - 1));
+          ++compared;
+        }
+    if (compared > 0) line << "; against the frequency curves at " << compared << " values: " << worst << " (relative)";
+  }
+  if (!whole.complete) line << "; stopped: " << whole.stopReason;
+  return line.str();
+}
+
 }  // namespace
 
 void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const DiscReducedModels& models,
@@ -133,64 +201,18 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
     if (const auto it = listed.find(name); it != listed.end())
       for (const auto& p : it->second) studyValues.push_back(p.value);
     const auto grid = followedValues(range[0], range[1], values, refValue, studyValues);
-    // Up from the reference value, then down from it; joined in parameter order.
-    Timer timer;
-    continuation::FollowedPeakCurve whole;
-    std::vector<double> up, down;
-    for (double v : grid) (v >= refValue ? up : down).push_back(v);
-    std::reverse(down.begin(), down.end());
-    if (up.front() != refValue) up.insert(up.begin(), refValue);
-    down.insert(down.begin(), refValue);
     log::info("peak following over the " + name + ": " + std::to_string(grid.size()) + " values, from the reference "
               "peak at " + std::to_string(w0 / (2 * M_PI)) + " Hz");
-    for (const auto* part : {&down, &up}) {
-      if (part->size() < 2) continue;
-      o.parameters = *part;
-      const auto c = continuation::followPeak(problem, x0, w0, o);
-      whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
-      if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
-      auto points = c.points;
-      if (part == &down) std::reverse(points.begin(), points.end());
-      if (part == &up && !whole.points.empty()) points.erase(points.begin());  // the reference, already there
-      whole.points.insert(whole.points.end(), points.begin(), points.end());
-      if (c.optimumLocated) whole.optimumLocated = true;
-    }
-    whole.seconds = timer.seconds();
-    whole.complete = whole.stopReason.empty();
-    for (std::size_t i = 0; i < whole.points.size(); ++i)
-      if (whole.optimum < 0 || merit(whole.points[i]) < merit(whole.points[std::size_t(whole.optimum)]))
-        whole.optimum = int(i);
+    continuation::FollowedPeakCurve whole = followBothWays(problem, x0, w0, o, grid, refValue, merit);
     if (whole.points.empty()) throw SolverError("disc_response/peak_studies/" + name + ": " + whole.stopReason);
 
     const std::string unit = name == "preload" ? " / N" : "";
-    if (comm->getRank() == 0) writePeakStudy(name, unit, whole, listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{}, outDir, summary);
-    const auto& best = whole.points[std::size_t(whole.optimum)];
-    int jumps = 0;
-    for (const auto& p : whole.points) jumps += p.jump;
-    std::ostringstream line;
-    line.precision(6);
-    line << "peak following over the " << name << " " << range[0] << ".." << range[1] << ": " << whole.points.size()
-         << " values in " << whole.seconds << " s (" << whole.searches << " peak searches, " << whole.solves
-         << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); smallest peak"
-         << (byForce ? " per unit force " : " ") << merit(best) << " at " << name << " " << best.parameter << " (" << best.frequency / (2 * M_PI) << " Hz, "
-         << (best.parameter == grid.front() || best.parameter == grid.back()
-                 ? "at the range's end: the optimum may lie beyond it"
-                 : whole.optimumLocated ? "located between its neighbours" : "the grid's") << ")";
-    // The value-list study's peaks (frequency curves) at the same values.
-    if (const auto it = listed.find(name); it != listed.end()) {
-      double worst = 0;
-      int compared = 0;
-      for (const auto& sp : it->second)
-        for (const auto& p : whole.points)
-          if (std::abs(p.parameter - sp.value) <= 1e-12 * std::abs(sp.value) && sp.peak > 0) {
-            worst = std::max(worst, std::abs(p.measure / sp.peak - 1));
-            ++compared;
-          }
-      if (compared > 0) line << "; against the frequency curves at " << compared << " values: " << worst << " (relative)";
-    }
-    if (!whole.complete) line << "; stopped: " << whole.stopReason;
-    summary.computed.push_back(line.str());
-    log::info(line.str());
+    if (comm->getRank() == 0)
+      writePeakStudy(name, unit, whole, listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{}, outDir,
+                     summary);
+    const std::string line = peakStudyLine(name, range, whole, grid, byForce, merit, listed);
+    summary.computed.push_back(line);
+    log::info(line);
     summary.stages.push_back({"peak following (" + name + ")", whole.seconds,
                               "each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's"});
   }
