@@ -79,8 +79,9 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
 // From the reference value down and up the grid, joined in parameter order; the
 // optimum by `merit` over the whole.
 template <class Merit>
-continuation::FollowedPeakCurve followBothWays(const continuation::PeakTrackingProblem& problem, const Eigen::VectorXd& x0,
-                                               double w0, continuation::PeakFollowingOptions o,
+continuation::FollowedPeakCurve followBothWays(const continuation::PeakTrackingProblem& problem,
+                                               const std::vector<continuation::PeakStart>& starts,
+                                               continuation::PeakFollowingOptions o,
                                                const std::vector<double>& grid, double refValue, Merit merit) {
   Timer timer;
   continuation::FollowedPeakCurve whole;
@@ -92,7 +93,7 @@ continuation::FollowedPeakCurve followBothWays(const continuation::PeakTrackingP
   for (const auto* part : {&down, &up}) {
     if (part->size() < 2) continue;
     o.parameters = *part;
-    const auto c = continuation::followPeak(problem, x0, w0, o);
+    const auto c = continuation::followPeaks(problem, starts, o);
     whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
     if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
     auto points = c.points;
@@ -168,15 +169,6 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
       throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
                                              "): the following starts at the reference curve's peak");
 
-    // The reference curve's peak (its largest point; the search narrows it).
-    const auto& pts = referenceResult.branch.points;
-    std::size_t top = 0;
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      if (std::abs(pts[i].parameter - referenceResult.peakParameter) <
-          std::abs(pts[top].parameter - referenceResult.peakParameter))
-        top = i;
-    const Eigen::VectorXd x0 = pts[top].x;
-    const double w0 = referenceResult.peakOmega;
 
     ForcedResponseSetup setup = makeDiscForcedResponse(mesh, models, spec);
     setup.outputDofs = reference.outputDofs;
@@ -185,6 +177,12 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
     else
       selectElementParameter(setup, "contact", name, refValue);
     const auto problem = peakFollowingProblem(setup);
+    // Every peak of the reference curve that stands out (5 %), so one that overtakes the
+    // largest is seen; its frequencies from the curve's parameter (omega / omegaUnit).
+    auto starts = continuation::prominentPeaks(referenceResult.branch, problem.measure);
+    if (starts.empty()) throw SolverError("disc_response/peak_studies/" + name + ": the reference curve has no peak");
+    for (auto& st : starts) st.frequency *= reference.omegaUnit;
+    const double w0 = starts.front().frequency;
     continuation::PeakFollowingOptions o;
     o.search.step = 5e-4 * w0, o.search.maxStep = 5e-3 * w0, o.search.window = 0.15 * w0;
     o.search.parameterTolerance = 1e-7 * w0, o.search.tolerance = reference.continuation.tolerance;
@@ -202,8 +200,9 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
       for (const auto& p : it->second) studyValues.push_back(p.value);
     const auto grid = followedValues(range[0], range[1], values, refValue, studyValues);
     log::info("peak following over the " + name + ": " + std::to_string(grid.size()) + " values, from the reference "
-              "peak at " + std::to_string(w0 / (2 * M_PI)) + " Hz");
-    continuation::FollowedPeakCurve whole = followBothWays(problem, x0, w0, o, grid, refValue, merit);
+              "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
+              " Hz");
+    continuation::FollowedPeakCurve whole = followBothWays(problem, starts, o, grid, refValue, merit);
     if (whole.points.empty()) throw SolverError("disc_response/peak_studies/" + name + ": " + whole.stopReason);
 
     const std::string unit = name == "preload" ? " / N" : "";

@@ -1,5 +1,6 @@
 #include "cyclone/continuation/PeakFollowing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -178,6 +179,64 @@ FollowedPeakCurve followPeak(const PeakTrackingProblem& problem, const Eigen::Ve
   Timer timer;
   FollowedPeakCurve out;
   Follower(problem, o, out).run(x0, w0);
+  out.seconds = timer.seconds();
+  return out;
+}
+
+std::vector<PeakStart> prominentPeaks(const Branch& curve, const std::function<double(const Eigen::VectorXd&)>& measure,
+                                      double prominence) {
+  const auto& pts = curve.points;
+  std::vector<double> m;
+  for (const auto& p : pts) m.push_back(measure(p.x));
+  std::vector<PeakStart> out;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const bool left = i == 0 || m[i] >= m[i - 1], right = i + 1 == pts.size() || m[i] >= m[i + 1];
+    if (!left || !right || pts.size() < 3) continue;
+    // The lowest point on each side before the path rises above m[i] (or ends).
+    double lowLeft = m[i], lowRight = m[i];
+    for (std::size_t j = i; j-- > 0 && m[j] <= m[i];) lowLeft = std::min(lowLeft, m[j]);
+    for (std::size_t j = i + 1; j < pts.size() && m[j] <= m[i]; ++j) lowRight = std::min(lowRight, m[j]);
+    if (m[i] - std::max(lowLeft, lowRight) < prominence * m[i]) continue;
+    out.push_back({pts[i].x, pts[i].parameter, m[i]});
+  }
+  std::sort(out.begin(), out.end(), [](const PeakStart& a, const PeakStart& b) { return a.measure > b.measure; });
+  return out;
+}
+
+FollowedPeakCurve followPeaks(const PeakTrackingProblem& problem, const std::vector<PeakStart>& starts,
+                              const PeakFollowingOptions& o) {
+  if (starts.empty()) throw InputError("peak following", "needs at least one peak to start from");
+  if (starts.size() == 1) return followPeak(problem, starts.front().x, starts.front().frequency, o);
+  Timer timer;
+  PeakFollowingOptions each = o;
+  each.locateOptimum = false;  // the values must line up across the followed peaks
+  std::vector<FollowedPeakCurve> curves;
+  FollowedPeakCurve out;
+  for (const auto& s : starts) {
+    curves.push_back(followPeak(problem, s.x, s.frequency, each));
+    const auto& c = curves.back();
+    out.sweeps += c.sweeps, out.searches += c.searches, out.solves += c.solves;
+  }
+  int previous = -1;
+  for (std::size_t i = 0; i < o.parameters.size(); ++i) {
+    int best = -1;
+    for (std::size_t k = 0; k < curves.size(); ++k)
+      if (i < curves[k].points.size() &&
+          (best < 0 || curves[k].points[i].measure > curves[std::size_t(best)].points[i].measure))
+        best = int(k);
+    if (best < 0) {
+      out.stopReason = "no followed peak reached p = " + std::to_string(o.parameters[i]);
+      break;
+    }
+    FollowedPeak point = curves[std::size_t(best)].points[i];
+    if (previous >= 0 && best != previous) point.jump = true;  // another peak overtook
+    previous = best;
+    out.points.push_back(std::move(point));
+  }
+  out.complete = out.points.size() == o.parameters.size();
+  if (out.complete) out.stopReason = "end of the parameter range reached";
+  for (std::size_t i = 0; i < out.points.size(); ++i)
+    if (out.optimum < 0 || out.points[i].measure < out.points[std::size_t(out.optimum)].measure) out.optimum = int(i);
   out.seconds = timer.seconds();
   return out;
 }

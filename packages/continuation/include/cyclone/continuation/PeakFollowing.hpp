@@ -13,6 +13,7 @@
 // (the optimum, e.g. the preload where friction damps most) is located by a
 // golden section on the peaks between its grid neighbours.
 #include <Eigen/Dense>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,26 @@ struct FollowedPeakCurve {
   int optimum = -1;  ///< index into points
   bool optimumLocated = false;
 };
+
+/// A peak to follow: a solution near it and its frequency.
+struct PeakStart {
+  Eigen::VectorXd x;
+  double frequency = 0, measure = 0;
+};
+
+/// The local maxima of a traced frequency curve that stand out: each one's
+/// prominence (how far the measure falls, along the path, before it rises above the
+/// peak again or the curve ends, the lesser of both sides) at least `prominence` of
+/// its value (a curve's kinks make tiny maxima that are not peaks). Largest first.
+std::vector<PeakStart> prominentPeaks(const Branch& curve, const std::function<double(const Eigen::VectorXd&)>& measure,
+                                      double prominence = 0.05);
+
+/// Every start followed over options.parameters (each as followPeak does), and per value
+/// the largest of them: where another followed peak overtakes, the point is marked as a
+/// jump. With one start, followPeak's curve (its optimum located); with several the
+/// optimum is the grid's smallest.
+FollowedPeakCurve followPeaks(const PeakTrackingProblem& problem, const std::vector<PeakStart>& starts,
+                              const PeakFollowingOptions& options);
 
 /// n values from `from` to `to` (both ends included), evenly spaced in log p.
 std::vector<double> logarithmicValues(double from, double to, int n);

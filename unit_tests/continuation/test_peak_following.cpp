@@ -1,0 +1,118 @@
+// The largest peak followed over a parameter where another peak overtakes the one
+// followed: a main mass with a tuned absorber (2-DOF, linear, closed-form frequency
+// response), the absorber's tuning as the parameter. At f = 0.9 the upper peak is
+// the larger, at f = 1.0 the lower one; neither vanishes in between. Both peaks of
+// the starting curve are followed (prominentPeaks) and each value reports the
+// largest, marked as a jump where it changes: every point is the exact response's
+// global maximum (dense sampling and golden section of the closed form).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+#include "cyclone/continuation/PeakFollowing.hpp"
+
+using namespace cyclone;
+
+namespace {
+
+constexpr double m1 = 1, k1 = 1, c1 = 0.002, m2 = 0.05, c2 = 1e-3;
+
+// |X1(w)| of the main mass under a unit force, absorber tuned to f (k2 = m2 f^2).
+double exactAmplitude(double w, double f) {
+  const double k2 = m2 * f * f;
+  const std::complex<double> a(k1 + k2 - m1 * w * w, w * (c1 + c2)), b(-k2, -w * c2), d(k2 - m2 * w * w, w * c2);
+  return std::abs(d / (a * d - b * b));
+}
+
+// The global maximum over [0.7, 1.3]: the best of 60001 samples, then golden section.
+std::pair<double, double> exactPeak(double f) {
+  double best = 0.7, top = 0;
+  for (int i = 0; i <= 60000; ++i) {
+    const double w = 0.7 + 0.6 * i / 60000;
+    if (const double a = exactAmplitude(w, f); a > top) top = a, best = w;
+  }
+  double lo = best - 1e-5, hi = best + 1e-5;
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  while (hi - lo > 1e-13) {
+    const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    (exactAmplitude(x1, f) > exactAmplitude(x2, f) ? hi : lo) = exactAmplitude(x1, f) > exactAmplitude(x2, f) ? x2 : x1;
+  }
+  return {0.5 * (lo + hi), exactAmplitude(0.5 * (lo + hi), f)};
+}
+
+// Harmonic balance of the linear system, x = [a1 a2 b1 b2] (cos and sin parts).
+continuation::PeakTrackingProblem absorber() {
+  continuation::PeakTrackingProblem P;
+  P.size = 4;
+  auto blocks = [](double w, double f, Eigen::Matrix2d& S, Eigen::Matrix2d& D) {
+    const double k2 = m2 * f * f;
+    Eigen::Matrix2d K, M, C;
+    K << k1 + k2, -k2, -k2, k2;
+    M << m1, 0, 0, m2;
+    C << c1 + c2, -c2, -c2, c2;
+    S = K - w * w * M, D = w * C;
+  };
+  P.residual = [blocks](const Eigen::VectorXd& x, double w, double f, Eigen::VectorXd& R) {
+    Eigen::Matrix2d S, D;
+    blocks(w, f, S, D);
+    R.resize(4);
+    R.head(2) = S * x.head(2) + D * x.tail(2) - Eigen::Vector2d(1, 0);
+    R.tail(2) = S * x.tail(2) - D * x.head(2);
+  };
+  P.jacobian = [blocks](const Eigen::VectorXd&, double w, double f, Eigen::MatrixXd& J) {
+    Eigen::Matrix2d S, D;
+    blocks(w, f, S, D);
+    J.resize(4, 4);
+    J << S, D, -D, S;
+  };
+  P.measure = [](const Eigen::VectorXd& x) { return std::hypot(x(0), x(2)); };
+  return P;
+}
+
+}  // namespace
+
+TEST(PeakFollowing, APeakThatOvertakesTheFollowedOneIsTaken) {
+  const auto P = absorber();
+  // The starting curve at f = 0.9 and its peaks.
+  continuation::ContinuationProblem curve;
+  curve.size = 4;
+  curve.residual = [&P](const Eigen::VectorXd& x, double w, Eigen::VectorXd& R) { P.residual(x, w, 0.9, R); };
+  curve.jacobian = [&P](const Eigen::VectorXd& x, double w, Eigen::MatrixXd& J) { P.jacobian(x, w, 0.9, J); };
+  curve.measure = P.measure;
+  continuation::ContinuationOptions co;
+  co.from = 0.7, co.to = 1.3;
+  const auto branch = continuation::traceBranch(curve, Eigen::VectorXd::Zero(4), co);
+  ASSERT_TRUE(branch.finished) << branch.stopReason;
+  const auto starts = continuation::prominentPeaks(branch, P.measure);
+  ASSERT_EQ(starts.size(), 2u);
+
+  continuation::PeakFollowingOptions o;
+  for (int i = 0; i <= 20; ++i) o.parameters.push_back(0.9 + 0.005 * i);
+  o.search.step = 1e-4, o.search.maxStep = 1e-2, o.search.window = 0.2, o.search.parameterTolerance = 1e-9;
+  o.search.tolerance = 1e-12;
+  const auto followed = continuation::followPeaks(P, starts, o);
+  ASSERT_TRUE(followed.complete) << followed.stopReason;
+  ASSERT_EQ(followed.points.size(), o.parameters.size());
+  // The only jump follows the first value where the exact response's largest peak is the lower one.
+  int exactSwitch = -1, jumps = 0, jumpAt = -1;
+  double worstA = 0, worstW = 0;
+  for (std::size_t i = 0; i < followed.points.size(); ++i) {
+    const auto& p = followed.points[i];
+    const auto [w, a] = exactPeak(p.parameter);
+    worstA = std::max(worstA, std::abs(p.measure / a - 1));
+    worstW = std::max(worstW, std::abs(p.frequency / w - 1));
+    if (exactSwitch < 0 && w < 0.95) exactSwitch = int(i);
+    if (p.jump) ++jumps, jumpAt = int(i);
+  }
+  std::printf("%zu values, %d searches, %d Newton solves; against the exact largest peak: amplitude %.1e, frequency "
+              "%.1e; the largest peak changes at f = %.3f (exact: %.3f)\n",
+              followed.points.size(), followed.searches, followed.solves, worstA, worstW,
+              jumpAt >= 0 ? o.parameters[std::size_t(jumpAt)] : 0.0,
+              exactSwitch >= 0 ? o.parameters[std::size_t(exactSwitch)] : 0.0);
+  EXPECT_LT(worstA, 1e-8);
+  EXPECT_LT(worstW, 1e-6);
+  EXPECT_EQ(jumps, 1);
+  EXPECT_EQ(jumpAt, exactSwitch);
+}
