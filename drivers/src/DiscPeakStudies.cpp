@@ -17,6 +17,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/post/ResponseCurveFile.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 
@@ -38,7 +39,25 @@ std::vector<double> followedValues(double from, double to, int n, double referen
 }
 
 void writePeakStudy(const std::string& name, const std::string& unit, const continuation::FollowedPeakCurve& curve,
-                    const std::vector<StudyPeak>& listed, const std::string& outDir, SceneSummary& summary) {
+                    const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed,
+                    const std::string& outDir, SceneSummary& summary) {
+  {
+    // Every peak's whole solution (the response-curve schema: /parameter, /omega at
+    // the peak, /coefficients; no stability computed), for post-processing.
+    post::ResponseCurve h5;
+    h5.numDofs = hb.numDofs();
+    h5.numCoefficients = hb.numCoefficients();
+    h5.samples = hb.aft().numSamples();
+    h5.harmonics = hb.aft().harmonics().harmonics();
+    for (const auto& p : curve.points) {
+      h5.omega.push_back(p.frequency);
+      h5.parameter.push_back(p.parameter);
+      h5.coefficients.push_back(p.x);
+      h5.stable.push_back(-1);
+    }
+    post::writeResponseCurveHdf5(outDir + "/peak_" + name + ".h5", h5);
+    summary.written.push_back(outDir + "/peak_" + name + ".h5");
+  }
   {
     AtomicFile file(outDir + "/peak_" + name + ".csv");
     std::ofstream out(file.tempPath());
@@ -207,8 +226,8 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
 
     const std::string unit = name == "preload" ? " / N" : "";
     if (comm->getRank() == 0)
-      writePeakStudy(name, unit, whole, listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{}, outDir,
-                     summary);
+      writePeakStudy(name, unit, whole, *setup.system, listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{},
+                     outDir, summary);
     const std::string line = peakStudyLine(name, range, whole, grid, byForce, merit, listed);
     summary.computed.push_back(line);
     log::info(line);

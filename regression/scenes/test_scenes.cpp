@@ -29,6 +29,7 @@
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/post/ReducedModelFile.hpp"
 #include "cyclone/post/ResponseCurveFile.hpp"
 #include "cyclone/post/TraceCheckpointDirectory.hpp"
@@ -188,6 +189,15 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
       if (i > 0) EXPECT_GT(followed[i][0], followed[i - 1][0]);
     }
     EXPECT_EQ(optima, 1);
+    // peak_preload.h5: every peak's whole solution, its max |x(t)| the CSV's.
+    const auto h5 = post::readResponseCurveHdf5((dir / "peak_preload.h5").string());
+    ASSERT_EQ(h5.parameter.size(), followed.size());
+    const auto& H = h5.harmonics;
+    for (std::size_t i = 0; i < followed.size(); ++i) {
+      EXPECT_NEAR(h5.parameter[i] / followed[i][0], 1.0, 1e-9);  // the CSV has 10 digits
+      const Eigen::VectorXd dof0 = h5.coefficients[i].head(h5.numCoefficients);
+      EXPECT_NEAR(hbm::peakMagnitude(hbm::HarmonicSet(H), dof0) / followed[i][2], 1.0, 1e-9) << i;
+    }
     for (const auto& s : swept) {
       if (s[4] != 1) continue;  // a study curve left incomplete: its peak is not a reference
       for (const auto& f : followed)
