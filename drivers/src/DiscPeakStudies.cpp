@@ -166,11 +166,8 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
 
 }  // namespace
 
-void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                     const DiscResponseSpec& spec, const ForcedResponseSetup& reference,
-                     const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
-                     const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
-                     linalg::CommPtr comm, SceneSummary& summary) {
+std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec) {
+  std::vector<PeakStudySpec> out;
   for (const std::string name : {"preload", "mu", "force"}) {
     if (!peakStudies.has(name)) continue;
     auto s = peakStudies.section(name);
@@ -180,14 +177,29 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
     const int values = s.getInt("values", 24);
     if (values < 3 || values > 400) throw InputError(s.where("values"), "must lie in 3..400");
     s.rejectUnknownKeys();
-    if (referenceResult.branch.points.empty())
-      throw SolverError("disc_response/peak_studies/" + name + ": the reference curve has no point to start from");
     // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies'.
     const double refValue = name == "preload" ? spec.contact.preload : name == "mu" ? spec.contact.mu : 1.0;
     if (!(refValue >= range[0] && refValue <= range[1]))
       throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
                                              "): the following starts at the reference curve's peak");
+    out.push_back({name, range[0], range[1], values});
+  }
+  peakStudies.rejectUnknownKeys();
+  return out;
+}
 
+void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh& mesh, const DiscReducedModels& models,
+                     const DiscResponseSpec& spec, const ForcedResponseSetup& reference,
+                     const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
+                     const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
+                     linalg::CommPtr comm, SceneSummary& summary) {
+  for (const auto& study : studies) {
+    const std::string& name = study.name;
+    const std::vector<double> range{study.from, study.to};
+    const int values = study.values;
+    if (referenceResult.branch.points.empty())
+      throw SolverError("disc_response/peak_studies/" + name + ": the reference curve has no point to start from");
+    const double refValue = name == "preload" ? spec.contact.preload : name == "mu" ? spec.contact.mu : 1.0;
 
     ForcedResponseSetup setup = makeDiscForcedResponse(mesh, models, spec);
     setup.outputDofs = reference.outputDofs;
@@ -234,7 +246,6 @@ void followDiscPeaks(SceneSection& peakStudies, const mesh::Mesh& mesh, const Di
     summary.stages.push_back({"peak following (" + name + ")", whole.seconds,
                               "each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's"});
   }
-  peakStudies.rejectUnknownKeys();
 }
 
 }  // namespace cyclone::scenes

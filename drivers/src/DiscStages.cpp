@@ -317,8 +317,10 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   DiscResponseSpec spec;
   int harmonicsCheckTo = 0;
   PeakStressSpec peakStress;
+  std::vector<PeakStudySpec> peakStudies;
   if (forcedResponse) {
     spec = readResponseSpec(d);
+    peakStudies = readPeakStudies(d.section("peak_studies"), spec);
     peakStress = readPeakStressSpec(d, scene.section("material"), modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
     harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
@@ -624,7 +626,6 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
     summary.written.push_back(outDir + "/study_" + name + ".csv");
   }
   studies.rejectUnknownKeys();
-  auto peakStudies = d.section("peak_studies");
   followDiscPeaks(peakStudies, mesh, models, spec, setup, reference, fromHz, toHz, studyPeaks, outDir, comm, summary);
   d.rejectUnknownKeys();
   if (studyCurves > 0)

@@ -560,6 +560,7 @@ TEST(Scenes, ADiscSceneTakesTheMeshsOwnSetNames) {
   EXPECT_LT(largest, 1e-9);
 }
 
+// (Also: bad peak studies are named before any work.)
 TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   log::setQuiet(true);
   const auto dir = freshDir("disc_eo");
@@ -572,6 +573,19 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   const auto folded = failure(scene(11), dir);
   EXPECT_NE(folded.find("exactly as engine order 3"), std::string::npos) << folded;
   EXPECT_NE(failure(scene(8), dir).find("folds to 0"), std::string::npos);
+  // Peak studies checked before any work (the reference preload is 0 here).
+  auto peakStudy = [&](const std::string& entry) {
+    return failure(scene(3) + "    contact:\n      preload: 5.0\n    peak_studies:\n" + entry, dir);
+  };
+  auto msg = peakStudy("      preload: {range: [10.0, 200.0]}\n");
+  EXPECT_NE(msg.find("peak_studies/preload/range"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must contain the scene's preload"), std::string::npos) << msg;
+  msg = peakStudy("      preload: {range: [1.0, 0.5]}\n");
+  EXPECT_NE(msg.find("0 < from < to"), std::string::npos) << msg;
+  msg = peakStudy("      mu: {range: [0.1, 0.8], values: 2}\n");
+  EXPECT_NE(msg.find("peak_studies/mu/values"), std::string::npos) << msg;
+  msg = peakStudy("      stiffness: {range: [1.0, 2.0]}\n");
+  EXPECT_NE(msg.find("stiffness"), std::string::npos) << msg;
 }
 
 // Studies other than the demo's preload: more damping lowers the peak, more force

@@ -35,16 +35,9 @@ class Follower {
     s.from = o_.bandFrom, s.to = o_.bandTo;
     const auto f = atParameter(P_, p);
     const auto branch = traceBranch(f, Eigen::VectorXd::Zero(P_.size), s);
-    const auto& pts = branch.points;
-    int best = -1;
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
-      const double m = P_.measure(pts[i].x);
-      if (m >= P_.measure(pts[i - 1].x) && m >= P_.measure(pts[i + 1].x) && (best < 0 || m > peak.measure)) {
-        best = int(i);
-        peak = {p, pts[i].parameter, m, pts[i].x, false};
-      }
-    }
-    if (best < 0) return false;
+    const auto peaks = prominentPeaks(branch, P_.measure, 0.0);  // every local maximum, largest first
+    if (peaks.empty()) return false;
+    peak = {p, peaks.front().frequency, peaks.front().measure, peaks.front().x, false};
     // The sweep's points are the path's; its maximum is located on it (the
     // measure was the problem's), and the search narrows it to the search's
     // tolerance.
@@ -123,13 +116,12 @@ void Follower::locateOptimum() {
     if (pts[i].measure < pts[k].measure) k = i;
   out_.optimum = int(k);
   if (k == 0 || k + 1 >= pts.size() || pts[k].jump || pts[k + 1].jump) return;
+  // Each trial from the nearest of the three grid points around the smallest.
   auto peakAt = [&](double p, FollowedPeak& peak) {
-    const auto& near =
-        std::abs(p - pts[k - 1].parameter) < std::abs(p - pts[k + 1].parameter) &&
-                std::abs(p - pts[k - 1].parameter) < std::abs(p - pts[k].parameter)
-            ? pts[k - 1]
-            : (std::abs(p - pts[k + 1].parameter) < std::abs(p - pts[k].parameter) ? pts[k + 1] : pts[k]);
-    return searchFrom(p, near.x, near.frequency, peak);
+    std::size_t near = k - 1;
+    for (std::size_t j : {k, k + 1})
+      if (std::abs(p - pts[j].parameter) < std::abs(p - pts[near].parameter)) near = j;
+    return searchFrom(p, pts[near].x, pts[near].frequency, peak);
   };
   const double golden = 0.5 * (std::sqrt(5.0) - 1);
   double a = pts[k - 1].parameter, b = pts[k + 1].parameter;
@@ -190,8 +182,8 @@ std::vector<PeakStart> prominentPeaks(const Branch& curve, const std::function<d
   for (const auto& p : pts) m.push_back(measure(p.x));
   std::vector<PeakStart> out;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const bool left = i == 0 || m[i] >= m[i - 1], right = i + 1 == pts.size() || m[i] >= m[i + 1];
-    if (!left || !right || pts.size() < 3) continue;
+    // Interior points only: at a curve's end the response may rise beyond it.
+    if (i == 0 || i + 1 == pts.size() || m[i] < m[i - 1] || m[i] < m[i + 1]) continue;
     // The lowest point on each side before the path rises above m[i] (or ends).
     double lowLeft = m[i], lowRight = m[i];
     for (std::size_t j = i; j-- > 0 && m[j] <= m[i];) lowLeft = std::min(lowLeft, m[j]);

@@ -59,7 +59,7 @@ struct PeakStart {
   double frequency = 0, measure = 0;
 };
 
-/// The local maxima of a traced frequency curve that stand out: each one's
+/// The interior local maxima of a traced frequency curve that stand out: each one's
 /// prominence (how far the measure falls, along the path, before it rises above the
 /// peak again or the curve ends, the lesser of both sides) at least `prominence` of
 /// its value (a curve's kinks make tiny maxima that are not peaks). Largest first.
