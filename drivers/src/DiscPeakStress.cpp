@@ -83,7 +83,7 @@ PeakPoint referencePeakPoint(ForcedResponseSetup& setup, const ForcedResponseRes
   PeakPoint p;
   std::ostringstream what;
   what.precision(6);
-  const auto& best = reference.harmonicsPeak;
+  const auto& best = reference.harmonicsCheck.converged;
   if (best.found && best.x.size() > 0) {
     p.raised = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(best.harmonics), best.samples);
     p.system = p.raised.get();
@@ -263,7 +263,7 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
   const hbm::ReceptanceModel& base = projected ? projected->base() : *point.system->receptance();
   const auto solution = hbm::harmonicResponse(base, loads, point.omega);
 
-  const auto prestress = discPrestress(mesh, models.sector, modelSpec, comm);
+  const auto prestress = disc::discPrestress(mesh, models.sector, modelSpec, comm);
   rom::HarmonicModelProblem problem;
   problem.material = modelSpec.material;
   problem.fixedNodeSets = modelSpec.fixedNodeSets;

@@ -17,7 +17,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
-#include "cyclone/post/ResponseCurveFile.hpp"
+#include "cyclone/io/ResponseCurveFile.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 
@@ -44,7 +44,7 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
   {
     // Every peak's whole solution (the response-curve schema: /parameter, /omega at
     // the peak, /coefficients; no stability computed), for post-processing.
-    post::ResponseCurve h5;
+    io::ResponseCurve h5;
     h5.numDofs = hb.numDofs();
     h5.numCoefficients = hb.numCoefficients();
     h5.samples = hb.aft().numSamples();
@@ -55,7 +55,7 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
       h5.coefficients.push_back(p.x);
       h5.stable.push_back(-1);
     }
-    post::writeResponseCurveHdf5(outDir + "/peak_" + name + ".h5", h5);
+    io::writeResponseCurveHdf5(outDir + "/peak_" + name + ".h5", h5);
     summary.written.push_back(outDir + "/peak_" + name + ".h5");
   }
   {

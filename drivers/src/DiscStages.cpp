@@ -20,8 +20,10 @@
 #include "cyclone/mesh/Mesh.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
-#include "cyclone/scenes/DiscForcedResponse.hpp"
-#include "cyclone/scenes/DiscReducedModels.hpp"
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/disc/DiscParameterStudy.hpp"
+#include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 
 namespace cyclone::scenes {
@@ -64,7 +66,7 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
     auto l = scene.section("loads");
     loadsRpm = l.getDouble("speed_rpm", 0.0);
   }
-  spec.kind = r.getString("kind", spec.kind);
+  spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
   spec.modes = r.getInt("modes", spec.modes);
   spec.omega0 = r.getDouble("omega0", spec.omega0);
@@ -72,29 +74,18 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
   if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
   spec.rpm = r.getDouble("speed_rpm", loadsRpm);
   if (!(spec.rpm >= 0)) throw InputError(r.where("speed_rpm"), "must be >= 0");
-  spec.prestress = r.getString("prestress", spec.prestress);
+  spec.prestress = readPrestressKind(r, "nonlinear");
   cache = r.getString("cache", "reuse");
   if (cache != "reuse" && cache != "rebuild" && cache != "off")
     throw InputError(r.where("cache"), "use reuse (read a model whose inputs match), rebuild or off");
   return spec;
 }
 
-std::vector<int> readHarmonics(SceneSection& s) {
-  auto list = s.getIntList("harmonics", {3});
-  if (list.size() == 1) {
-    const int H = list[0];
-    if (H < 1) throw InputError(s.where("harmonics"), "needs at least harmonic 1");
-    list.clear();
-    for (int h = 0; h <= H; ++h) list.push_back(h);
-  }
-  return list;
-}
-
 DiscResponseSpec readResponseSpec(SceneSection& d) {
   DiscResponseSpec spec;
   spec.engineOrder = d.getInt("engine_order", 0);
   if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
-  spec.harmonics = readHarmonics(d);
+  spec.harmonics = readHarmonicList(d, 3);
   spec.samples = d.getInt("samples", 0);
   if (spec.samples < 0 || spec.samples > kMaxSamples)
     throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in 1.." +
@@ -131,36 +122,21 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
 }
 
 // One curve of a study: frequency (Hz) and max |x(t)| of the first output DOF per point.
-struct Curve {
-  std::vector<double> hz, peak;
-  std::vector<std::size_t> starts{0};  ///< where each sweep starts (continuation::Branch::segmentStarts)
-};
-
-Curve curveOf(ForcedResponseSetup& setup, const continuation::Branch& branch) {
-  Curve c;
-  const auto& hb = *setup.system;
-  const int nc = hb.numCoefficients(), dof = setup.outputDofs.front();
-  for (const auto& pt : branch.points) {
-    c.hz.push_back(setup.apply(pt.parameter).first / (2 * M_PI));
-    c.peak.push_back(hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(pt.x.segment(dof * nc, nc))));
-  }
-  c.starts.insert(c.starts.end(), branch.segmentStarts.begin(), branch.segmentStarts.end());
-  return c;
-}
-
-// The models with another loss factor or fewer modes (hybrid and truncation models only).
-DiscReducedModels variedModels(const DiscReducedModels& base, double lossFactor, int modes) {
-  DiscReducedModels out = base;
-  for (auto& [k, m] : out.models) {
-    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
-    if (!h) throw InputError("disc_response/studies", "loss_factor and modes studies need hybrid or truncation models");
-    const double eta = lossFactor >= 0 ? lossFactor : h->lossFactor();
-    const auto kept = modes > 0 ? h->modes().first(std::min(modes, h->modes().numModes() / h->modes().copies))
-                                : h->modes();
-    m = h->hasStaticCorrection() ? std::make_shared<rom::HybridFrfModel>(kept, h->staticCompliance(), eta)
-                                 : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(kept, eta));
-  }
-  return out;
+// A study value that reproduces the reference scene: disc_frc's files under the study's name.
+void copyReferenceCurve(const std::string& outDir, const std::string& tag, const std::string& what,
+                        linalg::CommPtr comm, SceneSummary& summary) {
+  if (comm->getRank() == 0)
+    for (const std::string ext : {".csv", ".h5", ".svg"}) {
+      if (!std::filesystem::exists(outDir + "/disc_frc" + ext)) continue;
+      AtomicFile copy(outDir + "/" + tag + ext);
+      std::filesystem::copy_file(outDir + "/disc_frc" + ext, copy.tempPath(),
+                                 std::filesystem::copy_options::overwrite_existing);
+      copy.commit();
+    }
+  for (const std::string ext : {".h5", ".csv", ".svg"}) summary.written.push_back(outDir + "/" + tag + ext);
+  const std::string line = tag + ": " + what + " is the reference scene: disc_frc's curve, not traced again";
+  summary.computed.push_back(line);
+  log::info(line);
 }
 
 std::string shortNumber(double v) {
@@ -304,329 +280,284 @@ void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& po
     summary.written.push_back(outDir + "/" + f);
 }
 
+// disc_response's keys for the curve: family, frequency_range_hz, stability and the
+// continuation section (the disc's own defaults, discContinuationOptions, then the
+// scene's keys; an engine the scene names is used alone, by default the other one
+// retraces a curve the first leaves incomplete).
+disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
+                                        const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
+  disc::DiscSweepOptions sweep;
+  sweep.family = d.getInt("family", 1);
+  const auto range = d.getDoubleList("frequency_range_hz", {});
+  if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
+    throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
+  if (!range.empty()) sweep.fromHz = range[0], sweep.toHz = range[1];
+  sweep.stability = readStability(d);
+  sweep.harmonicsCheckTo = harmonicsCheckTo;
+  auto cs = d.section("continuation");
+  using Engine = continuation::ContinuationOptions::Engine;
+  sweep.continuation = disc::discContinuationOptions(
+      cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca : Engine::PredictorCorrector);
+  if (cs.has("engine")) sweep.fallback.reset();
+  readContinuationSteps(cs, sweep.continuation, "predictor_corrector");
+  sweep.continuation.tolerance = cs.getDouble("tolerance", sweep.continuation.tolerance);
+  cs.rejectUnknownKeys();
+  sweep.continuation.checkpoints = checkpoints;
+  if (sweep.fallback) sweep.fallback->checkpoints = checkpoints;
+  return sweep;
+}
+
+// What a disc scene asks for, read and checked before any FE work.
+struct DiscPlan {
+  DiscModelSpec modelSpec;   ///< with the check of the engine order's nodal diameter
+  std::string cacheDir;      ///< empty: nothing cached
+  std::vector<int> nds;      ///< the nodal diameters the models are built for
+  DiscResponseSpec spec;
+  int harmonicsCheckTo = 0;
+  PeakStressSpec peakStress;
+  std::vector<PeakStudySpec> peakStudies;
+};
+
+DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
+                      int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm) {
+  DiscPlan plan;
+  std::string cache;
+  plan.modelSpec = readModelSpec(scene, r, builtInSectors, cache);
+  const int sectors = plan.modelSpec.sectors;
+  auto& spec = plan.spec;
+  if (forcedResponse) {
+    spec = readResponseSpec(d);
+    plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec);
+    plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
+    const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
+    plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
+    if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {
+      // Also the nodal diameters of the harmonics the curve's harmonics check adds.
+      auto checked = spec.harmonics;
+      for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, plan.harmonicsCheckTo); ++h) checked.push_back(h);
+      plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, checked);
+      plan.modelSpec.checkNodalDiameter = disc::nodalDiametersFor(sectors, spec.engineOrder, {1}).front();
+    } else {  // engine-order errors before any FE work
+      DiscReducedModels none;
+      none.sectors = sectors;
+      disc::makeDiscForcedResponse(mesh, none, spec);  // throws the explained InputError
+    }
+    if (r.has("nodal_diameters"))
+      throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
+  } else {
+    plan.nds = r.getIntList("nodal_diameters", {});
+    if (plan.nds.empty())
+      throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
+  }
+  plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
+  plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
+  if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(plan.cacheDir);
+  r.rejectUnknownKeys();
+  return plan;
+}
+
+// The reduced models per nodal diameter (cached), their check against the full FE
+// compliance as rom_check.svg/.csv, and the summary's lines.
+DiscReducedModels reducedModelsStage(const mesh::Mesh& mesh, const DiscPlan& plan, const std::string& outDir,
+                                     linalg::CommPtr comm, SceneSummary& summary) {
+  const auto& ms = plan.modelSpec;
+  const std::string kind = disc::reducedModelKindName(ms.kind);
+  Timer timer;
+  auto models = disc::buildDiscReducedModels(mesh, ms, plan.nds, plan.cacheDir, comm);
+  const auto& c = models.check;
+  std::ostringstream estimate;
+  if (c.nodalDiameter >= 0) {
+    estimate << "largest relative error " << c.maxError() << " against the full FE compliance at ND "
+             << c.nodalDiameter << " over " << c.hz.size() << " frequencies (" << c.hz.front() << ".." << c.hz.back()
+             << " Hz)";
+    if (comm->getRank() == 0) {
+      post::SvgPlot plot("Reduced model (" + kind + ", " + std::to_string(ms.modes) +
+                             " modes) against the full FE model, ND " + std::to_string(c.nodalDiameter),
+                         "frequency (Hz)", "|A| at the mid-blade node (mm/N)");
+      plot.addLine(c.hz, c.full, post::SvgPlot::palette(0), "full FE (complex solve)");
+      plot.addMarkers(c.hz, c.reduced, post::SvgPlot::palette(1), "reduced model");
+      plot.write(outDir + "/rom_check.svg");
+      disc::writeReducedModelCheckCsv(outDir + "/rom_check.csv", c);
+    }
+    summary.written.push_back(outDir + "/rom_check.svg");
+    summary.written.push_back(outDir + "/rom_check.csv");
+    summary.computed.push_back("reduced model check: " + estimate.str());
+  } else {
+    estimate << "not checked (a reused model built before the check, or check_frequencies: 0)";
+  }
+  summary.stages.push_back({"reduced models (" + kind + ")", timer.seconds(), estimate.str()});
+  std::ostringstream line;
+  line << "reduced models (" << kind << ", " << ms.modes << " natural frequencies per ND, "
+       << models.retainedNodes.size() << " retained nodes) for ND";
+  for (const auto& [k, m] : models.models) line << " " << k;
+  line << " at " << ms.rpm << " rpm: " << models.built << " built, " << models.reused << " reused, "
+       << models.seconds << " s";
+  summary.computed.push_back(line.str());
+  for (const auto& [k, f] : models.files) summary.written.push_back(f);
+  return models;
+}
+
+// Writes a disc curve with its summary lines (a range-end warning says where to widen it).
+void writeDiscCurve(const disc::DiscForcedResponse& solved, const ForcedResponseSetup& setup,
+                    const ForcedResponseResult& result, const std::string& name, const std::vector<std::string>& warnings,
+                    const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+  writeForcedResponse(setup, result, outDir, name, comm, summary);
+  for (const auto& w : warnings)
+    summary.computed.push_back("warning: " + name + ": " + w + " (" + solved.estimateText +
+                               "); widen disc_response/frequency_range_hz");
+}
+
+// The reference curve disc_frc: traced, written, its headline first in the summary.
+disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,
+                                        const disc::DiscSweepOptions& sweep, const std::string& outDir,
+                                        linalg::CommPtr comm, SceneSummary& summary) {
+  const auto& spec = plan.spec;
+  Timer timer;
+  auto solved = disc::solveDiscForcedResponse(mesh, models, spec, sweep);
+  std::ostringstream line;
+  line << "engine order " << spec.engineOrder << " on ND " << plan.modelSpec.checkNodalDiameter << ": "
+       << solved.estimateText << "; sweep " << solved.fromHz << " -> " << solved.toHz << " Hz";
+  summary.computed.push_back(line.str());
+  log::info(line.str());
+  const auto& reference = solved.curve;
+  if (reference.branch.points.empty())
+    throw SolverError("disc_frc: no point of the curve was computed, so nothing was written: " +
+                      reference.branch.stopReason);
+  writeDiscCurve(solved, solved.setup, reference, "disc_frc", solved.warnings, outDir, comm, summary);
+  summary.stages.push_back(
+      {"forced response (H = " + std::to_string(solved.setup.system->aft().harmonics().maxHarmonic()) + ", " +
+           std::to_string(reference.branch.points.size()) + " points)",
+       timer.seconds(),
+       "Newton tolerance " + shortNumber(sweep.continuation.tolerance) + " (residual relative to the forces); " +
+           reference.samplesCheck.text + "; " + reference.harmonicsCheck.text});
+  // The headline: the peak at the highest harmonic count reached, converged or labelled
+  // an estimate with the last change next to it.
+  if (solved.headline.found) summary.computed.insert(summary.computed.begin(), solved.headline.text);
+  return solved;
+}
+
+// Contacts, loops, the period and the sector's stresses at one point: the converged
+// peak (or peak_stress/at_hz for the stresses).
+void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,
+                      disc::DiscForcedResponse& solved, const std::vector<int>& hysteresisContacts,
+                      const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+  auto& setup = solved.setup;
+  const PeakPoint point = referencePeakPoint(setup, solved.curve);
+  if (comm->getRank() == 0) {
+    const PeakContactStates peak = peakContactStates(point);
+    const auto energies = writeContactEnergies(point.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
+    summary.written.push_back(outDir + "/disc_frc_contacts.csv");
+    // Default: the contact that dissipates most at the peak.
+    std::vector<int> loops = hysteresisContacts;
+    if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
+    writePeakTimeResponse(setup, point, peak, loops, outDir, summary);
+  }
+  const auto& ps = plan.peakStress;
+  if (ps.atHz > 0)
+    writePeakStress(ps, mesh, models, plan.modelSpec, referencePointAt(setup, solved.curve, ps.atHz),
+                    setup.excitationScale, outDir, comm, summary);
+  else
+    writePeakStress(ps, mesh, models, plan.modelSpec, point, setup.excitationScale, outDir, comm, summary);
+}
+
+// One parameter study of disc_response/studies: a curve per value (each written as it
+// comes, a reference value's files copied from disc_frc's), study_<name>.svg with every
+// curve and study_<name>.csv with their peaks. Returns the curves traced.
+int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, const DiscReducedModels& models,
+               const DiscPlan& plan, const disc::DiscForcedResponse& solved, const disc::DiscSweepOptions& sweep,
+               const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary,
+               std::vector<StudyPeak>& peaks) {
+  const auto values = studies.getDoubleList(name, {});
+  if (values.empty()) throw InputError(studies.where(name), "needs a list of values");
+  const auto& setup = solved.setup;
+  post::SvgPlot plot(std::string("Study: ") + name + " (engine order " + std::to_string(plan.spec.engineOrder) + ")",
+                     "frequency (Hz)", "max |x(t)| of " + setup.dofNames[setup.outputDofs.front()]);
+  std::ostringstream table;
+  table.precision(10);
+  table << name << ",peak_hz,peak_max_abs,points,finished,seconds\n";
+  int index = 0;
+  const auto writeCurve = [&](const disc::DiscStudyCurve& c, const ForcedResponseSetup& traced) {
+    const std::string tag = "study_" + std::string(name) + "_" + std::to_string(index);
+    std::ostringstream label;
+    label << name << " = " << c.value;
+    if (c.isReference) copyReferenceCurve(outDir, tag, label.str(), comm, summary);
+    else writeDiscCurve(solved, traced, c.curve, tag, c.warnings, outDir, comm, summary);
+    const auto& r = c.curve;
+    const auto bounds = response::segmentBounds(r.branch);
+    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {  // one line per sweep, labelled once
+      std::vector<double> hz;
+      for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) hz.push_back(r.omega[i] / (2 * M_PI));
+      plot.addLine(hz, std::vector<double>(r.measure.begin() + long(bounds[k]), r.measure.begin() + long(bounds[k + 1])),
+                   post::SvgPlot::palette(index), k == 0 ? label.str() : std::string());
+    }
+    if (r.peak > 0) peaks.push_back({c.value, r.peak, r.peakOmega});
+    table << c.value << "," << r.peakOmega / (2 * M_PI) << "," << r.peak << "," << r.branch.points.size() << ","
+          << (r.branch.finished ? 1 : 0) << "," << c.seconds << "\n";
+    ++index;
+  };
+  try {
+    disc::studyDisc(mesh, models, plan.spec, solved, *disc::discStudyParameterFromName(name), values, sweep,
+                    writeCurve);
+  } catch (const InputError& e) {
+    throw InputError(studies.where(name), e.problem());
+  }
+  if (comm->getRank() == 0) {
+    plot.write(outDir + "/study_" + name + ".svg");
+    AtomicFile file(outDir + "/study_" + name + ".csv");
+    std::ofstream out(file.tempPath());
+    out << table.str();
+    out.close();
+    if (!out) throw Error("cannot write " + outDir + "/study_" + name + ".csv");
+    file.commit();
+  }
+  summary.written.push_back(outDir + "/study_" + name + ".svg");
+  summary.written.push_back(outDir + "/study_" + name + ".csv");
+  return index;
+}
+
+// disc_response/hysteresis_contacts, checked against the contact pairs (one element per pair).
+std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec) {
+  const std::vector<int> contacts = d.getIntList("hysteresis_contacts", {});
+  const int count = int(mesh.nodeSet(spec.contact.rightSet).size());
+  for (int e : contacts)
+    if (e < 0 || e >= count)
+      throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
+                                                           std::to_string(count) +
+                                                           " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
+  return contacts;
+}
+
 }  // namespace
 
 void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
                 const std::string& outDir, const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints,
                 linalg::CommPtr comm, SceneSummary& summary) {
-  std::string cache;
   auto r = scene.section("reduced_model");
   auto d = scene.section("disc_response");
-  const DiscModelSpec modelSpec = readModelSpec(scene, r, builtInSectors, cache);
-  std::vector<int> nds;
-  DiscResponseSpec spec;
-  int harmonicsCheckTo = 0;
-  PeakStressSpec peakStress;
-  std::vector<PeakStudySpec> peakStudies;
-  if (forcedResponse) {
-    spec = readResponseSpec(d);
-    peakStudies = readPeakStudies(d.section("peak_studies"), spec);
-    peakStress = readPeakStressSpec(d, scene.section("material"), modelSpec.material);
-    const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
-    harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
-    if (spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors) {
-      // Also the nodal diameters of the harmonics the curve's harmonics check adds.
-      auto checked = spec.harmonics;
-      for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, harmonicsCheckTo); ++h) checked.push_back(h);
-      nds = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, checked);
-    }
-    if (r.has("nodal_diameters"))
-      throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
-  } else {
-    nds = r.getIntList("nodal_diameters", {});
-    if (nds.empty())
-      throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
-  }
-  const std::string cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
-  DiscModelSpec checkedSpec = modelSpec;
-  checkedSpec.checkFrequencies = r.getInt("check_frequencies", 12);
-  if (forcedResponse && spec.engineOrder >= 1 && spec.engineOrder < modelSpec.sectors)
-    checkedSpec.checkNodalDiameter = nodalDiametersFor(modelSpec.sectors, spec.engineOrder, {1}).front();
-  if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(cacheDir);
-  // Engine-order errors before any FE work.
-  if (forcedResponse && (spec.engineOrder < 1 || spec.engineOrder >= modelSpec.sectors)) {
-    DiscReducedModels none;
-    none.sectors = modelSpec.sectors;
-    makeDiscForcedResponse(mesh, none, spec);  // throws the explained InputError
-  }
-  r.rejectUnknownKeys();
-  Timer romTimer;
-  const auto models = buildDiscReducedModels(mesh, checkedSpec, nds, cacheDir, comm);
-  {
-    const auto& c = models.check;
-    std::ostringstream estimate;
-    if (c.nodalDiameter >= 0) {
-      estimate << "largest relative error " << c.maxError() << " against the full FE compliance at ND "
-               << c.nodalDiameter << " over " << c.hz.size() << " frequencies (" << c.hz.front() << ".." << c.hz.back()
-               << " Hz)";
-      if (comm->getRank() == 0) {
-        post::SvgPlot plot("Reduced model (" + modelSpec.kind + ", " + std::to_string(modelSpec.modes) +
-                               " modes) against the full FE model, ND " + std::to_string(c.nodalDiameter),
-                           "frequency (Hz)", "|A| at the mid-blade node (mm/N)");
-        plot.addLine(c.hz, c.full, post::SvgPlot::palette(0), "full FE (complex solve)");
-        plot.addMarkers(c.hz, c.reduced, post::SvgPlot::palette(1), "reduced model");
-        plot.write(outDir + "/rom_check.svg");
-        writeReducedModelCheckCsv(outDir + "/rom_check.csv", c);
-      }
-      summary.written.push_back(outDir + "/rom_check.svg");
-      summary.written.push_back(outDir + "/rom_check.csv");
-      summary.computed.push_back("reduced model check: " + estimate.str());
-    } else {
-      estimate << "not checked (a reused model built before the check, or check_frequencies: 0)";
-    }
-    summary.stages.push_back({"reduced models (" + modelSpec.kind + ")", romTimer.seconds(), estimate.str()});
-  }
-  {
-    std::ostringstream line;
-    line << "reduced models (" << modelSpec.kind << ", " << modelSpec.modes << " natural frequencies per ND, "
-         << models.retainedNodes.size() << " retained nodes) for ND";
-    for (const auto& [k, m] : models.models) line << " " << k;
-    line << " at " << modelSpec.rpm << " rpm: " << models.built << " built, " << models.reused << " reused, "
-         << models.seconds << " s";
-    summary.computed.push_back(line.str());
-    for (const auto& [k, f] : models.files) summary.written.push_back(f);
-  }
+  const DiscPlan plan = readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir, comm);
+  const auto models = reducedModelsStage(mesh, plan, outDir, comm, summary);
   if (!forcedResponse) return;
 
-  const int family = d.getInt("family", 1);
-  const auto range = d.getDoubleList("frequency_range_hz", {});
-  if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
-    throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
-  const std::vector<int> hysteresisContacts = d.getIntList("hysteresis_contacts", {});
-  const std::string stability = d.getString("stability", "auto");
-  if (stability != "auto" && stability != "true" && stability != "false")
-    throw InputError(d.where("stability"), "must be auto, true or false");
-  auto cs = d.section("continuation");
-  // The engine's own defaults for the disc (discContinuationOptions), then the scene's keys.
-  using Engine = continuation::ContinuationOptions::Engine;
-  continuation::ContinuationOptions opt =
-      discContinuationOptions(cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca
-                                                                                    : Engine::PredictorCorrector);
-  // An engine the scene names is used alone; by default the other one retraces a curve
-  // the first leaves incomplete.
-  std::optional<continuation::ContinuationOptions> fallback;
-  if (!cs.has("engine")) fallback = discContinuationOptions(Engine::Loca);
-  readContinuationSteps(cs, opt, "predictor_corrector");
-  opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
-  cs.rejectUnknownKeys();
-  opt.checkpoints = checkpoints;
-  if (fallback) fallback->checkpoints = checkpoints;
-
-  // The reference system: the range from its resonance estimate unless given.
-  auto setup = makeDiscForcedResponse(mesh, models, spec);
-  const int contactCount = int(setup.system->elements().size());
-  for (int e : hysteresisContacts)
-    if (e < 0 || e >= contactCount)
-      throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
-                                                           std::to_string(contactCount) +
-                                                           " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
-  // The estimate sets the range unless the scene gives one; then it only informs,
-  // and a failed estimate (no stuck peak on its scan) is reported, not fatal.
-  ResonanceEstimate estimate = ResonanceEstimate{};
-  std::string estimateText;
-  try {
-    estimate = estimateResonance(setup, models, family);
-    std::ostringstream text;
-    text << "family " << family << " at " << estimate.freeHz << " Hz with the shroud free, " << estimate.stuckHz
-         << " Hz with the contacts stuck";
-    estimateText = text.str();
-  } catch (const InputError& e) {
-    if (range.empty()) throw;
-    estimateText = std::string("no resonance estimate (") + e.what() + ")";
-  }
-  double fromHz = 0, toHz = 0;
-  if (range.empty()) {
-    fromHz = 0.9 * std::min(estimate.freeHz, estimate.stuckHz);
-    toHz = 1.1 * std::max(estimate.freeHz, estimate.stuckHz);
-  } else {
-    fromHz = range[0], toHz = range[1];
-  }
-  {
-    std::ostringstream line;
-    line << "engine order " << spec.engineOrder << " on ND "
-         << nodalDiametersFor(modelSpec.sectors, spec.engineOrder, {1}).front() << ": " << estimateText << "; sweep "
-         << fromHz << " -> " << toHz << " Hz";
-    summary.computed.push_back(line.str());
-    log::info(line.str());
-  }
-  auto traceOne = [&](ForcedResponseSetup& s, const std::string& name) {
-    s.omegaUnit = 2 * M_PI * fromHz;
-    s.stability = stability;
-    s.harmonicsKey = "disc_response/harmonics";
-    // The reference curve's peak is checked up to harmonics_check_to; a study's curves
-    // are not (each level costs peak searches; the stage's error is the reference's).
-    s.harmonicsCheckTo = name == "disc_frc" ? harmonicsCheckTo : -1;
-    s.continuation = opt;
-    s.continuation.from = 1.0, s.continuation.to = toHz / fromHz;
-    s.fallback = fallback;
-    const auto result = traceAndWriteForcedResponse(s, outDir, name, comm, summary);
-    if (!result.branch.points.empty()) {
-      const double peakHz = result.peakOmega / (2 * M_PI);
-      const double span = toHz - fromHz;
-      if (peakHz < fromHz + 1e-3 * span || peakHz > toHz - 1e-3 * span) {
-        std::ostringstream msg;
-        msg << name << ": the largest response is at the end of the sweep (" << peakHz << " Hz): the resonance lies "
-            << "outside " << fromHz << ".." << toHz << " Hz (" << estimateText
-            << "); widen disc_response/frequency_range_hz";
-        log::warn(msg.str());
-        summary.computed.push_back("warning: " + msg.str());
-      }
-    }
-    return result;
-  };
-  Timer responseTimer;
-  auto reference = traceOne(setup, "disc_frc");
-  summary.stages.push_back({"forced response (H = " + std::to_string(setup.system->aft().harmonics().maxHarmonic()) +
-                                ", " + std::to_string(reference.branch.points.size()) + " points)",
-                            responseTimer.seconds(),
-                            "Newton tolerance " + shortNumber(opt.tolerance) +
-                                " (residual relative to the forces); " + reference.samplesCheck + "; " +
-                                reference.harmonicsCheck});
-  if (const auto& best = reference.harmonicsPeak; best.found) {
-    // The headline: the peak at the highest harmonic count reached, converged or
-    // labelled an estimate with the last change next to it.
-    constexpr double kConverged = 1e-2;
-    std::ostringstream line;
-    line.precision(6);
-    line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
-         << best.maxHarmonic;
-    if (best.change < 0)
-      line << "; an estimate: its convergence in the harmonics is not known (no level below it to compare)";
-    else if (best.change <= kConverged)
-      line << "; converged in the harmonics to " << 100 * kConverged << " % (H " << best.belowHarmonic << " -> "
-           << best.maxHarmonic << " changed it by " << 100 * best.change << " %)";
-    else
-      line << "; an estimate, not converged in the harmonics: H " << best.belowHarmonic << " -> " << best.maxHarmonic
-           << " changed it by " << 100 * best.change << " % (disc_frc_harmonics.csv)";
-    // A level above that was tried and not found leaves the error unbounded by the
-    // last change (the default disc at H = 5: docs/scenes.md).
-    if (best.notFoundHarmonic >= 0)
-      line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
-           << "the last change";
-    summary.computed.insert(summary.computed.begin(), line.str());
-    log::info(line.str());
-  }
-  if (!reference.branch.points.empty()) {
-    // Contacts, loops, the period and the sector's stresses at one point: the converged peak.
-    const PeakPoint point = referencePeakPoint(setup, reference);
-    if (comm->getRank() == 0) {
-      const PeakContactStates peak = peakContactStates(point);
-      const auto energies =
-          writeContactEnergies(point.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
-      summary.written.push_back(outDir + "/disc_frc_contacts.csv");
-      // Default: the contact that dissipates most at the peak.
-      std::vector<int> loops = hysteresisContacts;
-      if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
-      writePeakTimeResponse(setup, point, peak, loops, outDir, summary);
-    }
-    if (peakStress.atHz > 0)
-      writePeakStress(peakStress, mesh, models, modelSpec, referencePointAt(setup, reference, peakStress.atHz),
-                      setup.excitationScale, outDir, comm, summary);
-    else
-      writePeakStress(peakStress, mesh, models, modelSpec, point, setup.excitationScale, outDir, comm, summary);
-  }
+  const auto sweep = readSweepOptions(d, plan.harmonicsCheckTo, checkpoints);
+  const auto hysteresisContacts = readHysteresisContacts(d, mesh, plan.spec);
+  auto solved = referenceStage(mesh, models, plan, sweep, outDir, comm, summary);
+  peakOutputsStage(mesh, models, plan, solved, hysteresisContacts, outDir, comm, summary);
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.
   auto studies = d.section("studies");
-  const std::vector<std::string> known{"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics",
-                                       "modes", "clearance"};
   Timer studiesTimer;
   int studyCurves = 0;
   std::map<std::string, std::vector<StudyPeak>> studyPeaks;  // for the peak studies' comparison
-  for (const auto& name : known) {
-    if (!studies.has(name)) continue;
-    const auto values = studies.getDoubleList(name, {});
-    if (values.empty()) throw InputError(studies.where(name), "needs a list of values");
-    post::SvgPlot plot("Study: " + name + " (engine order " + std::to_string(spec.engineOrder) + ")", "frequency (Hz)",
-                       "max |x(t)| of " + setup.dofNames[setup.outputDofs.front()]);
-    std::ostringstream table;
-    table.precision(10);
-    table << name << ",peak_hz,peak_max_abs,points,finished,seconds\n";
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      const double v = values[i];
-      DiscResponseSpec sv = spec;
-      const DiscReducedModels* m = &models;
-      DiscReducedModels varied;
-      if (name == "preload") sv.contact.preload = v;
-      else if (name == "mu") sv.contact.mu = v;
-      else if (name == "contact_stiffness") sv.contact.kn = v, sv.contact.kt = v;
-      else if (name == "force") sv.excitation.amplitude = spec.excitation.amplitude * v;
-      else if (name == "clearance") {
-        if (spec.gap.pairs.empty())
-          throw InputError(studies.where(name), "needs gap elements (disc_response/gap/pairs)");
-        sv.gap.clearance = v;
-      }
-      else if (name == "harmonics") {
-        sv.harmonics.clear();
-        for (int h = 0; h <= int(v); ++h) sv.harmonics.push_back(h);
-        for (int k : nodalDiametersFor(modelSpec.sectors, spec.engineOrder, sv.harmonics))
-          if (!models.models.count(k))
-            throw InputError(studies.where(name), "harmonic " + std::to_string(int(v)) + " needs nodal diameter " +
-                                                      std::to_string(k) + ": raise disc_response/harmonics to the "
-                                                      "study's largest value");
-      } else if (name == "loss_factor") varied = variedModels(models, v, 0), m = &varied;
-      else if (name == "modes") varied = variedModels(models, -1, int(v)), m = &varied;
-      std::ostringstream tag;
-      tag << "study_" << name << "_" << i;
-      Timer t;
-      // A value that reproduces the reference scene is the reference curve: its files are
-      // copied, not traced again (the loss factor and modes change the models: always traced).
-      const bool isReference = (name == "preload" && v == spec.contact.preload) ||
-                               (name == "mu" && v == spec.contact.mu) ||
-                               (name == "contact_stiffness" && v == spec.contact.kn && v == spec.contact.kt) ||
-                               (name == "force" && v == 1.0) ||
-                               (name == "clearance" && v == spec.gap.clearance) ||
-                               (name == "harmonics" && sv.harmonics == spec.harmonics);
-      std::optional<ForcedResponseSetup> traced;
-      if (!isReference) {
-        traced.emplace(makeDiscForcedResponse(mesh, *m, sv));
-        traced->whenNothingTraced = ForcedResponseSetup::WhenNothingTraced::Report;  // the table says so
-      }
-      const auto result = isReference ? reference : traceOne(*traced, tag.str());
-      if (isReference) {
-        if (comm->getRank() == 0)
-          for (const std::string ext : {".csv", ".h5", ".svg"}) {
-            if (!std::filesystem::exists(outDir + "/disc_frc" + ext)) continue;
-            AtomicFile copy(outDir + "/" + tag.str() + ext);
-            std::filesystem::copy_file(outDir + "/disc_frc" + ext, copy.tempPath(),
-                                       std::filesystem::copy_options::overwrite_existing);
-            copy.commit();
-          }
-        for (const std::string ext : {".h5", ".csv", ".svg"}) summary.written.push_back(outDir + "/" + tag.str() + ext);
-        std::ostringstream line;
-        line << tag.str() << ": " << name << " = " << v << " is the reference scene: disc_frc's curve, not traced again";
-        summary.computed.push_back(line.str());
-        log::info(line.str());
-      }
-      const Curve c = curveOf(isReference ? setup : *traced, result.branch);
-      std::ostringstream label;
-      label << name << " = " << v;
-      for (std::size_t k = 0; k < c.starts.size(); ++k) {  // one line per sweep, labelled once
-        const auto a = long(std::min(c.starts[k], c.hz.size()));
-        const auto b = long(k + 1 < c.starts.size() ? std::min(c.starts[k + 1], c.hz.size()) : c.hz.size());
-        if (b - a < 1) continue;
-        plot.addLine(std::vector<double>(c.hz.begin() + a, c.hz.begin() + b),
-                     std::vector<double>(c.peak.begin() + a, c.peak.begin() + b), post::SvgPlot::palette(int(i)),
-                     k == 0 ? label.str() : std::string());
-      }
-      ++studyCurves;
-      if (result.peak > 0) studyPeaks[name].push_back({v, result.peak, result.peakOmega});
-      table << v << "," << result.peakOmega / (2 * M_PI) << "," << result.peak << "," << result.branch.points.size()
-            << "," << (result.branch.finished ? 1 : 0) << "," << t.seconds() << "\n";
+  for (const char* name : {"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics", "modes",
+                           "clearance"})
+    if (studies.has(name)) {
+      std::vector<StudyPeak> peaks;
+      studyCurves += studyStage(studies, name, mesh, models, plan, solved, sweep, outDir, comm, summary, peaks);
+      if (!peaks.empty()) studyPeaks[name] = peaks;
     }
-    if (comm->getRank() == 0) {
-      plot.write(outDir + "/study_" + name + ".svg");
-      AtomicFile file(outDir + "/study_" + name + ".csv");
-      std::ofstream out(file.tempPath());
-      out << table.str();
-      out.close();
-      file.commit();
-    }
-    summary.written.push_back(outDir + "/study_" + name + ".svg");
-    summary.written.push_back(outDir + "/study_" + name + ".csv");
-  }
   studies.rejectUnknownKeys();
-  followDiscPeaks(peakStudies, mesh, models, spec, setup, reference, fromHz, toHz, studyPeaks, outDir, comm, summary);
+  followDiscPeaks(plan.peakStudies, mesh, models, plan.spec, solved.setup, solved.curve, solved.fromHz, solved.toHz,
+                  studyPeaks, outDir, comm, summary);
   d.rejectUnknownKeys();
   if (studyCurves > 0)
     summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),

@@ -68,7 +68,9 @@ RunManifest::~RunManifest() {
 void RunManifest::complete(const std::vector<std::string>& written) {
   std::ostringstream files;
   files << "finished: " << utcNow() << "\nfiles:\n";
-  for (const auto& f : written) files << "  - " << std::filesystem::path(f).filename().string() << "\n";
+  // Paths relative to the output directory (the reduced models live in a subdirectory).
+  for (const auto& f : written)
+    files << "  - " << std::filesystem::path(f).lexically_relative(dir_).generic_string() << "\n";
   write("complete", files.str());
   finished_ = true;
 }

@@ -40,19 +40,9 @@ std::string csvTable(const std::string& path, std::size_t rows) {
   return out.str();
 }
 
-}  // namespace
-
-void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary) {
-  std::ostringstream r;
-  r << "# Cyclone run report\n\nScene: `" << source << "`. Every figure below is a file in this directory.\n\n";
-  r << "## Summary\n\n";
-  for (const auto& line : summary.computed) r << "- " << line << "\n";
-  r << "\n";
-  if (!summary.stages.empty()) {
-    r << "## Error estimate against run time, per stage\n\n| stage | run time [s] | error estimate |\n|---|---|---|\n";
-    for (const auto& s : summary.stages) r << "| " << s.stage << " | " << s.seconds << " | " << s.errorEstimate << " |\n";
-    r << "\n";
-  }
+// The modal and reduced-model sections: Campbell and SAFE diagrams, resonances, the
+// reduced model's check.
+void modalSections(std::ostringstream& r, const std::string& outDir) {
   if (exists(outDir, "campbell.svg") || exists(outDir, "safe.svg")) {
     r << "## Modes: Campbell and SAFE diagrams\n\nPrestressed modes of every nodal diameter (`frequencies.csv`, "
          "`modes_<rpm>rpm.exo`).\n\n";
@@ -67,6 +57,11 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
          "the full FE model's (a complex solve per frequency), at the engine order's nodal diameter "
          "(`rom_check.csv`).\n\n![reduced model check](rom_check.svg)\n\n";
   }
+}
+
+// A forced-response curve with its harmonics check and contacts, the time domain at the
+// peak, and the stress and fatigue margin there.
+void responseSections(std::ostringstream& r, const std::string& outDir) {
   for (const char* frc : {"disc_frc", "frc"})
     if (exists(outDir, std::string(frc) + ".svg")) {
       r << "## Forced response\n\nHarmonic balance (AFT) traced by pseudo-arclength continuation (`" << frc
@@ -99,6 +94,11 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
          "![Goodman-Haigh diagram](disc_goodman.svg)\n\nThe worst nodes (`disc_peak_stress.csv`):\n\n"
       << csvTable(outDir + "/disc_peak_stress.csv", 8) << "\n";
   }
+}
+
+// The value-list studies' figures and tables, and the peaks followed over a parameter
+// (this run's only).
+void studySections(std::ostringstream& r, const std::string& outDir, const SceneSummary& summary) {
   bool studies = false;
   for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
     const auto name = entry.path().filename().string();
@@ -120,6 +120,24 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
       << "study at the same values beside it):\n\n![" << base << "](" << name << ")\n\n";
     if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";
   }
+}
+
+}  // namespace
+
+void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary) {
+  std::ostringstream r;
+  r << "# Cyclone run report\n\nScene: `" << source << "`. Every figure below is a file in this directory.\n\n";
+  r << "## Summary\n\n";
+  for (const auto& line : summary.computed) r << "- " << line << "\n";
+  r << "\n";
+  if (!summary.stages.empty()) {
+    r << "## Error estimate against run time, per stage\n\n| stage | run time [s] | error estimate |\n|---|---|---|\n";
+    for (const auto& s : summary.stages) r << "| " << s.stage << " | " << s.seconds << " | " << s.errorEstimate << " |\n";
+    r << "\n";
+  }
+  modalSections(r, outDir);
+  responseSections(r, outDir);
+  studySections(r, outDir, summary);
   r << "## Files\n\n";
   for (const auto& f : summary.written) r << "- `" << std::filesystem::path(f).filename().string() << "`\n";
   AtomicFile file(outDir + "/report.md");

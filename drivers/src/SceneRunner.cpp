@@ -19,6 +19,7 @@
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/cyclic/ModalSweep.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/AtomicFile.hpp"
@@ -36,9 +37,9 @@
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
 #include "cyclone/post/CampbellDiagram.hpp"
-#include "cyclone/post/ResponseCurveFile.hpp"
-#include "cyclone/post/ResultCheckpointDirectory.hpp"
-#include "cyclone/post/TraceCheckpointDirectory.hpp"
+#include "cyclone/io/ResponseCurveFile.hpp"
+#include "cyclone/io/ResultCheckpointDirectory.hpp"
+#include "cyclone/io/TraceCheckpointDirectory.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/post/Mac.hpp"
 #include "cyclone/core/Error.hpp"
@@ -56,6 +57,34 @@
 namespace cyclone::scenes {
 
 const char* demoScene() { return demoSceneYaml(); }
+
+cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback) {
+  const std::string value = section.getString("prestress", fallback);
+  if (value == "linear") return cyclic::PrestressKind::Linear;
+  if (value == "nonlinear") return cyclic::PrestressKind::Nonlinear;
+  if (value == "none") return cyclic::PrestressKind::None;
+  throw InputError(section.where("prestress"), "unknown prestress '" + value + "' (use linear, nonlinear or none)");
+}
+
+std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
+  std::vector<int> list = section.getIntList("harmonics", {defaultMax});
+  if (list.size() == 1) {  // a single number H means 0..H
+    const int H = list[0];
+    if (H < 1) throw InputError(section.where("harmonics"), "needs at least harmonic 1 (a single number H means 0..H)");
+    list.clear();
+    for (int h = 0; h <= H; ++h) list.push_back(h);
+  }
+  return list;
+}
+
+response::ForcedResponseSetup::Stability readStability(SceneSection& section) {
+  using Stability = response::ForcedResponseSetup::Stability;
+  const std::string value = section.getString("stability", "auto");
+  if (value == "auto") return Stability::Auto;
+  if (value == "true") return Stability::Always;
+  if (value == "false") return Stability::Never;
+  throw InputError(section.where("stability"), "must be auto, true or false");
+}
 
 int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic) {
   const int upTo = section.getInt("harmonics_check_to", 0);
@@ -198,8 +227,140 @@ std::string rpmTag(double rpm) {
   return s.str();
 }
 
-// Cyclic modal analysis: per speed, optional prestress (k = 0), then modes for
-// the requested nodal diameters; frequencies.csv, modes and prestress in Exodus.
+// The summary's line for one speed's modes, with the rigid-body modes counted (those
+// below 1e-4 of the highest frequency computed for their ND).
+std::string speedModesLine(const cyclic::SpeedModes& sm) {
+  std::ostringstream line;
+  line << "modes at " << sm.rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
+       << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";
+  std::string rigid;
+  for (const auto& hm : sm.harmonics) {
+    int count = 0;
+    for (double f : hm.frequenciesHz) count += f < 1e-4 * hm.frequenciesHz.back();
+    if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.harmonic) + ": " +
+                        std::to_string(count);
+  }
+  if (!rigid.empty()) line << "; rigid-body modes " << rigid;
+  return line.str();
+}
+
+// The modal section read onto a sweep over speeds (keys checked before any work), and
+// whether the MAC between the lowest and highest speed is asked for.
+cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh, int sectors,
+                                         const fe::IsotropicElastic& material,
+                                         const std::vector<std::string>& fixedSets, const std::string& outDir,
+                                         bool& writeMac) {
+  cyclic::ModalSweepProblem sweep;
+  auto& problem = sweep.modes;
+  problem.material = material;
+  problem.fixedNodeSets = fixedSets;
+  problem.harmonics = m.getIntList("nodal_diameters", {});
+  problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
+  const std::string eigenSolver = m.getString("eigen_solver", "shift_invert");
+  if (eigenSolver == "lobpcg") problem.method = solvers::EigenMethod::Lobpcg;
+  else if (eigenSolver != "shift_invert")
+    throw InputError(m.where("eigen_solver"), "unknown eigen solver '" + eigenSolver +
+                                                  "' (use shift_invert: CHOLMOD factorization; or lobpcg: LOBPCG + "
+                                                  "MueLu, no factorization, for meshes too big to factor)");
+  if (problem.method == solvers::EigenMethod::Lobpcg) {
+    if (m.has("shift"))
+      throw InputError(m.where("shift"), "applies to eigen_solver shift_invert only (lobpcg takes no shift)");
+    if (fixedSets.empty())
+      throw InputError(m.where("eigen_solver"), "lobpcg needs a constrained model (constraints/fixed_node_sets): "
+                                                "rigid-body modes need shift_invert");
+  }
+  // Without a shift the solver picks one (0 when K factors; below the first elastic
+  // eigenvalue when rigid-body modes exist).
+  problem.shift = m.has("shift") ? m.getDouble("shift", 0.0) : solvers::ModalOptions::automaticShift();
+  // Each nodal diameter's modes are kept as solved: a killed sweep resumed with --resume
+  // reads them back (the directory is emptied at the start of any other run).
+  problem.checkpoints = std::make_shared<io::ResultCheckpointDirectory>(outDir + "/checkpoints");
+  const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
+  const auto prestress = readPrestressKind(m, "linear");
+  const std::string macChoice = m.getString("mac", "none");
+  if (macChoice != "speeds" && macChoice != "none")
+    throw InputError(m.where("mac"), "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'");
+  writeMac = macChoice == "speeds";
+  m.rejectUnknownKeys();
+  for (int k : problem.harmonics)
+    if (k < 0 || k > sectors / 2)
+      throw InputError(m.where("nodal_diameters"), "nodal diameter " + std::to_string(k) + " is outside 0.." +
+                                                        std::to_string(sectors / 2) + " for " +
+                                                        std::to_string(sectors) + " sectors");
+  for (std::size_t i = 0; i < problem.harmonics.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (problem.harmonics[i] == problem.harmonics[j])
+        throw InputError(m.where("nodal_diameters"),
+                         "nodal diameter " + std::to_string(problem.harmonics[i]) + " is listed twice");
+  if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
+  // The eigen-solver's Krylov space, about 3 modes_per_nd vectors, must fit in the
+  // sector's 3 x nodes DOFs (100000 reached Anasazi and came back as its internal
+  // text: issue 20).
+  if (const long nodes = long(mesh.numNodes()); problem.modesPerHarmonic > nodes / 2)
+    throw InputError(m.where("modes_per_nd"), std::to_string(problem.modesPerHarmonic) +
+                                                  " is more than half the sector's " + std::to_string(nodes) +
+                                                  " nodes: the eigen-solver's space of about 3 x modes_per_nd "
+                                                  "vectors must fit in its 3 x nodes DOFs");
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    if (!(speeds[i] >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
+    if (i > 0 && !(speeds[i] > speeds[i - 1])) throw InputError(m.where("speeds_rpm"), "speeds must increase");
+  }
+  if (speeds.empty()) throw InputError(m.where("speeds_rpm"), "needs at least one speed");
+  sweep.speedsRpm = speeds;
+  sweep.prestress = prestress;
+  return sweep;
+}
+
+// MAC of each nodal diameter's families, lowest against highest speed: how much the
+// prestress changed the mode shapes (diagonal near 1: same shapes, shifted frequencies).
+void writeSpeedMac(const std::vector<cyclic::SpeedModes>& results, const std::string& outDir, bool writer,
+                   SceneSummary& summary) {
+  for (std::size_t h = 0; h < results.front().harmonics.size(); ++h) {
+    const auto& a = results.front().harmonics[h];
+    const auto mac = post::familyMac(a, results.back().harmonics[h]);
+    const std::string base = outDir + "/mac_nd" + std::to_string(a.harmonic);
+    if (writer) {
+      post::writeMacCsv(base + ".csv", mac);
+      post::writeMacSvg(base + ".svg", mac,
+                        "MAC ND " + std::to_string(a.harmonic) + ": " + rpmTag(results.front().rpm) + " (rows) vs " +
+                            rpmTag(results.back().rpm) + " (columns)");
+    }
+    summary.written.push_back(base + ".csv");
+    summary.written.push_back(base + ".svg");
+  }
+}
+
+// Diagrams: SAFE at any speed set; Campbell and resonances need a speed range.
+void writeDiagrams(const std::vector<cyclic::SpeedModes>& results, int sectors, const std::vector<int>& engineOrders,
+                   const std::string& outDir, bool writer, SceneSummary& summary) {
+  const auto branches = post::trackFamilies(results);
+  const auto resonances = results.size() > 1 ? post::findResonances(branches, sectors, engineOrders)
+                                            : std::vector<post::Resonance>{};
+  if (writer) post::writeSafeSvg(outDir + "/safe.svg", branches, sectors, engineOrders, resonances);
+  summary.written.push_back(outDir + "/safe.svg");
+  if (results.size() > 1) {
+    if (writer) {
+      post::writeCampbellSvg(outDir + "/campbell.svg", branches, engineOrders, resonances);
+      post::writeCampbellCsv(outDir + "/campbell.csv", branches);
+      post::writeResonancesCsv(outDir + "/resonances.csv", resonances);
+    }
+    for (const char* f : {"/campbell.svg", "/campbell.csv", "/resonances.csv"}) summary.written.push_back(outDir + f);
+    std::ostringstream line;
+    line << "diagrams: " << branches.size() << " branches tracked by MAC, " << resonances.size()
+         << " resonances in " << results.front().rpm << ".." << results.back().rpm << " rpm";
+    for (std::size_t i = 0; i < resonances.size() && i < 3; ++i)
+      line << (i ? "; " : ": ") << "EO " << resonances[i].engineOrder << " ND " << resonances[i].nd << " family "
+           << resonances[i].family << " at " << std::round(resonances[i].rpm) << " rpm, "
+           << std::round(resonances[i].freqHz) << " Hz";
+    summary.computed.push_back(line.str());
+  } else {
+    log::info("one speed: SAFE diagram only (a Campbell diagram and resonances need speeds_rpm with 2 or more values)");
+  }
+}
+
+// Cyclic modal analysis: per speed, optional prestress (k = 0), then modes for the
+// requested nodal diameters; frequencies.csv, modes and prestress in Exodus, MAC,
+// Campbell and SAFE diagrams.
 void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir,
                 linalg::CommPtr comm, SceneSummary& summary) {
   const auto material = readMaterial(scene.section("material"));
@@ -225,62 +386,10 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   }
 
   auto m = scene.section("modal");
-  cyclic::CyclicModalProblem problem;
-  problem.material = material;
-  problem.fixedNodeSets = fixedSets;
-  problem.harmonics = m.getIntList("nodal_diameters", {});
-  problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
-  const std::string eigenSolver = m.getString("eigen_solver", "shift_invert");
-  if (eigenSolver == "lobpcg") problem.method = solvers::EigenMethod::Lobpcg;
-  else if (eigenSolver != "shift_invert")
-    throw InputError(m.where("eigen_solver"), "unknown eigen solver '" + eigenSolver +
-                                                  "' (use shift_invert: CHOLMOD factorization; or lobpcg: LOBPCG + "
-                                                  "MueLu, no factorization, for meshes too big to factor)");
-  if (problem.method == solvers::EigenMethod::Lobpcg) {
-    if (m.has("shift"))
-      throw InputError(m.where("shift"), "applies to eigen_solver shift_invert only (lobpcg takes no shift)");
-    if (fixedSets.empty())
-      throw InputError(m.where("eigen_solver"), "lobpcg needs a constrained model (constraints/fixed_node_sets): "
-                                                "rigid-body modes need shift_invert");
-  }
-  // Without a shift the solver picks one (0 when K factors; below the first elastic
-  // eigenvalue when rigid-body modes exist).
-  problem.shift = m.has("shift") ? m.getDouble("shift", 0.0) : solvers::ModalOptions::automaticShift();
-  // Each nodal diameter's modes are kept as solved: a killed sweep resumed with --resume
-  // reads them back (the directory is emptied at the start of any other run).
-  problem.checkpoints = std::make_shared<post::ResultCheckpointDirectory>(outDir + "/checkpoints");
-  const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
-  const std::string prestress = m.getString("prestress", "linear");
-  const std::string macChoice = m.getString("mac", "none");
-  if (macChoice != "speeds" && macChoice != "none")
-    throw InputError(m.where("mac"), "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'");
-  const bool writeMac = macChoice == "speeds";
-  if (prestress != "linear" && prestress != "nonlinear" && prestress != "none")
-    throw InputError(m.where("prestress"), "unknown prestress '" + prestress + "' (use linear, nonlinear or none)");
-  m.rejectUnknownKeys();
-  for (int k : problem.harmonics)
-    if (k < 0 || k > sectors / 2)
-      throw InputError(m.where("nodal_diameters"), "nodal diameter " + std::to_string(k) + " is outside 0.." +
-                                                        std::to_string(sectors / 2) + " for " +
-                                                        std::to_string(sectors) + " sectors");
-  for (std::size_t i = 0; i < problem.harmonics.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (problem.harmonics[i] == problem.harmonics[j])
-        throw InputError(m.where("nodal_diameters"),
-                         "nodal diameter " + std::to_string(problem.harmonics[i]) + " is listed twice");
-  if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
-  // The eigen-solver's Krylov space, about 3 modes_per_nd vectors, must fit in the
-  // sector's 3 x nodes DOFs (100000 reached Anasazi and came back as its internal
-  // text: issue 20).
-  if (const long nodes = long(mesh.numNodes()); problem.modesPerHarmonic > nodes / 2)
-    throw InputError(m.where("modes_per_nd"), std::to_string(problem.modesPerHarmonic) +
-                                                  " is more than half the sector's " + std::to_string(nodes) +
-                                                  " nodes: the eigen-solver's space of about 3 x modes_per_nd "
-                                                  "vectors must fit in its 3 x nodes DOFs");
-  for (std::size_t i = 0; i < speeds.size(); ++i) {
-    if (!(speeds[i] >= 0)) throw InputError(m.where("speeds_rpm"), "speeds must be non-negative");
-    if (i > 0 && !(speeds[i] > speeds[i - 1])) throw InputError(m.where("speeds_rpm"), "speeds must increase");
-  }
+  bool writeMac = false;
+  auto sweep = readModalSweep(m, mesh, sectors, material, fixedSets, outDir, writeMac);
+  sweep.axis.point = Eigen::Vector3d(ap[0], ap[1], ap[2]);
+  sweep.axis.direction = Eigen::Vector3d(ad[0], ad[1], ad[2]);
   auto dg = scene.section("diagrams");
   std::vector<int> defaultOrders;
   for (int eo = 1; eo <= sectors; ++eo) defaultOrders.push_back(eo);
@@ -293,91 +402,27 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
 
   const bool writer = comm->getRank() == 0;
   logPeakMemory("the mesh", comm);
-  std::vector<cyclic::SpeedModes> results;
-  for (double rpm : speeds) {
-    cyclic::PrestressState state;
-    const cyclic::PrestressState* used = nullptr;
-    if (prestress != "none" && rpm > 0) {
-      fe::Axis feAxis;
-      feAxis.point = Eigen::Vector3d(ap[0], ap[1], ap[2]);
-      feAxis.direction = Eigen::Vector3d(ad[0], ad[1], ad[2]);
-      const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, fixedSets);
-      state = prestress == "linear" ? cyclic::solveLinearPrestress(mesh, k0, material, rpm, feAxis, comm)
-                                    : cyclic::solveNonlinearPrestress(mesh, k0, material, rpm, feAxis, comm);
-      used = &state;
+  // Each speed's prestress and modes written as the sweep goes (the prestress is not kept).
+  const auto writeSpeed = [&](const cyclic::PrestressState* state, const cyclic::SpeedModes& sm) {
+    const double rpm = sm.rpm;
+    if (state) {
       const std::string path = outDir + "/prestress_" + rpmTag(rpm) + ".exo";
-      if (writer) cyclic::writePrestressExodus(path, mesh, state);
+      if (writer) cyclic::writePrestressExodus(path, mesh, *state);
       summary.written.push_back(path);
-      logPeakMemory("the prestress at " + rpmTag(rpm), comm);
     }
-    problem.prestress = used;
-    log::info("modes at " + rpmTag(rpm) + (used ? " (prestressed, spin softening; Coriolis neglected)" : ""));
-    cyclic::SpeedModes sm{rpm, cyclic::solveCyclicModes(mesh, sector, problem, comm)};
     const std::string path = outDir + "/modes_" + rpmTag(rpm) + ".exo";
     if (writer) cyclic::writeModesExodus(path, mesh, rpm, sm.harmonics);
     summary.written.push_back(path);
-    logPeakMemory("the modes at " + rpmTag(rpm), comm);
-    std::ostringstream line;
-    line << "modes at " << rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
-         << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";
-    // Rigid-body modes: frequencies below 1e-4 of the highest one computed for their ND.
-    std::string rigid;
-    for (const auto& hm : sm.harmonics) {
-      int count = 0;
-      for (double f : hm.frequenciesHz) count += f < 1e-4 * hm.frequenciesHz.back();
-      if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.harmonic) + ": " +
-                          std::to_string(count);
-    }
-    if (!rigid.empty()) line << "; rigid-body modes " << rigid;
-    summary.computed.push_back(line.str());
-    results.push_back(std::move(sm));
-  }
+    logPeakMemory("the prestress and modes at " + rpmTag(rpm), comm);
+    summary.computed.push_back(speedModesLine(sm));
+  };
+  const auto results = cyclic::solveModalSweep(mesh, sector, sweep, comm, writeSpeed);
   const std::string csv = outDir + "/frequencies.csv";
   if (writer) cyclic::writeFrequenciesCsv(csv, results);
   summary.written.push_back(csv);
 
-  // MAC of each nodal diameter's families, lowest against highest speed: how much the
-  // prestress changed the mode shapes (diagonal near 1: same shapes, shifted frequencies).
-  if (writeMac && results.size() > 1) {
-    for (std::size_t h = 0; h < results.front().harmonics.size(); ++h) {
-      const auto& a = results.front().harmonics[h];
-      const auto mac = post::familyMac(a, results.back().harmonics[h]);
-      const std::string base = outDir + "/mac_nd" + std::to_string(a.harmonic);
-      if (writer) {
-        post::writeMacCsv(base + ".csv", mac);
-        post::writeMacSvg(base + ".svg", mac,
-                          "MAC ND " + std::to_string(a.harmonic) + ": " + rpmTag(results.front().rpm) + " (rows) vs " +
-                              rpmTag(results.back().rpm) + " (columns)");
-      }
-      summary.written.push_back(base + ".csv");
-      summary.written.push_back(base + ".svg");
-    }
-  }
-
-  // Diagrams: SAFE at any speed set; Campbell and resonances need a speed range.
-  const auto branches = post::trackFamilies(results);
-  const auto resonances = speeds.size() > 1 ? post::findResonances(branches, sectors, engineOrders)
-                                            : std::vector<post::Resonance>{};
-  if (writer) post::writeSafeSvg(outDir + "/safe.svg", branches, sectors, engineOrders, resonances);
-  summary.written.push_back(outDir + "/safe.svg");
-  if (speeds.size() > 1) {
-    if (writer) {
-      post::writeCampbellSvg(outDir + "/campbell.svg", branches, engineOrders, resonances);
-      post::writeCampbellCsv(outDir + "/campbell.csv", branches);
-      post::writeResonancesCsv(outDir + "/resonances.csv", resonances);
-    }
-    for (const char* f : {"/campbell.svg", "/campbell.csv", "/resonances.csv"}) summary.written.push_back(outDir + f);
-    std::ostringstream line;
-    line << "diagrams: " << branches.size() << " branches tracked by MAC, " << resonances.size()
-         << " resonances in " << speeds.front() << ".." << speeds.back() << " rpm";
-    for (std::size_t i = 0; i < resonances.size() && i < 3; ++i)
-      line << (i ? "; " : ": ") << "EO " << resonances[i].engineOrder << " ND " << resonances[i].nd << " family "
-           << resonances[i].family << " at " << std::round(resonances[i].rpm) << " rpm, "
-           << std::round(resonances[i].freqHz) << " Hz";
-    summary.computed.push_back(line.str());
-  } else {
-    log::info("one speed: SAFE diagram only (a Campbell diagram and resonances need speeds_rpm with 2 or more values)");
-  }
+  if (writeMac && results.size() > 1) writeSpeedMac(results, outDir, writer, summary);
+  writeDiagrams(results, sectors, engineOrders, outDir, writer, summary);
 }
 
 Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, bool required) {
@@ -454,12 +499,27 @@ void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& 
     throw InputError(cs.where("line_search"), "is for engine: loca (the predictor-corrector backtracks by itself)");
 }
 
-ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
+namespace {
+
+// A matrix scene's `system` section: M, C (with Rayleigh and modal damping), K, the DOF
+// names and the next-sector coupling of a cyclic system, checked for physics.
+struct MatrixSystemInput {
+  int n = 0;
+  Eigen::MatrixXd M, C, K;
+  std::vector<std::string> dofNames;
+  hbm::CyclicCoupling coupling;
+  bool cyclic() const { return coupling.sectors > 1; }
+};
+
+MatrixSystemInput readMatrixSystem(SceneSection& scene) {
+  MatrixSystemInput in;
   auto sys = scene.section("system");
-  const int n = sys.getInt("dofs", 0);
+  const int n = in.n = sys.getInt("dofs", 0);
   if (n < 1) throw InputError(sys.where("dofs"), "is required: the number of DOFs (>= 1)");
-  const Eigen::MatrixXd M = squareMatrix(sys, "M", n, true), K = squareMatrix(sys, "K", n, true);
-  Eigen::MatrixXd C = squareMatrix(sys, "C", n, false);
+  in.M = squareMatrix(sys, "M", n, true), in.K = squareMatrix(sys, "K", n, true);
+  in.C = squareMatrix(sys, "C", n, false);
+  const auto &M = in.M, &K = in.K;
+  auto& C = in.C;
   if ((M - M.transpose()).norm() > 1e-12 * M.norm() || (K - K.transpose()).norm() > 1e-12 * K.norm())
     throw InputError(sys.location(), "M and K must be symmetric");
   // Damping on top of C: Rayleigh a M + b K, or a modal damping ratio for every
@@ -479,10 +539,10 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     const Eigen::VectorXd c = 2 * zeta * modes.eigenvalues().cwiseMax(0).cwiseSqrt();
     C += MPhi * c.asDiagonal() * MPhi.transpose();
   }
-  std::vector<std::string> dofNames = sys.getStringList("dof_names", {});
-  if (!dofNames.empty() && int(dofNames.size()) != n)
+  in.dofNames = sys.getStringList("dof_names", {});
+  if (!in.dofNames.empty() && int(in.dofNames.size()) != n)
     throw InputError(sys.where("dof_names"), "needs one name per DOF (" + std::to_string(n) + ")");
-  hbm::CyclicCoupling coupling;
+  auto& coupling = in.coupling;
   coupling.sectors = sys.getInt("sectors", 1);
   if (coupling.sectors < 1) throw InputError(sys.where("sectors"), "must be >= 1 (1: not cyclic)");
   const bool cyclic = coupling.sectors > 1;
@@ -508,21 +568,47 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                        "symmetric part has the eigenvalue " + std::to_string(lowest) + " < 0");
   }
 
-  std::vector<int> harmonicList;
-  if (scene.has("harmonics")) {
-    harmonicList = scene.getIntList("harmonics", {});
-    if (harmonicList.size() == 1) {  // a single number H means 0..H
-      const int H = harmonicList[0];
-      harmonicList.clear();
-      for (int h = 0; h <= H; ++h) harmonicList.push_back(h);
-    }
-  } else {
-    harmonicList = {0, 1, 2, 3, 4, 5, 6, 7};
-  }
-  const hbm::HarmonicSet harmonics(harmonicList);
+  return in;
+}
 
-  // Elements first: the default sample count depends on them (friction and
-  // gaps need many samples per period to place their events).
+// A nonlinear element of `nonlinear_elements` and where it acts: w = W^T x (+ W_next^T
+// x_next across the sector boundary).
+struct PlacedElement {
+  std::shared_ptr<const hbm::NonlinearElement> element;
+  Eigen::MatrixXd W, Wnext;
+};
+
+std::shared_ptr<const hbm::NonlinearElement> readElementLaw(SceneSection& e) {
+  const std::string type = e.getString("type", "");
+  auto scalar = [](std::shared_ptr<const hbm::ScalarElement> s) {
+    return std::make_shared<hbm::ScalarElementAdapter>(std::move(s));
+  };
+  if (type == "cubic") return scalar(std::make_shared<hbm::CubicSpring>(e.requireDouble("k3")));
+  if (type == "unilateral")
+    return scalar(std::make_shared<hbm::UnilateralSpring>(e.requireDouble("k"), e.getDouble("gap", 0.0)));
+  if (type == "quadratic_damper") return scalar(std::make_shared<hbm::QuadraticDamper>(e.requireDouble("c2")));
+  if (type == "jenkins")
+    return scalar(std::make_shared<hbm::JenkinsElement>(e.requireDouble("kt"), e.requireDouble("slip_force")));
+  if (type == "friction2d" || type == "friction3d") {
+    hbm::FrictionContactParameters p;
+    p.tangentialDirections = type == "friction2d" ? 1 : 2;
+    p.kt = e.requireDouble("kt");
+    p.kn = e.getDouble("kn", 0.0);
+    p.mu = e.requireDouble("mu");
+    p.preload = e.getDouble("preload", 0.0);
+    try {
+      return std::make_shared<hbm::FrictionContact>(p);
+    } catch (const InputError& err) {
+      throw InputError(e.location(), err.what());
+    }
+  }
+  throw InputError(e.where("type"), "unknown element type '" + type +
+                                        "' (cubic, unilateral, quadratic_damper, jenkins, friction2d, friction3d)");
+}
+
+std::vector<PlacedElement> readNonlinearElements(SceneSection& scene, const MatrixSystemInput& in,
+                                                 std::vector<std::string>& names) {
+  const int n = in.n;
   auto matrixOf = [&](SceneSection& e, const std::string& key, int d) {
     const auto v = e.getDoubleList(key, {});
     if (int(v.size()) != n * d)
@@ -531,43 +617,13 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                          " DOFs one after another (element coordinates in order)");
     return Eigen::Map<const Eigen::MatrixXd>(v.data(), n, d).eval();
   };
-  struct Placed {
-    std::shared_ptr<const hbm::NonlinearElement> element;
-    Eigen::MatrixXd W, Wnext;
-  };
-  std::vector<Placed> placed;
-  std::vector<std::string> elementNames;
+  std::vector<PlacedElement> placed;
   auto elements = scene.section("nonlinear_elements");
   for (const auto& name : elements.sectionNames()) {
     auto e = elements.section(name);
     const std::string type = e.getString("type", "");
-    std::shared_ptr<const hbm::NonlinearElement> element;
-    auto scalar = [](std::shared_ptr<const hbm::ScalarElement> s) {
-      return std::make_shared<hbm::ScalarElementAdapter>(std::move(s));
-    };
-    if (type == "cubic") element = scalar(std::make_shared<hbm::CubicSpring>(e.requireDouble("k3")));
-    else if (type == "unilateral")
-      element = scalar(std::make_shared<hbm::UnilateralSpring>(e.requireDouble("k"), e.getDouble("gap", 0.0)));
-    else if (type == "quadratic_damper") element = scalar(std::make_shared<hbm::QuadraticDamper>(e.requireDouble("c2")));
-    else if (type == "jenkins")
-      element = scalar(std::make_shared<hbm::JenkinsElement>(e.requireDouble("kt"), e.requireDouble("slip_force")));
-    else if (type == "friction2d" || type == "friction3d") {
-      hbm::FrictionContactParameters p;
-      p.tangentialDirections = type == "friction2d" ? 1 : 2;
-      p.kt = e.requireDouble("kt");
-      p.kn = e.getDouble("kn", 0.0);
-      p.mu = e.requireDouble("mu");
-      p.preload = e.getDouble("preload", 0.0);
-      try {
-        element = std::make_shared<hbm::FrictionContact>(p);
-      } catch (const InputError& err) {
-        throw InputError(e.location(), err.what());
-      }
-    } else
-      throw InputError(e.where("type"), "unknown element type '" + type +
-                                            "' (cubic, unilateral, quadratic_damper, jenkins, friction2d, friction3d)");
-    const int d = element->dimension();
-    Placed pl{element, {}, {}};
+    PlacedElement pl{readElementLaw(e), {}, {}};
+    const int d = pl.element->dimension();
     if (e.has("direction") && e.has("W"))
       throw InputError(e.location(), "give either direction (one coordinate) or W, not both");
     if (e.has("direction")) {
@@ -580,66 +636,42 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                          std::to_string(n) + " numbers): w = W^T x");
     }
     if (e.has("W_next")) {
-      if (!cyclic) throw InputError(e.where("W_next"), "joins a sector to the next one: the system must be cyclic");
+      if (!in.cyclic()) throw InputError(e.where("W_next"), "joins a sector to the next one: the system must be cyclic");
       pl.Wnext = matrixOf(e, "W_next", d);
     }
     e.rejectUnknownKeys();
     placed.push_back(std::move(pl));
-    elementNames.push_back(name);
+    names.push_back(name);
   }
   elements.rejectUnknownKeys();
-  int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
-  for (const auto& p : placed) recommended = std::max(recommended, p.element->recommendedSamples());
-  const int samples = scene.getInt("samples", recommended);
-  if (samples < 1 || samples > kMaxSamples)
-    throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in 1.." +
-                                                 std::to_string(kMaxSamples) + " time samples per period (every "
-                                                 "residual costs in proportion; the default here is " +
-                                                 std::to_string(recommended) + ")");
+  return placed;
+}
 
-  ForcedResponseSetup setup;
-  setup.elementNames = elementNames;
-  setup.dofNames = dofNames;
-  for (int d = int(setup.dofNames.size()); d < n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));
-  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, harmonics, samples);
-  auto& hb = *setup.system;
-
-  auto ex = scene.section("excitation");
-  const auto excitations = ex.sectionNames();
-  if (excitations.empty()) throw InputError(ex.location(), "needs at least one named force, e.g. f: {dof: 0, cos: 1.0}");
+// The engine order of the excitation's forces (one travelling wave), into the coupling.
+void readEngineOrder(SceneSection& ex, MatrixSystemInput& in) {
   bool haveOrder = false;
-  for (const auto& name : excitations) {
+  for (const auto& name : ex.sectionNames()) {
     auto f = ex.section(name);
-    if (f.has("engine_order")) {
-      if (!cyclic) throw InputError(f.where("engine_order"), "is for cyclic systems (system: sectors >= 2)");
-      const int eo = f.getInt("engine_order", 0);
-      if (haveOrder && eo != coupling.engineOrder)
-        throw InputError(f.where("engine_order"),
-                         "differs from another force's (" + std::to_string(coupling.engineOrder) +
-                             "): the cyclic reduction needs one travelling wave");
-      coupling.engineOrder = eo, haveOrder = true;
-    }
+    if (!f.has("engine_order")) continue;
+    if (!in.cyclic()) throw InputError(f.where("engine_order"), "is for cyclic systems (system: sectors >= 2)");
+    const int eo = f.getInt("engine_order", 0);
+    if (haveOrder && eo != in.coupling.engineOrder)
+      throw InputError(f.where("engine_order"), "differs from another force's (" +
+                                                    std::to_string(in.coupling.engineOrder) +
+                                                    "): the cyclic reduction needs one travelling wave");
+    in.coupling.engineOrder = eo, haveOrder = true;
   }
-  if (cyclic && !haveOrder)
+  if (in.cyclic() && !haveOrder)
     throw InputError(ex.location(), "a cyclic system needs the travelling wave's engine_order on its forces");
-  if (cyclic) {
-    hb.setCyclic(coupling);
-    // An engine order outside 0..N/2 excites the nodal diameter it folds to (issue 20:
-    // 100 on 24 sectors was accepted without a word; the disc scenes say it).
-    const int N = coupling.sectors, eo = coupling.engineOrder;
-    if (eo < 0 || eo > N / 2) {
-      std::ostringstream msg;
-      msg << "engine order " << eo << " on " << N << " sectors excites nodal diameter " << hb.nodalDiameter(1)
-          << " (the engine order folds: " << eo << " mod " << N << " = " << ((eo % N) + N) % N
-          << ", and k and N - k are the same nodal diameter travelling the other way)";
-      setup.notes.push_back(msg.str());
-    }
-  }
-  for (auto& p : placed) hb.addElement(p.element, p.W, p.Wnext);
-  for (const auto& name : excitations) {
+}
+
+// The excitation's forces (cos/sin coefficients, or amplitude A and phase phi: A cos(h w t
+// + phi)), its scale, and the static loads.
+void readForces(SceneSection& scene, SceneSection& ex, ForcedResponseSetup& setup) {
+  auto& hb = *setup.system;
+  for (const auto& name : ex.sectionNames()) {
     auto f = ex.section(name);
-    if (f.has("engine_order")) f.getInt("engine_order", 0);  // read above
-    // cos/sin coefficients, or amplitude A and phase phi (radians): A cos(h w t + phi).
+    if (f.has("engine_order")) f.getInt("engine_order", 0);  // read with the system
     double c = f.getDouble("cos", 0.0), sn = f.getDouble("sin", 0.0);
     if (f.has("amplitude")) {
       if (f.has("cos") || f.has("sin"))
@@ -666,8 +698,11 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     l.rejectUnknownKeys();
   }
   statics.rejectUnknownKeys();
+}
 
-  auto cs = scene.section("continuation");
+// The continuation section: the parameter (and the fixed frequency where it is not the
+// frequency), the range, the engine and its steps.
+void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
   auto& opt = setup.continuation;
   const std::string parameter = cs.getString("parameter", "omega");
   if (parameter == "omega") {
@@ -716,159 +751,58 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
     throw InputError(cs.location(), "the frequency range must be positive");
-  auto out = scene.section("output");
-  setup.outputDofs = out.getIntList("dofs", {0});
-  const auto& dofs = setup.outputDofs;
-  setup.stability = out.getString("stability", "auto");
-  if (setup.stability != "auto" && setup.stability != "true" && setup.stability != "false")
-    throw InputError(out.where("stability"), "must be auto, true or false");
-  setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic());
-  out.rejectUnknownKeys();
-  for (int d : dofs)
-    if (d < 0 || d >= n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");
-
-  return setup;
 }
 
-namespace {
-// Residual rows are divided by the size of the forces acting on them: the
-// mean (harmonic 0) rows by the static loads and mean excitation, the others
-// by the dynamic excitation. The continuation's tolerance is then relative,
-// and a 1e9 N preload neither swamps a 10 N excitation nor is held to its
-// absolute accuracy.
-Eigen::VectorXd forceScale(const hbm::HarmonicBalanceSystem& hb, double excitationScale) {
-  const auto& H = hb.aft().harmonics();
-  const int n = hb.numDofs(), nc = hb.numCoefficients();
-  const Eigen::VectorXd F = std::abs(excitationScale) * hb.excitation();
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(n * nc), dynamic = mean;
-  for (int a = 0; a < n; ++a)
-    for (int k = 0; k < nc; ++k) {
-      const bool isMean = H.contains(0) && k == H.cosIndex(0);
-      (isMean ? mean : dynamic)(a * nc + k) = F(a * nc + k) + (isMean ? hb.staticLoad()(a * nc + k) : 0.0);
-    }
-  double f0 = mean.norm(), fd = dynamic.norm();
-  if (f0 == 0) f0 = fd > 0 ? fd : 1.0;
-  if (fd == 0) fd = f0;
-  Eigen::VectorXd D = Eigen::VectorXd::Constant(n * nc, fd);
-  if (H.contains(0))
-    for (int a = 0; a < n; ++a) D(a * nc + H.cosIndex(0)) = f0;
-  return D;
-}
 }  // namespace
 
-continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& hb,
-                                                      ForcedResponseSetup::Parameter parameter, double omega,
-                                                      double excitationScale) {
-  if (parameter != ForcedResponseSetup::Parameter::Omega && parameter != ForcedResponseSetup::Parameter::ForceScale)
-    throw InputError("continuation", "element and damping parameters need the scene's setup: continuationProblem(setup)");
-  const bool byForce = parameter == ForcedResponseSetup::Parameter::ForceScale;
-  continuation::ContinuationProblem problem;
-  problem.size = hb.numUnknowns();
-  const double s = excitationScale;
-  const Eigen::VectorXd f = forceScale(hb, byForce ? 1.0 : s);
-  problem.residual = [&hb, byForce, omega, s, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
-    hb.residual(X, byForce ? omega : p, R, nullptr, byForce ? p : s);
-    R.array() /= f.array();
-  };
-  problem.jacobian = [&hb, byForce, omega, s, f](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
-    Eigen::VectorXd R;
-    hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : s);
-    J = f.cwiseInverse().asDiagonal() * J;
-  };
-  return problem;
-}
-
-void selectElementParameter(ForcedResponseSetup& setup, const std::string& element, const std::string& parameter,
-                            double probe) {
-  setup.parameter = ForcedResponseSetup::Parameter::ElementParameter;
-  setup.elementParameter = parameter;
-  setup.parameterElements.clear();
-  setup.baseElements.clear();
-  for (std::size_t i = 0; i < setup.elementNames.size(); ++i)
-    if (setup.elementNames[i] == element) {
-      setup.parameterElements.push_back(int(i));
-      setup.baseElements.push_back(setup.system->elements()[i].element);
-      setup.baseElements.back()->withParameter(parameter, probe);  // InputError for an unknown parameter
+ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
+  MatrixSystemInput in = readMatrixSystem(scene);
+  const hbm::HarmonicSet harmonics(readHarmonicList(scene, 7));
+  // Elements first: the default sample count depends on them (friction and gaps need
+  // many samples per period to place their events).
+  ForcedResponseSetup setup;
+  const auto placed = readNonlinearElements(scene, in, setup.elementNames);
+  int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
+  for (const auto& p : placed) recommended = std::max(recommended, p.element->recommendedSamples());
+  const int samples = scene.getInt("samples", recommended);
+  if (samples < 1 || samples > kMaxSamples)
+    throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in 1.." +
+                                                 std::to_string(kMaxSamples) + " time samples per period (every "
+                                                 "residual costs in proportion; the default here is " +
+                                                 std::to_string(recommended) + ")");
+  setup.dofNames = in.dofNames;
+  for (int d = int(setup.dofNames.size()); d < in.n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(in.M, in.C, in.K, harmonics, samples);
+  auto& hb = *setup.system;
+  auto ex = scene.section("excitation");
+  if (ex.sectionNames().empty())
+    throw InputError(ex.location(), "needs at least one named force, e.g. f: {dof: 0, cos: 1.0}");
+  readEngineOrder(ex, in);
+  if (in.cyclic()) {
+    hb.setCyclic(in.coupling);
+    // An engine order outside 0..N/2 excites the nodal diameter it folds to (issue 20:
+    // 100 on 24 sectors was accepted without a word; the disc scenes say it).
+    const int N = in.coupling.sectors, eo = in.coupling.engineOrder;
+    if (eo < 0 || eo > N / 2) {
+      std::ostringstream msg;
+      msg << "engine order " << eo << " on " << N << " sectors excites nodal diameter " << hb.nodalDiameter(1)
+          << " (the engine order folds: " << eo << " mod " << N << " = " << ((eo % N) + N) % N
+          << ", and k and N - k are the same nodal diameter travelling the other way)";
+      setup.notes.push_back(msg.str());
     }
-  if (setup.parameterElements.empty()) throw InputError("continuation", "no nonlinear element named '" + element + "'");
-}
-
-std::string ForcedResponseSetup::parameterName() const {
-  switch (parameter) {
-    case Parameter::Omega: return "omega";
-    case Parameter::ForceScale: return "force_scale";
-    case Parameter::DampingScale: return "damping_scale";
-    case Parameter::ElementParameter: return elementNames.at(parameterElements.at(0)) + "/" + elementParameter;
   }
-  return "";
-}
-
-std::pair<double, double> ForcedResponseSetup::apply(double p) {
-  switch (parameter) {
-    case Parameter::Omega: return {p * omegaUnit, excitationScale};
-    case Parameter::ForceScale: return {omega, p};
-    case Parameter::DampingScale: system->setDampingScale(p); break;
-    case Parameter::ElementParameter:
-      for (std::size_t i = 0; i < parameterElements.size(); ++i)
-        system->replaceElement(parameterElements[i], baseElements[i]->withParameter(elementParameter, p));
-      break;
-  }
-  return {omega, excitationScale};
-}
-
-continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup) {
-  continuation::ContinuationProblem problem;
-  problem.size = setup.system->numUnknowns();
-  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
-  const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
-  problem.residual = [&setup, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
-    const auto [w, s] = setup.apply(p);  // an invalid value (e.g. kt < 0) throws: the step is cut
-    setup.system->residual(X, w, R, nullptr, s);
-    R.array() /= f.array();
-  };
-  problem.jacobian = [&setup, f](const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) {
-    const auto [w, s] = setup.apply(p);
-    Eigen::VectorXd R;
-    setup.system->residual(X, w, R, &J, s);
-    J = f.cwiseInverse().asDiagonal() * J;
-  };
-  // A frequency curve's resonance peaks (of the first output DOF's max |x(t)|, the
-  // summary's peak) are located exactly on the path, not left between two samples.
-  if (setup.parameter == ForcedResponseSetup::Parameter::Omega && !setup.outputDofs.empty()) {
-    const int dof = setup.outputDofs.front(), nc = setup.system->numCoefficients();
-    const hbm::HarmonicSet harmonics = setup.system->aft().harmonics();
-    problem.measure = [harmonics, dof, nc](const Eigen::VectorXd& X) {
-      return hbm::peakMagnitude(harmonics, Eigen::VectorXd(X.segment(dof * nc, nc)));
-    };
-  }
-  return problem;
-}
-
-continuation::PeakTrackingProblem peakFollowingProblem(ForcedResponseSetup& setup) {
-  if (setup.parameter == ForcedResponseSetup::Parameter::Omega)
-    throw InputError("peak following", "the parameter must be other than the frequency");
-  if (setup.outputDofs.empty()) throw InputError("peak following", "needs an output DOF (its max |x(t)| is the peak)");
-  continuation::PeakTrackingProblem problem;
-  problem.size = setup.system->numUnknowns();
-  const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
-  const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
-  problem.residual = [&setup, f](const Eigen::VectorXd& X, double w, double p, Eigen::VectorXd& R) {
-    const double s = setup.apply(p).second;
-    setup.system->residual(X, w, R, nullptr, s);
-    R.array() /= f.array();
-  };
-  problem.jacobian = [&setup, f](const Eigen::VectorXd& X, double w, double p, Eigen::MatrixXd& J) {
-    const double s = setup.apply(p).second;
-    Eigen::VectorXd R;
-    setup.system->residual(X, w, R, &J, s);
-    J = f.cwiseInverse().asDiagonal() * J;
-  };
-  const int dof = setup.outputDofs.front(), nc = setup.system->numCoefficients();
-  const hbm::HarmonicSet harmonics = setup.system->aft().harmonics();
-  problem.measure = [harmonics, dof, nc](const Eigen::VectorXd& X) {
-    return hbm::peakMagnitude(harmonics, Eigen::VectorXd(X.segment(dof * nc, nc)));
-  };
-  return problem;
+  for (auto& p : placed) hb.addElement(p.element, p.W, p.Wnext);
+  readForces(scene, ex, setup);
+  auto cs = scene.section("continuation");
+  readContinuation(cs, setup);
+  auto out = scene.section("output");
+  setup.outputDofs = out.getIntList("dofs", {0});
+  setup.stability = readStability(out);
+  setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic());
+  out.rejectUnknownKeys();
+  for (int d : setup.outputDofs)
+    if (d < 0 || d >= in.n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");
+  return setup;
 }
 
 ForcedResponseSetup loadForcedResponseScene(const std::string& path) {
@@ -968,18 +902,11 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
                SceneSummary& summary);
 }  // namespace
 
-SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
-                          linalg::CommPtr comm) {
-  const auto root = parseSceneYaml(yaml, source);
-  const std::string sceneDir = std::filesystem::path(source).has_parent_path()
-                                   ? std::filesystem::path(source).parent_path().string()
-                                   : ".";
-  // Teuchos names the root list after the single top-level key.
-  if (root->name() != "cyclone" && !root->isSublist("cyclone"))
-    throw InputError(source, "the scene's top-level key must be 'cyclone'");
-  const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
-  SceneSection scene(top, source, "cyclone");
-  SceneSummary summary;
+namespace {
+
+// The analyses a scene asks for; its top-level keys and (for anything with a mass
+// matrix) its density checked before anything runs, so a typo costs no computation.
+std::vector<std::string> readAnalyses(SceneSection& scene) {
   const auto analyses = scene.getStringList("analysis", {"static"});
   for (const auto& a : analyses)
     if (a != "static" && a != "mesh" && a != "modal" && a != "forced_response" && a != "reduced_model" &&
@@ -988,30 +915,30 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
                        "unknown analysis '" + a +
                            "' (use static, modal, mesh, reduced_model, disc_response or forced_response, or a list)");
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
-  // Top-level keys are checked before anything runs, so a typo costs no computation.
   scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
                              "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
                              "samples", "continuation", "output", "static_loads", "reduced_model",
                              "disc_response"});
-  const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
-                                                       : scene.getString("output_directory", "cyclone_out");
-  if (overrides.outputDirectory) scene.getString("output_directory", "");
-  // A mass matrix needs a density: with rho = 0 the eigen-solver spun for minutes
-  // (issue 20). Checked before any work.
+  // A mass matrix needs a density: with rho = 0 the eigen-solver spun for minutes (issue 20).
   if (wants("modal") || wants("disc_response") || wants("reduced_model")) {
     auto m = scene.section("material");
     if (const auto material = readMaterial(m); !(material.rho > 0))
       throw InputError(m.where("rho"), "must be positive for modes, reduced models and forced responses (the mass "
                                        "matrix), got " + std::to_string(material.rho));
   }
+  return analyses;
+}
+
+// The run's mark in the directory (rank 0), before anything is written: a second run
+// into it is refused on every rank; a previous run that did not finish is said.
+std::unique_ptr<RunManifest> claimOutputDirectory(const std::string& outDir, const std::string& source,
+                                                linalg::CommPtr comm, SceneSummary& summary) {
   if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
-  // The run's mark in the directory (rank 0), before anything is written: a second run
-  // into it is refused on every rank.
-  std::optional<RunManifest> manifest;
+  std::unique_ptr<RunManifest> manifest;
   std::string refused, previousUnfinished;
   if (comm->getRank() == 0) {
     try {
-      manifest.emplace(outDir, source, previousUnfinished);
+      manifest = std::make_unique<RunManifest>(outDir, source, previousUnfinished);
     } catch (const InputError& e) {
       refused = e.what();
     }
@@ -1023,11 +950,14 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     log::warn(previousUnfinished);
     summary.computed.push_back("warning: " + previousUnfinished);
   }
-  // Curves save their traces in <out>/checkpoints as they go (rank 0 writes; the
-  // others, which trace the same curves, only read). --resume reads them: finished
-  // traces are read back, the one the kill interrupted continues; any other run starts
-  // without them. Removed when the run completes.
-  const std::string checkpointDir = outDir + "/checkpoints";
+  return manifest;
+}
+
+// Curves save their traces in <out>/checkpoints as they go (rank 0 writes; the others,
+// which trace the same curves, only read). --resume reads them: finished traces are read
+// back, the one the kill interrupted continues; any other run starts without them.
+std::shared_ptr<io::TraceCheckpointDirectory> openCheckpoints(const std::string& checkpointDir,
+                                                              const SceneOverrides& overrides, linalg::CommPtr comm) {
   if (!(overrides.checkpointSeconds >= 0))
     throw InputError("--checkpoint-seconds", "must be zero or positive, got " + std::to_string(overrides.checkpointSeconds));
   if (comm->getRank() == 0) {
@@ -1041,8 +971,32 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     }
   }
   Teuchos::barrier(*comm);
-  auto checkpoints = std::make_shared<post::TraceCheckpointDirectory>(checkpointDir, comm->getRank() != 0);
+  auto checkpoints = std::make_shared<io::TraceCheckpointDirectory>(checkpointDir, comm->getRank() != 0);
   checkpoints->intervalSeconds = overrides.checkpointSeconds;
+  return checkpoints;
+}
+
+}  // namespace
+
+SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
+                          linalg::CommPtr comm) {
+  const auto root = parseSceneYaml(yaml, source);
+  const std::string sceneDir = std::filesystem::path(source).has_parent_path()
+                                   ? std::filesystem::path(source).parent_path().string()
+                                   : ".";
+  // Teuchos names the root list after the single top-level key.
+  if (root->name() != "cyclone" && !root->isSublist("cyclone"))
+    throw InputError(source, "the scene's top-level key must be 'cyclone'");
+  const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
+  SceneSection scene(top, source, "cyclone");
+  SceneSummary summary;
+  const auto analyses = readAnalyses(scene);
+  const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
+                                                       : scene.getString("output_directory", "cyclone_out");
+  if (overrides.outputDirectory) scene.getString("output_directory", "");
+  auto manifest = claimOutputDirectory(outDir, source, comm, summary);
+  const std::string checkpointDir = outDir + "/checkpoints";
+  const auto checkpoints = openCheckpoints(checkpointDir, overrides, comm);
   try {
     runStages(scene, analyses, overrides, source, sceneDir, outDir, checkpoints, comm, summary);
   } catch (const InputError& e) {

@@ -12,8 +12,9 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
-#include "cyclone/scenes/DiscForcedResponse.hpp"
-#include "cyclone/scenes/DiscReducedModels.hpp"
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/response/ForcedResponse.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
@@ -24,43 +25,29 @@ class Mesh;
 namespace cyclone::scenes {
 
 class SceneSection;
+using response::ForcedResponseResult;
+using response::ForcedResponseSetup;
+using disc::DiscModelSpec;
+using disc::DiscReducedModels;
+using disc::DiscResponseSpec;
 
 /// The most time samples per period a scene may ask for: every residual's cost grows in
 /// proportion (a friction contact's march too), and 2e6 ran for minutes without a point
 /// (issue 20). The largest shipped need is 4096 (the samples check of 2048).
 constexpr int kMaxSamples = 1 << 16;
 
-/// The peak of a frequency curve at the highest harmonic count the harmonics check
-/// reached, with the change from the level below: the run's headline.
-struct HarmonicsConvergedPeak {
-  bool found = false;
-  int maxHarmonic = 0;
-  double value = 0, hz = 0;
-  int belowHarmonic = -1;  ///< the level compared with (-1: none found)
-  double change = -1;      ///< |peak / peak below - 1| (-1: not known)
-  int notFoundHarmonic = -1;  ///< the next level, tried and its peak not found (-1: none)
-  /// The peak's solution: the curve's system raised to `harmonics` with `samples`
-  /// (hbm::withHarmonics), at hz.
-  Eigen::VectorXd x;
-  std::vector<int> harmonics;
-  int samples = 0;
-};
+/// Writes a traced curve's <name>.csv, <name>.svg, <name>.h5 and <name>_harmonics.csv
+/// (rank 0) and its lines for the summary.
+void writeForcedResponse(const response::ForcedResponseSetup& setup, const response::ForcedResponseResult& result,
+                         const std::string& outDir, const std::string& name, linalg::CommPtr comm,
+                         SceneSummary& summary);
 
-struct ForcedResponseResult {
-  continuation::Branch branch;
-  double peak = 0;           ///< largest max |x(t)| of the first output DOF
-  double peakParameter = 0;  ///< the continuation parameter there
-  double peakOmega = 0;      ///< the frequency there (rad/s)
-  double seconds = 0;
-  std::string startMethod, samplesCheck, harmonicsCheck;
-  HarmonicsConvergedPeak harmonicsPeak;  ///< filled by the harmonics check of a frequency curve
-};
-
-/// Finds the first point, traces the curve and writes <name>.csv, <name>.svg and
-/// <name>.h5 (rank 0), with stability (matrix systems), bifurcation flags and the
-/// sample-count check; lines for the summary.
-ForcedResponseResult traceAndWriteForcedResponse(ForcedResponseSetup& setup, const std::string& outDir,
-                                                 const std::string& name, linalg::CommPtr comm, SceneSummary& summary);
+/// Traces the curve (response::solveForcedResponse) and writes <name>.csv, <name>.svg,
+/// <name>.h5 and <name>_harmonics.csv (rank 0); lines for the summary. A curve without a
+/// point is a SolverError.
+response::ForcedResponseResult traceAndWriteForcedResponse(response::ForcedResponseSetup& setup,
+                                                           const std::string& outDir, const std::string& name,
+                                                           linalg::CommPtr comm, SceneSummary& summary);
 
 fe::IsotropicElastic readMaterial(SceneSection section);
 
@@ -79,6 +66,17 @@ struct CyclicFaces {
 };
 /// Reads configuration and the disc's and shroud's left and right node sets.
 CyclicFaces readCyclicFaces(SceneSection& cyclic);
+
+/// `prestress` of a section: linear, nonlinear or none (`fallback` when absent);
+/// InputError naming the key otherwise.
+cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback);
+
+/// `harmonics` of a section: a list of harmonics, or one number H meaning 0..H (H >= 1);
+/// `defaultMax` when absent (0..defaultMax).
+std::vector<int> readHarmonicList(SceneSection& section, int defaultMax);
+
+/// `stability` of a section: auto (default), true or false; InputError naming the key otherwise.
+response::ForcedResponseSetup::Stability readStability(SceneSection& section);
 
 /// `harmonics_check_to` of a forced-response section: the highest harmonic the
 /// harmonics check of a frequency curve raises H to (0 when absent: H + 1); given,

@@ -30,9 +30,9 @@
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
-#include "cyclone/post/ReducedModelFile.hpp"
-#include "cyclone/post/ResponseCurveFile.hpp"
-#include "cyclone/post/TraceCheckpointDirectory.hpp"
+#include "cyclone/io/ReducedModelFile.hpp"
+#include "cyclone/io/ResponseCurveFile.hpp"
+#include "cyclone/io/TraceCheckpointDirectory.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
@@ -190,7 +190,7 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     }
     EXPECT_EQ(optima, 1);
     // peak_preload.h5: every peak's whole solution, its max |x(t)| the CSV's.
-    const auto h5 = post::readResponseCurveHdf5((dir / "peak_preload.h5").string());
+    const auto h5 = io::readResponseCurveHdf5((dir / "peak_preload.h5").string());
     ASSERT_EQ(h5.parameter.size(), followed.size());
     const auto& H = h5.harmonics;
     for (std::size_t i = 0; i < followed.size(); ++i) {
@@ -542,7 +542,7 @@ TEST(Scenes, ADiscSceneTakesTheMeshsOwnSetNames) {
                        Tpetra::getDefaultComm());
   auto eigenvalues = [](const fs::path& d) {
     for (const auto& e : fs::directory_iterator(d / "reduced_models"))
-      if (e.path().extension() == ".h5") return post::readReducedModelHdf5(e.path().string()).modes.eigenvalues;
+      if (e.path().extension() == ".h5") return io::readReducedModelHdf5(e.path().string()).modes.eigenvalues;
     return std::vector<double>();
   };
   const auto a = eigenvalues(dir / "builtin"), b = eigenvalues(dir / "own");
@@ -851,7 +851,7 @@ TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) {
   ASSERT_EQ(posix_spawn(&pid, CYCLONE_EXE, &actions, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
   const fs::path checkpoints = killed / "checkpoints";
-  post::TraceCheckpointDirectory store(checkpoints.string(), true);
+  io::TraceCheckpointDirectory store(checkpoints.string(), true);
   auto savedTrace = [&]() -> std::optional<continuation::TraceState> {
     if (!fs::exists(checkpoints)) return std::nullopt;
     for (const auto& f : fs::directory_iterator(checkpoints)) {
@@ -894,8 +894,8 @@ TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) {
       << log;
   EXPECT_FALSE(fs::exists(checkpoints)) << "the checkpoints outlived the completed run";
 
-  const auto a = post::readResponseCurveHdf5((whole / "frc.h5").string());
-  const auto b = post::readResponseCurveHdf5((killed / "frc.h5").string());
+  const auto a = io::readResponseCurveHdf5((whole / "frc.h5").string());
+  const auto b = io::readResponseCurveHdf5((killed / "frc.h5").string());
   ASSERT_EQ(a.omega.size(), b.omega.size());
   ASSERT_GT(a.omega.size(), savedPoints);
   double largest = 0;
@@ -1137,7 +1137,7 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
   EXPECT_TRUE(fs::exists(dir / "frc.svg"));
   // The HDF5 curve: read back, the same points and coefficients as the CSV's amplitudes;
   // and a real HDF5 client (h5dump) reads it.
-  const auto curve = post::readResponseCurveHdf5((dir / "frc.h5").string());
+  const auto curve = io::readResponseCurveHdf5((dir / "frc.h5").string());
   ASSERT_EQ(int(curve.omega.size()), rows);
   EXPECT_EQ(curve.segment, std::vector<int>(std::size_t(rows), 0));  // one sweep
   EXPECT_EQ(curve.numDofs, 1);
@@ -1401,7 +1401,7 @@ TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {
   ASSERT_EQ(a.size(), 3u);
   ASSERT_EQ(b.size(), 3u);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i] / b[i], 1.0, 2e-3) << "solution " << i;
-  const auto curve = post::readResponseCurveHdf5((dirF / "frc.h5").string());
+  const auto curve = io::readResponseCurveHdf5((dirF / "frc.h5").string());
   ASSERT_EQ(curve.parameter.size(), force.size());
   EXPECT_DOUBLE_EQ(curve.parameter.back(), force.back()[3]);
 }

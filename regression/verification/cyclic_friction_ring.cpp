@@ -15,6 +15,7 @@
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -51,11 +52,11 @@ TEST(CyclicFrictionRing, SectorCurveEqualsFullRingCurve) {
     options.maxStep = 1.0;
     options.initialStep = 0.1;
     Timer timer;
-    const auto sectorProblem = scenes::continuationProblem(*sector, scenes::ForcedResponseSetup::Parameter::Omega);
+    const auto sectorProblem = response::continuationProblem(*sector, response::ForcedResponseSetup::Parameter::Omega);
     const auto sectorBranch = continuation::traceBranch(sectorProblem, sector->linearizedSolution(options.from), options);
     const double tSector = timer.seconds();
     timer.restart();
-    const auto ringProblem = scenes::continuationProblem(*ring, scenes::ForcedResponseSetup::Parameter::Omega);
+    const auto ringProblem = response::continuationProblem(*ring, response::ForcedResponseSetup::Parameter::Omega);
     const auto ringBranch = continuation::traceBranch(ringProblem, ring->linearizedSolution(options.from), options);
     const double tRing = timer.seconds();
     ASSERT_TRUE(sectorBranch.finished) << sectorBranch.stopReason;

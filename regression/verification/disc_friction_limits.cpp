@@ -33,10 +33,12 @@
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/rom/SectorReceptance.hpp"
-#include "cyclone/scenes/DiscForcedResponse.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
 
 using namespace cyclone;
-using namespace cyclone::scenes;
+using namespace cyclone::response;
+using namespace cyclone::disc;
 
 namespace {
 
@@ -52,7 +54,7 @@ struct Disc {
     mesh = mesh::generateShroudedSector(p);
     spec.sectors = p.sectors;
     spec.rpm = rpm;
-    spec.prestress = "linear";
+    spec.prestress = cyclic::PrestressKind::Linear;
     spec.modes = 20;
     models = buildDiscReducedModels(mesh, spec, nodalDiametersFor(p.sectors, kEngineOrder, harmonics), "",
                                     Tpetra::getDefaultComm());

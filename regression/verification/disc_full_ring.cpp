@@ -13,7 +13,7 @@
 //     its left-face partner of sector j+1 (frame: sector 0's rotated by Q^j), and
 //     the excitation at every sector's mid-blade node, delayed by j 2 pi EO / N.
 // The frequencies come from cheap hybrid models of the sector (20 modes and the
-// static correction): the free and stuck resonances (scenes::estimateResonance), the
+// static correction): the free and stuck resonances (disc::estimateResonance), the
 // preload, and the friction-damped peak of the hybrid sector's curve. Both full-FE
 // sides are then solved by Newton at three fixed frequencies (below, at and above
 // that peak; one LU per frequency on each side, the operator cached), and sector j of the ring is
@@ -45,7 +45,7 @@
 #include "cyclone/hbm/CondensedSystem.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
-#include "cyclone/scenes/DiscForcedResponse.hpp"
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 
 using namespace cyclone;
@@ -204,7 +204,7 @@ Solved solveAt(const hbm::HarmonicBalanceSystem& system, const continuation::Con
   if (out.converged) return out;
   out.homotopy = true;
   int iterations = out.iterations;
-  const auto scaled = scenes::continuationProblem(system, scenes::ForcedResponseSetup::Parameter::ForceScale, w);
+  const auto scaled = response::continuationProblem(system, response::ForcedResponseSetup::Parameter::ForceScale, w);
   X = system.linearizedSolution(w, 0.05);
   for (int i = 1; i <= 20; ++i) {
     const auto r = continuation::solveNewton(scaled, X, 0.05 * i, tol);
@@ -265,15 +265,15 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   // exact static correction; a modal sum per frequency) place the frequencies: the
   // resonances, the preload and the friction-damped peak. The comparison itself uses the
   // full-FE compliance (a sector LU per frequency), the same operator as the ring's.
-  scenes::DiscModelSpec modelSpec;
+  disc::DiscModelSpec modelSpec;
   modelSpec.sectors = N;
-  modelSpec.kind = "hybrid";
-  modelSpec.prestress = "none";
+  modelSpec.kind = disc::ReducedModelKind::Hybrid;
+  modelSpec.prestress = cyclic::PrestressKind::None;
   modelSpec.rpm = 0;
   modelSpec.modes = 20;
   modelSpec.lossFactor = 0.006;
   modelSpec.retainedNodeSets = {"ring_contact_left", "ring_contact_right", "mid_blade"};
-  scenes::DiscResponseSpec responseSpec;
+  disc::DiscResponseSpec responseSpec;
   responseSpec.engineOrder = EO;
   responseSpec.harmonics = {0, 1};
   responseSpec.contact.leftSet = "ring_contact_left", responseSpec.contact.rightSet = "ring_contact_right";
@@ -281,14 +281,14 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   responseSpec.contact.mu = 0.4;
   responseSpec.contact.preload = 1.0;  // recalibrated below
   responseSpec.excitation.amplitude = 1.0;
-  const auto diameters = scenes::nodalDiametersFor(N, EO, responseSpec.harmonics);
+  const auto diameters = disc::nodalDiametersFor(N, EO, responseSpec.harmonics);
   Timer t;
-  const auto hybrid = scenes::buildDiscReducedModels(mesh, modelSpec, diameters, "", comm);
+  const auto hybrid = disc::buildDiscReducedModels(mesh, modelSpec, diameters, "", comm);
   const double tHybrid = t.seconds();
-  modelSpec.kind = "full_fe";
+  modelSpec.kind = disc::ReducedModelKind::FullFe;
   modelSpec.modes = 3;  // natural frequencies only for the log line; the model is the FE compliance
   t.restart();
-  const auto models = scenes::buildDiscReducedModels(mesh, modelSpec, diameters, "", comm);
+  const auto models = disc::buildDiscReducedModels(mesh, modelSpec, diameters, "", comm);
   const double tModels = t.seconds();
   ASSERT_EQ(hybrid.retainedNodes, models.retainedNodes);
   const int n = int(3 * models.retainedNodes.size());
@@ -297,16 +297,16 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   std::printf(" ): hybrid %.1f s, full FE %.1f s\n", tHybrid, tModels);
 
   // The resonances on the hybrid models: the shroud-free one and the stuck (linearised at
-  // rest) peak by scenes::estimateResonance's scan and polish.
+  // rest) peak by disc::estimateResonance's scan and polish.
   responseSpec.condensed = false;  // the probe's and the sector's solutions are read per retained DOF
-  auto probe = scenes::makeDiscForcedResponse(mesh, hybrid, responseSpec);
+  auto probe = disc::makeDiscForcedResponse(mesh, hybrid, responseSpec);
   t.restart();
-  const auto resonance = scenes::estimateResonance(probe, hybrid);
+  const auto resonance = disc::estimateResonance(probe, hybrid);
   const double tResonance = t.seconds();
   const int nc = probe.system->numCoefficients();
   const auto& set = probe.system->aft().harmonics();
   const Eigen::Matrix3d Q = models.sector.rotation();
-  const Eigen::Matrix3d E = scenes::shroudContactFrame(mesh, models, responseSpec.contact);
+  const Eigen::Matrix3d E = disc::shroudContactFrame(mesh, models, responseSpec.contact);
   const auto& leftSet = mesh.nodeSet(responseSpec.contact.leftSet);
   const auto& rightSet = mesh.nodeSet(responseSpec.contact.rightSet);
   auto indexOf = [&](mesh::Index node) {
@@ -345,9 +345,9 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
   {
     auto hybridSpec = responseSpec;
     hybridSpec.condensed = true;  // the product's path: only the output DOF is read
-    auto hybridSetup = scenes::makeDiscForcedResponse(mesh, hybrid, hybridSpec);
+    auto hybridSetup = disc::makeDiscForcedResponse(mesh, hybrid, hybridSpec);
     auto& hs = *hybridSetup.system;
-    const auto problem = scenes::continuationProblem(hs, scenes::ForcedResponseSetup::Parameter::Omega);
+    const auto problem = response::continuationProblem(hs, response::ForcedResponseSetup::Parameter::Omega);
     const int steps = 60;
     Eigen::VectorXd X = hs.linearizedSolution(2 * M_PI * f0);
     t.restart();
@@ -374,9 +374,9 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
     ASSERT_LT(peakHz, f1);
   }
   std::fflush(stdout);
-  auto setup = scenes::makeDiscForcedResponse(mesh, models, responseSpec);
+  auto setup = disc::makeDiscForcedResponse(mesh, models, responseSpec);
   auto& sector = *setup.system;
-  const auto sectorProblem = scenes::continuationProblem(sector, scenes::ForcedResponseSetup::Parameter::Omega);
+  const auto sectorProblem = response::continuationProblem(sector, response::ForcedResponseSetup::Parameter::Omega);
   const int outDof = setup.outputDofs.front();
   // The condensed sector (hbm/CondensedSystem.hpp: the contacts' relative displacements
   // and the excited and output DOFs), its retained DOFs recovered from its forces.
@@ -385,7 +385,7 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
     if (sector.excitation().segment(long(r) * nc, nc).squaredNorm() > 0) kept.push_back(r);
   const auto condensed = hbm::condenseOntoElements(sector, kept);
   const auto condensedProblem =
-      scenes::continuationProblem(*condensed.system, scenes::ForcedResponseSetup::Parameter::Omega);
+      response::continuationProblem(*condensed.system, response::ForcedResponseSetup::Parameter::Omega);
   std::printf("condensed sector: %d coordinates for %d retained DOFs\n", condensed.system->numDofs(), sector.numDofs());
 
   // The ring FE model.
@@ -451,7 +451,7 @@ TEST(DiscFullRing, CyclicSectorEqualsFullRingWithFriction) {
         if (dj(c) != 0)
           ringSystem->addExcitation(j * n + 3 * indexOf(node) + c, 1, dj(c) * std::cos(j * a), dj(c) * std::sin(j * a));
     }
-  const auto ringProblem = scenes::continuationProblem(*ringSystem, scenes::ForcedResponseSetup::Parameter::Omega);
+  const auto ringProblem = response::continuationProblem(*ringSystem, response::ForcedResponseSetup::Parameter::Omega);
 
   // Sector solution -> ring: harmonic h of sector j delayed by h j a, vectors rotated by Q^j.
   auto expand = [&](const Eigen::VectorXd& Xs) {

@@ -14,6 +14,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -36,7 +37,7 @@ CurveFeatures traceDuffing(int H, int samples) {
   hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(H), samples);
   sys.addElement(std::make_shared<hbm::CubicSpring>(0.1), Eigen::VectorXd::Ones(1));
   sys.addExcitation(0, 1, 0.18);
-  auto problem = scenes::continuationProblem(sys, scenes::ForcedResponseSetup::Parameter::Omega);
+  auto problem = response::continuationProblem(sys, response::ForcedResponseSetup::Parameter::Omega);
   // The first-harmonic amplitude as the response measure: the engine locates its
   // maximum on the path and inserts it as a point.
   problem.measure = [&sys](const Eigen::VectorXd& x) { return sys.amplitude(x, 0, 1); };

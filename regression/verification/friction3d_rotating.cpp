@@ -16,6 +16,7 @@
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -46,7 +47,7 @@ TEST(Friction3DRotating, CircularOrbitMatchesClosedForm) {
   Timer timer;
   auto setup = scenes::loadForcedResponseScene(CYCLONE_SCENE_DIR "/friction3d_rotating.yaml");
   const auto& sys = *setup.system;
-  const auto branch = scenes::traceForcedResponse(setup);
+  const auto branch = response::traceForcedResponse(setup);
   ASSERT_TRUE(branch.finished) << branch.stopReason;
   double worst = 0, worstW = 0, peak = 0, peakW = 0;
   int slipping = 0;
@@ -74,7 +75,7 @@ TEST(Friction3DRotating, CircularOrbitMatchesClosedForm) {
     Eigen::VectorXd X = branch.points.front().x;
     for (const auto& pt : branch.points)
       if (std::abs(pt.parameter - peakW) < 1e-12) X = pt.x;
-    const auto problem = scenes::continuationProblem(*refined, scenes::ForcedResponseSetup::Parameter::Omega);
+    const auto problem = response::continuationProblem(*refined, response::ForcedResponseSetup::Parameter::Omega);
     ASSERT_TRUE(continuation::solveNewton(problem, X, peakW, 1e-11).converged);
     const double err = std::abs(refined->amplitude(X, 0, 1) / orbitRadius(peakW) - 1);
     std::printf("  N = %5d: radius %.7f, relative error %.2e (%.3f s)%s\n", N, refined->amplitude(X, 0, 1), err,

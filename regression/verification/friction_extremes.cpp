@@ -13,6 +13,7 @@
 
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -60,7 +61,7 @@ TEST(FrictionExtremes, ConvergeOrStopWithAReason) {
     setup.continuation.from = 3.0, setup.continuation.to = 5.0;
     setup.continuation.maxSteps = 3000;
     setup.continuation.tolerance = c.tolerance;
-    const auto problem = scenes::continuationProblem(sys, setup.parameter, 0, setup.excitationScale);
+    const auto problem = response::continuationProblem(sys, setup.parameter, 0, setup.excitationScale);
     const auto branch =
         continuation::traceBranch(problem, sys.linearizedSolution(3.0, c.excitation), setup.continuation);
     // Every returned point solves the equations relative to the largest force in them.

@@ -18,6 +18,7 @@
 #include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/hbm/TimeIntegration.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -31,9 +32,9 @@ double maxAbs(const hbm::HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, i
   return hbm::peakMagnitude(sys.aft().harmonics(), Eigen::VectorXd(X.segment(dof * nc, nc)));
 }
 
-continuation::Branch trace(const scenes::ForcedResponseSetup& setup) {
+continuation::Branch trace(const response::ForcedResponseSetup& setup) {
   const auto& sys = *setup.system;
-  const auto problem = scenes::continuationProblem(sys, setup.parameter, 0, setup.excitationScale);
+  const auto problem = response::continuationProblem(sys, setup.parameter, 0, setup.excitationScale);
   return continuation::traceBranch(problem, sys.linearizedSolution(setup.continuation.from, setup.excitationScale),
                                    setup.continuation);
 }
@@ -112,7 +113,7 @@ TEST(TmdsimpyFriction2D, SlippingPeaksConfirmedByTimeIntegration) {
       Eigen::VectorXd X = hbm::transferCoefficients(branch.points[ip].x, 2, sys.aft().harmonics(),
                                                     refined->aft().harmonics());
       const auto problem =
-          scenes::continuationProblem(*refined, scenes::ForcedResponseSetup::Parameter::Omega, 0, s);
+          response::continuationProblem(*refined, response::ForcedResponseSetup::Parameter::Omega, 0, s);
       const auto newton = continuation::solveNewton(problem, X, w, 1e-9 * s);
       ASSERT_TRUE(newton.converged) << "H = " << H << ": residual " << newton.residualNorm;
       const double err = std::abs(refined->amplitude(X, 0, 1) / tiAmp - 1);
@@ -150,13 +151,13 @@ TEST(TmdsimpyFriction2D, FrictionCoefficientStudyReachesStuckAndFreeLimits) {
     auto setup = scenes::loadForcedResponseScene(kScene);
     setup.excitationScale = s;
     setup.omega = w;
-    setup.parameter = scenes::ForcedResponseSetup::Parameter::ElementParameter;
+    setup.parameter = response::ForcedResponseSetup::Parameter::ElementParameter;
     setup.parameterElements = {0};
     setup.elementParameter = "mu";
     setup.baseElements = {setup.system->elements()[0].element};
     setup.continuation.from = 0.85, setup.continuation.to = to;
     setup.continuation.maxStep = 0.5;
-    const auto problem = scenes::continuationProblem(setup);
+    const auto problem = response::continuationProblem(setup);
     const auto start = setup.apply(setup.continuation.from);
     const auto branch =
         continuation::traceBranch(problem, setup.system->linearizedSolution(start.first, start.second), setup.continuation);
@@ -174,7 +175,7 @@ TEST(TmdsimpyFriction2D, FrictionCoefficientStudyReachesStuckAndFreeLimits) {
     sweep.excitationScale = s;
     Eigen::VectorXd X = branch.points.front().x;
     const auto omegaProblem =
-        scenes::continuationProblem(*sweep.system, scenes::ForcedResponseSetup::Parameter::Omega, 0, s);
+        response::continuationProblem(*sweep.system, response::ForcedResponseSetup::Parameter::Omega, 0, s);
     Eigen::VectorXd R;
     omegaProblem.residual(X, w, R);
     EXPECT_LT(R.norm(), 1e-8);

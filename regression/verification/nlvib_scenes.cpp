@@ -1,5 +1,5 @@
 // Verification: NLvib's examples 02, 03 and 07 from their scene files. Each
-// curve is traced as `cyclone run` traces it (scenes::traceForcedResponse: the
+// curve is traced as `cyclone run` traces it (response::traceForcedResponse: the
 // first point found from rest, then arclength continuation); a point of it is
 // checked by Hill's method and confirmed by time integration of the same system
 // started on its periodic solution: were that solution not a stable periodic
@@ -16,6 +16,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/TimeIntegration.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 
 using namespace cyclone;
@@ -23,8 +24,8 @@ using namespace cyclone;
 namespace {
 
 struct TracedScene {
-  scenes::ForcedResponseSetup setup;
-  scenes::StartingPoint start;
+  response::ForcedResponseSetup setup;
+  response::StartingPoint start;
   continuation::Branch branch;
   double seconds = 0;
 };
@@ -33,8 +34,8 @@ TracedScene traceScene(const std::string& file) {
   Timer timer;
   TracedScene t;
   t.setup = scenes::loadForcedResponseScene(std::string(CYCLONE_SCENE_DIR "/") + file);
-  t.start = scenes::findStartingPoint(t.setup);
-  t.branch = scenes::traceForcedResponse(t.setup, t.start);
+  t.start = response::findStartingPoint(t.setup);
+  t.branch = response::traceForcedResponse(t.setup, t.start);
   t.seconds = timer.seconds();
   std::printf("%s: first point by %s (%.2f s); %zu points, %s (%.1f s)\n", file.c_str(), t.start.method.c_str(),
               t.start.seconds, t.branch.points.size(), t.branch.stopReason.c_str(), t.seconds);
@@ -92,7 +93,7 @@ double amplitudeWithHarmonics(const TracedScene& t, const continuation::BranchPo
   const auto refined = hbm::withHarmonics(s, hbm::HarmonicSet::upTo(H), std::max(s.aft().numSamples(), 4 * H + 1));
   const auto& r = *refined;
   Eigen::VectorXd X = hbm::transferCoefficients(pt.x, s.numDofs(), s.aft().harmonics(), r.aft().harmonics());
-  const auto problem = scenes::continuationProblem(r, scenes::ForcedResponseSetup::Parameter::Omega);
+  const auto problem = response::continuationProblem(r, response::ForcedResponseSetup::Parameter::Omega);
   EXPECT_TRUE(continuation::solveNewton(problem, X, pt.parameter, t.setup.continuation.tolerance, 100).converged)
       << "H = " << H;
   const double a = r.amplitude(X, dof, 1);
@@ -159,13 +160,13 @@ TEST(NlvibScenes, Example03UnstablePeakAndStablePointByTimeIntegration) {
 // Example 07: Jenkins elements (k = 20, slip force 1) on DOF 1 and between DOFs 1-2,
 // cubic springs on DOF 2 and between DOFs 2-3, a unilateral spring (1, gap 0.25) on
 // DOF 3; H = 7, W = 0.5 -> 2. Newton from the linear solution stagnates here; the
-// first point comes from rest (scenes::findStartingPoint).
+// first point comes from rest (response::findStartingPoint).
 TEST(NlvibScenes, Example07StartsFromRestAndPeaksCheckedByTimeIntegration) {
   const auto t = traceScene("nlvib_07.yaml");
   ASSERT_TRUE(t.branch.finished) << t.branch.stopReason;
   EXPECT_EQ(t.start.method, "Newton from rest");
   {  // The way that failed: Newton from the linear solution without the elements.
-    const auto problem = scenes::continuationProblem(*t.setup.system, t.setup.parameter);
+    const auto problem = response::continuationProblem(*t.setup.system, t.setup.parameter);
     Eigen::VectorXd x = t.setup.system->linearSolution(t.setup.continuation.from), R;
     Timer timer;
     const bool converged =
@@ -187,7 +188,7 @@ TEST(NlvibScenes, Example07StartsFromRestAndPeaksCheckedByTimeIntegration) {
 TEST(NlvibScenes, FirstPointByExcitationRampWhereNewtonStagnates) {
   auto setup = scenes::loadForcedResponseScene(CYCLONE_SCENE_DIR "/nlvib_03.yaml");
   setup.continuation.from = 0.65;
-  const auto start = scenes::findStartingPoint(setup);
+  const auto start = response::findStartingPoint(setup);
   std::printf("nlvib_03.yaml from W = 0.65: first point by %s (%.2f s), |x1| of DOF 2 = %.6f\n",
               start.method.c_str(), start.seconds, start.x.size() ? setup.system->amplitude(start.x, 1, 1) : 0.0);
   ASSERT_EQ(start.method.rfind("ramp of the excitation from rest", 0), 0u) << start.method;
@@ -205,8 +206,8 @@ TEST(NlvibScenes, ACurveWithoutAStartIsTracedFromTheEnd) {
   auto forward = traceScene("nlvib_02.yaml");
   ASSERT_TRUE(forward.branch.finished) << forward.branch.stopReason;
   auto setup = scenes::loadForcedResponseScene(CYCLONE_SCENE_DIR "/nlvib_02.yaml");
-  const scenes::StartingPoint refused{Eigen::VectorXd(), "refused by the test", 0.0};
-  const auto branch = scenes::traceForcedResponse(setup, refused);
+  const response::StartingPoint refused{Eigen::VectorXd(), "refused by the test", 0.0};
+  const auto branch = response::traceForcedResponse(setup, refused);
   std::printf("nlvib_02.yaml without a start: %zu points, %s\n", branch.points.size(), branch.stopReason.c_str());
   ASSERT_TRUE(branch.finished) << branch.stopReason;
   EXPECT_NE(branch.stopReason.find("refused by the test"), std::string::npos) << branch.stopReason;
@@ -216,7 +217,7 @@ TEST(NlvibScenes, ACurveWithoutAStartIsTracedFromTheEnd) {
   EXPECT_NEAR(branch.points.back().parameter, setup.continuation.from, 1e-12);
   // The peak of the scene's response measure (the first output DOF's max |x(t)|),
   // which both traces locate on their paths.
-  const auto measure = scenes::continuationProblem(setup).measure;
+  const auto measure = response::continuationProblem(setup).measure;
   ASSERT_TRUE(bool(measure));
   auto peakOf = [&measure](const continuation::Branch& b) {
     double best = 0;

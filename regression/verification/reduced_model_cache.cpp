@@ -10,7 +10,7 @@
 
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
-#include "cyclone/scenes/DiscReducedModels.hpp"
+#include "cyclone/disc/DiscReducedModels.hpp"
 
 using namespace cyclone;
 namespace fs = std::filesystem;
@@ -31,29 +31,29 @@ TEST(ReducedModelCache, EveryKindIsReusedExactly) {
   const auto mesh = mesh::generateShroudedSector(p);
   const auto dir = fs::temp_directory_path() / "cyclone_reduced_model_cache";
   fs::remove_all(dir);
-  for (const std::string kind : {"guyan", "craig_bampton", "hybrid"}) {
-    scenes::DiscModelSpec spec;
+  for (const auto kind : {disc::ReducedModelKind::Guyan, disc::ReducedModelKind::CraigBampton, disc::ReducedModelKind::Hybrid}) {
+    disc::DiscModelSpec spec;
     spec.sectors = p.sectors;
     spec.rpm = 10000;
-    spec.prestress = "linear";
+    spec.prestress = cyclic::PrestressKind::Linear;
     spec.kind = kind;
     spec.modes = 6;
     const std::vector<int> nds{2};
-    const auto built = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
-    const auto reused = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
-    EXPECT_EQ(built.built, 1) << kind;
-    EXPECT_EQ(reused.reused, 1) << kind;
-    EXPECT_EQ(reused.built, 0) << kind;
+    const auto built = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+    const auto reused = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+    EXPECT_EQ(built.built, 1) << disc::reducedModelKindName(kind);
+    EXPECT_EQ(reused.reused, 1) << disc::reducedModelKindName(kind);
+    EXPECT_EQ(reused.built, 0) << disc::reducedModelKindName(kind);
     ASSERT_EQ(reused.files.at(2), built.files.at(2));
-    EXPECT_TRUE(fs::exists(built.files.at(2))) << kind;
-    EXPECT_EQ(reused.naturalHz.at(2), built.naturalHz.at(2)) << kind;
+    EXPECT_TRUE(fs::exists(built.files.at(2))) << disc::reducedModelKindName(kind);
+    EXPECT_EQ(reused.naturalHz.at(2), built.naturalHz.at(2)) << disc::reducedModelKindName(kind);
     const auto& a = *built.models.at(2);
     const auto& b = *reused.models.at(2);
     ASSERT_EQ(a.size(), b.size());
-    EXPECT_EQ((a.zeroFrequencyCompliance() - b.zeroFrequencyCompliance()).cwiseAbs().maxCoeff(), 0.0) << kind;
+    EXPECT_EQ((a.zeroFrequencyCompliance() - b.zeroFrequencyCompliance()).cwiseAbs().maxCoeff(), 0.0) << disc::reducedModelKindName(kind);
     const double f1 = 2 * M_PI * built.naturalHz.at(2).front(), f2 = 2 * M_PI * built.naturalHz.at(2)[1];
     for (double w : {0.5 * f1, f1, 0.5 * (f1 + f2), f2, 3.0 * f2})
-      EXPECT_EQ((a.compliance(w) - b.compliance(w)).cwiseAbs().maxCoeff(), 0.0) << kind << " at " << w << " rad/s";
+      EXPECT_EQ((a.compliance(w) - b.compliance(w)).cwiseAbs().maxCoeff(), 0.0) << disc::reducedModelKindName(kind) << " at " << w << " rad/s";
   }
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir)) files += e.path().extension() == ".h5";
@@ -69,16 +69,16 @@ TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   const auto mesh = mesh::generateShroudedSector(p);
   const auto dir = fs::temp_directory_path() / "cyclone_reduced_model_cache_truncated";
   fs::remove_all(dir);
-  scenes::DiscModelSpec spec;
+  disc::DiscModelSpec spec;
   spec.sectors = p.sectors;
-  spec.prestress = "none";
+  spec.prestress = cyclic::PrestressKind::None;
   spec.modes = 4;
   const std::vector<int> nds{1};
-  const auto built = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto built = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
   const auto path = built.files.at(1);
   const auto size = fs::file_size(path);
   fs::resize_file(path, size / 3);
-  const auto again = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto again = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
   EXPECT_EQ(again.built, 1);
   EXPECT_EQ(again.reused, 0);
   EXPECT_EQ(fs::file_size(path), size);
@@ -86,6 +86,6 @@ TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   // A new eigen-solution (Anasazi's random start): the same model to solver precision.
   const Eigen::MatrixXcd A = built.models.at(1)->compliance(w);
   EXPECT_LT((again.models.at(1)->compliance(w) - A).norm() / A.norm(), 1e-9);
-  const auto reused = scenes::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto reused = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
   EXPECT_EQ(reused.reused, 1);
 }

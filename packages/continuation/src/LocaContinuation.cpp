@@ -79,16 +79,13 @@ public:
     std::vector<const BranchPoint*> path = before_;
     for (std::size_t i = 0; i + 1 < branch_.points.size(); ++i) path.push_back(&branch_.points[i]);
     // Both steps inside this run: a run's first step (LOCA's initial step) has no
-    // relation to the step size the run before it had cut down to. (Measuring it
-    // against the initial step was tried: on the default disc at H = 3 the first
-    // chord of every restart, at a quarter of the step each time, exceeded 5 times
-    // that step: LOCA's first step is not the size it is given.)
+    // relation to the step size the run before it had cut down to, nor to the size it
+    // is given (docs/decisions.md, "LOCA's jump checks").
     const std::size_t n = branch_.points.size();
-    // (A step that lands back on the path far behind, landsOnTracedPath, is not taken
-    // for a jump here: tried, it caught the default disc's H = 3 jump from 1230.6 back
-    // to 1207.3 Hz, but it also stopped an excitation ramp of the 8-sector test disc
-    // at a tiny step, p 0.010741 -> 0.010753, so that sweep had no start. Such a jump
-    // now shows as a stretch traced twice; bridgeKink's candidates are checked.)
+    // A step that lands back on the path far behind (landsOnTracedPath) is not taken for
+    // a jump here: that test also stops legitimate tiny steps of an excitation ramp
+    // (docs/decisions.md, "LOCA's jump checks"); such a jump shows as a stretch traced
+    // twice, and bridgeKink's candidates are checked with it.
     if (jumpCheck_ && n >= 3 && branchJump(branch_.points[n - 3], branch_.points[n - 2], branch_.points[n - 1])) {
       branch_.points.pop_back();
       std::ostringstream msg;
@@ -379,9 +376,8 @@ Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::Vect
   // A failed evaluation inside LOCA (e.g. a parameter leaving its domain in a
   // corrector iteration) ends its run by an exception: restart from the last
   // converged point with a quarter of the step, in the direction the branch
-  // was moving, a few times, as a step cut. (Restarting also after LOCA's step
-  // fell below its minimum at a kink of many friction contacts was tried: each
-  // restart failed the same way and the run took minutes longer.)
+  // was moving, a few times, as a step cut. A step below LOCA's minimum is not
+  // restarted: at a kink of many friction contacts each restart fails the same way.
   const double forward = o.to >= o.from ? 1.0 : -1.0;
   bool threw = false, turnedBack = false, stalled = false;
   runLoca(problem, x0, o.from, forward * o.initialStep, o, true, branch, threw, turnedBack, stalled);

@@ -1,5 +1,6 @@
 #include "cyclone/rom/ReducedModes.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "cyclone/core/Error.hpp"
@@ -7,8 +8,12 @@
 namespace cyclone::rom {
 
 RetainedModes reducedModes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, Eigen::Index retained, int copies) {
+  // Eigen's generalised solver factors M without checking the factor (an indefinite M
+  // came back as Success with meaningless eigenvalues): M's own LLT decides.
+  if (Eigen::LLT<Eigen::MatrixXd>(M).info() != Eigen::Success)
+    throw InputError("reduced model", "its mass matrix is not positive definite");
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, M, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-  if (eig.info() != Eigen::Success) throw InputError("reduced model", "its mass matrix is not positive definite");
+  if (eig.info() != Eigen::Success) throw InputError("reduced model", "its eigen-solution failed");
   RetainedModes out;
   out.copies = copies;
   out.eigenvalues.assign(eig.eigenvalues().data(), eig.eigenvalues().data() + eig.eigenvalues().size());

@@ -45,10 +45,9 @@ int retracedFrom(const std::vector<const BranchPoint*>& path, const BranchPoint&
 /// at a kink lands about a step behind along the path, or inside the cluster of
 /// creeping steps there (the retrace check's business); a path does not come
 /// back onto itself otherwise. LOCA's corrector can, from the far side of a
-/// kink where the tangent is poor: on the default disc at H = 3 from 1230.6 Hz
-/// back onto the branch at 1207.3 Hz (a chord of a tenth or less of the path's length
-/// in between), then forward along the old path again. Screens the steps over a
-/// kink (ArclengthContinuation.cpp: bridgeKink).
+/// kink where the tangent is poor (a chord of a tenth or less of the path's length in
+/// between; docs/decisions.md, "LOCA's jump checks"), then go forward along the old path
+/// again. Screens the steps over a kink (ArclengthContinuation.cpp: bridgeKink).
 constexpr double kLandingArclengthRatio = 2.0;
 bool landsOnTracedPath(const std::vector<const BranchPoint*>& path, const BranchPoint& c);
 

@@ -31,7 +31,7 @@ struct TraceState {
   long retractions = 0, anchor = 0, creepChecked = 0;
 };
 
-/// Where traces keep their states (post::TraceCheckpointDirectory: HDF5 files).
+/// Where traces keep their states (io::TraceCheckpointDirectory: HDF5 files).
 class TraceCheckpoints {
 public:
   virtual ~TraceCheckpoints() = default;

@@ -3,7 +3,7 @@
 // it had finished instead of computing it again (the cyclic modes of each nodal
 // diameter: CyclicModalProblem::checkpoints). A result is a vector of numbers filed
 // under a key that digests everything it depends on (ContentHash), so a changed
-// input misses and is computed afresh. post::ResultCheckpointDirectory keeps them as
+// input misses and is computed afresh. io::ResultCheckpointDirectory keeps them as
 // HDF5 files.
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The high-cycle-fatigue margin of one point in the Goodman-Haigh diagram
-// (seed ch. 2.1.5): the alternating stress the material carries at the point's
+// (Scalvini 2021, sec. 2.1.5): the alternating stress the material carries at the point's
 // mean stress, over the alternating stress it carries. The mean is held: a
 // blade's mean stress is the centrifugal one (and the harmonic-0 part of the
 // vibration), which does not grow when the vibration does, so the margin is

@@ -1,5 +1,5 @@
 #pragma once
-// Friction contact with normal load variation and separation (seed eqs.
+// Friction contact with normal load variation and separation (Scalvini 2021, eqs.
 // 7.17-7.20; Petrov & Ewins, Yang & Menq): a normal penalty spring kn with
 // preload N0 and, in series with the tangential spring kt, a Coulomb slider
 // whose limit mu N(t) follows the instantaneous normal load. With two

@@ -10,7 +10,7 @@
 // A x_j + A_next x_{j+1} + A_next^T x_{j-1}), under a travelling-wave
 // excitation of engine order EO: sector j+1 moves like sector j delayed by
 // 2 pi EO / N, so harmonic h of every sector is harmonic h of sector 0 rotated
-// by h 2 pi EO / N (it lives on nodal diameter h EO mod N; Petrov 2004, seed
+// by h 2 pi EO / N (it lives on nodal diameter h EO mod N; Petrov 2004; Scalvini 2021,
 // eqs. 7.9-7.15). Only sector 0 is solved; an element joining sector j to
 // j+1 (W_next) is evaluated exactly, and its reaction on sector j+1 comes back
 // to sector 0 from the element joining sector N-1 to 0.

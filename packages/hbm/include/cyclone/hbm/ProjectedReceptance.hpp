@@ -6,7 +6,7 @@
 // (sector 0 also carries the reaction of the element joining sector N-1 to it),
 // so
 //   A_q(w, p) = T_p A(w, p) T_p^H.
-// Petrov's condensed harmonic balance (seed ch. 7): q are the contacts' relative
+// Petrov's condensed harmonic balance (Scalvini 2021, ch. 7): q are the contacts' relative
 // displacements plus the excited and observed DOFs, usually far fewer than the
 // retained DOFs, and every force of the system acts on q.
 #include <map>

@@ -2,7 +2,7 @@
 // The linear part of a harmonic balance system given by its dynamic compliance
 // (receptance) at the DOFs the nonlinear elements and the excitation use,
 // instead of by M, C and K: what a reduced model of a large FE sector hands to
-// the harmonic balance (seed ch. 7: x_h = A(h w) (f_h - f_nl,h)). Whatever
+// the harmonic balance (Scalvini 2021, ch. 7: x_h = A(h w) (f_h - f_nl,h)). Whatever
 // kind of model it is (full FE compliance, hybrid FRF, modal truncation,
 // Guyan, Craig-Bampton), the harmonic balance sees only this.
 //

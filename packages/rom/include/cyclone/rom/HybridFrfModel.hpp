@@ -1,5 +1,5 @@
 #pragma once
-// The hybrid FRF model (Petrov 2011; seed eqs. 5.27-5.35) and plain modal
+// The hybrid FRF model (Petrov, "A high-accuracy model reduction for analysis of nonlinear vibrations in structures with contact interfaces", J. Eng. Gas Turbines Power 2011; Scalvini 2021, eqs. 5.27-5.35) and plain modal
 // truncation at the retained DOFs of one harmonic index, with structural
 // damping (1 + i eta) K on every mode:
 //   truncation: A(w) = sum_j phi_j phi_j^T / ((1 + i eta) l_j - w^2)
@@ -13,7 +13,7 @@
 // and needs the complex A0 = G^T ((1 + i eta) K - w0^2 M)^{-1} G; ours expands
 // about (1 + i eta) w0^2, where A0 is real up to 1 / (1 + i eta). For w0 = 0
 // the two are identical. Using an undamped A0
-// (what CalculiX's *GREEN gives) in Petrov's damped formula, as the seed did,
+// (what CalculiX's *GREEN gives) in Petrov's damped formula, as Scalvini 2021 did,
 // adds sum over all modes of i eta l_j phi_j phi_j^T / ((l_j - w0^2)((1 + i eta) l_j - w0^2)),
 // about i eta A0: large against A(w) between resonances, whatever the modes kept.
 #include <string>
@@ -58,7 +58,7 @@ public:
   Eigen::Index size() const override { return modes_.shapes.rows(); }
   Eigen::MatrixXcd compliance(double omega) const override;
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
-  /// The excitation part (seed eqs. 5.27-5.35) for loads off the retained DOFs, with the
+  /// The excitation part (Scalvini 2021, eqs. 5.27-5.35) for loads off the retained DOFs, with the
   /// same weights as the compliance: A0_rf f / (1 + i eta) + Phi diag(w_j(omega)) (Phi^T f);
   /// exact with all modes, its truncation error that of the compliance.
   Eigen::Index numLoads() const override { return modes_.loads.cols(); }

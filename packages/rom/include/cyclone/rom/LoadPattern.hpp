@@ -3,7 +3,7 @@
 // load, a force at a node that is not retained): nodal forces in x, y, z per
 // real-form copy of the harmonic index. A reduced model carries the response
 // at its retained DOFs to such loads, x_r(w) = A_rf(w) f, as the excitation
-// part of the seed's eqs. 5.27-5.35.
+// part of Scalvini 2021, eqs. 5.27-5.35.
 #include <string>
 #include <vector>
 

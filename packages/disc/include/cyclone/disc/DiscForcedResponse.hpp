@@ -1,0 +1,67 @@
+#pragma once
+// The friction-damped forced response of a bladed disc as one library call: the
+// sector's harmonic balance over its reduced models (DiscHarmonicBalance.hpp), the
+// frequency range from the resonance estimate unless given, the curve traced with the
+// disc's continuation defaults, its checks, and the headline peak: the harmonics
+// check's highest level found, converged to 1 % or labelled an estimate.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/response/ForcedResponse.hpp"
+
+namespace cyclone::mesh {
+class Mesh;
+}
+
+namespace cyclone::disc {
+
+/// How a disc's frequency curve is traced; every field has the scenes' default.
+struct DiscSweepOptions {
+  int family = 1;  ///< which natural frequency of the engine order's nodal diameter (from 1) sets the range
+  double fromHz = 0, toHz = 0;  ///< 0, 0: 0.9 x the lower and 1.1 x the higher of the estimate's two frequencies
+  response::ForcedResponseSetup::Stability stability = response::ForcedResponseSetup::Stability::Auto;
+  /// The highest harmonic the harmonics check raises H to (0: H + 1; < 0: no check).
+  int harmonicsCheckTo = 0;
+  continuation::ContinuationOptions continuation = discContinuationOptions();
+  /// Retraces a curve `continuation` leaves incomplete (none: not retraced).
+  std::optional<continuation::ContinuationOptions> fallback =
+      discContinuationOptions(continuation::ContinuationOptions::Engine::Loca);
+};
+
+/// The peak a disc run reports: the harmonics check's highest level found.
+struct DiscHeadline {
+  bool found = false;
+  bool converged = false;  ///< its change from the level below is at most 1 %, and no level above failed
+  response::HarmonicsConvergedPeak peak;
+  std::string text;  ///< "friction-damped peak: max|x(t)| ... converged ... / an estimate ..."
+};
+/// The headline of a traced curve (found = false when the harmonics check found no peak).
+DiscHeadline discHeadline(const response::ForcedResponseResult& curve);
+
+struct DiscForcedResponse {
+  std::optional<ResonanceEstimate> estimate;  ///< none when it failed and the range was given
+  std::string estimateText;  ///< what the estimate found, or why it failed
+  double fromHz = 0, toHz = 0;
+  response::ForcedResponseSetup setup;  ///< the system as traced (its state at the curve's end)
+  response::ForcedResponseResult curve;
+  DiscHeadline headline;
+  std::vector<std::string> warnings;  ///< e.g. the largest response at the end of the sweep
+};
+
+/// The frequency curve of the disc `spec` describes over `models` (InputError for an
+/// engine order its sectors cannot carry, a family out of range, or no resonance of the
+/// stuck system in the estimate's scan when no range is given).
+DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, const DiscSweepOptions& options = {});
+
+/// `setup` traced over fromHz..toHz with `options`' continuation, stability and harmonics
+/// check (a parameter study's curves share the reference's range); warnings where the
+/// largest response lies at an end of the sweep.
+response::ForcedResponseResult sweepDisc(response::ForcedResponseSetup& setup, double fromHz, double toHz,
+                                         const DiscSweepOptions& options, std::vector<std::string>& warnings);
+
+}  // namespace cyclone::disc

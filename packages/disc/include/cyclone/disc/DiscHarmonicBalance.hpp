@@ -1,0 +1,87 @@
+#pragma once
+// The nonlinear half of the chain on a bladed disc: the harmonic balance system
+// of one sector given by its reduced models (receptance form), with 3D friction
+// contacts between each right-face shroud contact node and its partner on the
+// neighbouring sector's left face (the engine-order cyclic constraint carries
+// the neighbour), a force at a blade node travelling with engine order EO.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/response/ForcedResponseSetup.hpp"
+
+namespace cyclone::disc {
+
+/// Per contact node pair (Scalvini 2021, Table 8.4: kn = kt = 1e4 N/mm, mu = 0.4).
+struct ShroudContactSpec {
+  std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";  ///< pair order: right[i] = R left[i]
+  double kn = 1e4, kt = 1e4, mu = 0.4;
+  double preload = 0;  ///< N0: normal force at zero relative displacement (N)
+  /// The contact frame, unit and orthogonal: the normal points from this sector into the
+  /// next; zero vectors: the cyclic plane's normal at the right face and the radial direction.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero(), tangent = Eigen::Vector3d::Zero();
+};
+
+/// Gap elements (Scalvini 2021, sec. 8.6) in place of friction contacts at some pairs: the
+/// normal direction only, f = kn max(w_n - clearance, 0) with w_n the normal
+/// approach; clearance > 0 is a gap that must close, < 0 an interference.
+struct ShroudGapSpec {
+  std::vector<int> pairs;  ///< contact pairs (0-based, in the contact node sets' order)
+  double kn = 1e4;         ///< N/mm
+  double clearance = 0;    ///< mm
+};
+
+struct DiscExcitationSpec {
+  std::string nodeSet = "mid_blade";
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< sector 0's frame; normalised
+  double amplitude = 1.0;                                ///< per node (N)
+};
+
+struct DiscResponseSpec {
+  int engineOrder = 0;
+  std::vector<int> harmonics{0, 1, 2, 3};
+  int samples = 0;  ///< 0: what the friction elements recommend
+  ShroudContactSpec contact;
+  ShroudGapSpec gap;
+  DiscExcitationSpec excitation;
+  std::vector<std::string> responseNodeSets{"mid_blade"};
+  /// Solve for the contacts' relative displacements and the excited and output DOFs
+  /// (Petrov's condensed form, hbm/CondensedSystem.hpp) instead of every retained DOF:
+  /// the same solutions, about half the unknowns. Off: the retained DOFs (the other
+  /// nodes' motion in the solution; the condensed form's reference in the tests).
+  bool condensed = true;
+};
+
+/// The contact frame [t1, t2, n] (columns) of the spec; InputError if the given one is not orthonormal.
+Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                   const ShroudContactSpec& contact);
+
+/// The system: receptance form over `models`, one friction3d element named "contact" per
+/// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), or a
+/// unilateral spring named "gap" on w_n for the pairs spec.gap names, the
+/// excitation on harmonic 1, output DOFs the response nodes' x, y, z. Continuation in
+/// omega by default, p = f / referenceHz.
+response::ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, double referenceHz = 1.0);
+
+/// The continuation settings the FE disc's curves are traced with (library users get
+/// the scenes' defaults): the predictor-corrector by default, its steps in its scaled
+/// space (initial 0.01, max 0.2: measured on the default disc, 166 points for the whole
+/// H = 1 curve against 288 with 0.05), Newton to 1e-8; for LOCA its tuned units
+/// (initial 0.002, max 0.02, min 1e-7, its arclength rescaling off, a walk back stopped).
+continuation::ContinuationOptions discContinuationOptions(
+    continuation::ContinuationOptions::Engine engine = continuation::ContinuationOptions::Engine::PredictorCorrector);
+
+/// Where the engine order's resonance lies (Hz): the first natural frequency of its nodal
+/// diameter with the shroud free (`family` counted from 1) and the peak of the response
+/// linearised at rest (contacts stuck, the shroud coupled), found on a fine scan.
+struct ResonanceEstimate {
+  int nodalDiameter = 0;
+  double freeHz = 0, stuckHz = 0;
+};
+ResonanceEstimate estimateResonance(response::ForcedResponseSetup& setup, const DiscReducedModels& models, int family = 1);
+
+}  // namespace cyclone::disc

@@ -1,0 +1,86 @@
+#pragma once
+// The FE half of the chain on a bladed disc: from the mesh of one sector to one
+// reduced model per nodal diameter at the retained DOFs (shroud contact nodes
+// and the excitation/response nodes), on the prestressed tangent at one speed,
+// cantilever configuration (only the disc faces cyclic; the shroud faces free
+// for the contact elements). Models are written to HDF5 under a name holding
+// the content hash of everything they depend on, and reused when it matches.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
+#include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/fe/Material.hpp"
+#include "cyclone/rom/ComplianceModel.hpp"
+
+namespace cyclone::disc {
+
+/// The reduced model per nodal diameter: Petrov's hybrid FRF model (modes plus the exact
+/// static correction), plain modal truncation, Guyan, Craig-Bampton, or the full FE
+/// compliance itself (the reference: a complex solve per frequency).
+enum class ReducedModelKind { Hybrid, Truncation, Guyan, CraigBampton, FullFe };
+/// hybrid, truncation, guyan, craig_bampton, full_fe: the scene's and the files' names.
+std::string reducedModelKindName(ReducedModelKind kind);
+/// The kind of a name (InputError naming `key` for another).
+ReducedModelKind reducedModelKindFromName(const std::string& name, const std::string& key);
+
+struct DiscModelSpec {
+  fe::IsotropicElastic material;
+  std::vector<std::string> fixedNodeSets{"bore"};
+  int sectors = 0;
+  mesh::RotationAxis axis;
+  std::vector<std::string> leftSets{"disc_left"}, rightSets{"disc_right"};  ///< cantilever: disc faces only
+  std::vector<std::string> retainedNodeSets{"shroud_contact_left", "shroud_contact_right", "mid_blade"};
+  double rpm = 0;
+  cyclic::PrestressKind prestress = cyclic::PrestressKind::Nonlinear;
+  ReducedModelKind kind = ReducedModelKind::Hybrid;
+  int modes = 20;                       ///< natural frequencies per nodal diameter (a pair counts once)
+  double omega0 = 0;                    ///< expansion frequency of the hybrid model's static compliance (rad/s)
+  double lossFactor = 0.006;            ///< structural damping (1 + i eta) K; 2 x the modal damping ratio at resonance
+  int checkNodalDiameter = -1;          ///< compare this diameter's model with the full FE model (-1: none)
+  int checkFrequencies = 12;            ///< how many frequencies the check spans (first to fifth family)
+};
+
+/// The centrifugal prestress the spec's models are built on (k = 0 transform of `sector`);
+/// none when spec.prestress is None or the speed is 0.
+std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                                   const DiscModelSpec& spec, linalg::CommPtr comm);
+
+/// The reduced model against the full FE compliance at one nodal diameter.
+struct ReducedModelCheck {
+  int nodalDiameter = -1;
+  std::vector<double> hz, reduced, full;  ///< |A| at the first retained DOF of the excitation direction...
+  std::vector<double> error;              ///< ||A_reduced - A_full||_F / ||A_full||_F per frequency
+  double seconds = 0;                     ///< the full solves
+  double maxError() const;
+};
+
+/// freq_hz,reduced_abs,full_abs,relative_error (written atomically).
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& check);
+
+struct DiscReducedModels {
+  int sectors = 0;
+  cyclic::CyclicSector sector;
+  std::vector<mesh::Index> retainedNodes;  ///< retained DOF 3 i + d is direction d of node retainedNodes[i]
+  std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;  ///< by nodal diameter
+  std::map<int, std::vector<double>> naturalHz;  ///< by nodal diameter: the distinct natural frequencies (cantilever)
+  std::map<int, std::string> files;              ///< by nodal diameter: the HDF5 file (none for full_fe)
+  int reused = 0, built = 0;
+  double seconds = 0;
+  ReducedModelCheck check;  ///< empty unless spec.checkNodalDiameter was built now or its check was cached
+};
+
+/// The nodal diameters harmonics `harmonics` of engine order `engineOrder` live on (h EO mod N folded to 0..N/2).
+std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics);
+
+/// Builds (or reads from `cacheDirectory` when its inputs match) the models of the
+/// nodal diameters asked for. An empty cacheDirectory writes and reuses nothing.
+DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
+                                         const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
+                                         linalg::CommPtr comm);
+
+}  // namespace cyclone::disc

@@ -1,0 +1,94 @@
+#include "cyclone/disc/DiscForcedResponse.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+
+namespace cyclone::disc {
+
+DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
+  constexpr double kConverged = 1e-2;
+  DiscHeadline headline;
+  const auto& best = curve.harmonicsCheck.converged;
+  if (!best.found) return headline;
+  headline.found = true;
+  headline.peak = best;
+  headline.converged = best.change >= 0 && best.change <= kConverged && best.notFoundHarmonic < 0;
+  std::ostringstream line;
+  line.precision(6);
+  line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
+       << best.maxHarmonic;
+  if (best.change < 0)
+    line << "; an estimate: its convergence in the harmonics is not known (no level below it to compare)";
+  else if (best.change <= kConverged)
+    line << "; converged in the harmonics to " << 100 * kConverged << " % (H " << best.belowHarmonic << " -> "
+         << best.maxHarmonic << " changed it by " << 100 * best.change << " %)";
+  else
+    line << "; an estimate, not converged in the harmonics: H " << best.belowHarmonic << " -> " << best.maxHarmonic
+         << " changed it by " << 100 * best.change << " % (disc_frc_harmonics.csv)";
+  // A level above that was tried and not found leaves the error unbounded by the last
+  // change (the default disc at H = 5: docs/scenes.md).
+  if (best.notFoundHarmonic >= 0)
+    line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
+         << "the last change";
+  headline.text = line.str();
+  return headline;
+}
+
+response::ForcedResponseResult sweepDisc(response::ForcedResponseSetup& setup, double fromHz, double toHz,
+                                         const DiscSweepOptions& options, std::vector<std::string>& warnings) {
+  setup.omegaUnit = 2 * M_PI * fromHz;
+  setup.stability = options.stability;
+  setup.harmonicsKey = "disc_response/harmonics";
+  setup.harmonicsCheckTo = options.harmonicsCheckTo;
+  setup.continuation = options.continuation;
+  setup.continuation.from = 1.0, setup.continuation.to = toHz / fromHz;
+  setup.fallback = options.fallback;
+  auto result = response::solveForcedResponse(setup);
+  if (!result.branch.points.empty()) {
+    const double peakHz = result.peakOmega / (2 * M_PI), span = toHz - fromHz;
+    if (peakHz < fromHz + 1e-3 * span || peakHz > toHz - 1e-3 * span) {
+      std::ostringstream msg;
+      msg << "the largest response is at the end of the sweep (" << peakHz << " Hz): the resonance lies outside "
+          << fromHz << ".." << toHz << " Hz";
+      log::warn(msg.str());
+      warnings.push_back(msg.str());
+    }
+  }
+  return result;
+}
+
+DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, const DiscSweepOptions& options) {
+  const bool rangeGiven = options.fromHz > 0 || options.toHz > 0;
+  if (rangeGiven && !(options.fromHz > 0 && options.toHz > options.fromHz))
+    throw InputError("disc_response/frequency_range_hz", "needs two increasing positive frequencies [from, to] in Hz");
+  DiscForcedResponse out;
+  out.setup = makeDiscForcedResponse(mesh, models, spec);
+  // The estimate sets the range unless one is given; then it only informs, and a failed
+  // estimate (no stuck peak on its scan) is reported, not fatal.
+  try {
+    out.estimate = estimateResonance(out.setup, models, options.family);
+    std::ostringstream text;
+    text << "family " << options.family << " at " << out.estimate->freeHz << " Hz with the shroud free, "
+         << out.estimate->stuckHz << " Hz with the contacts stuck";
+    out.estimateText = text.str();
+  } catch (const InputError& e) {
+    if (!rangeGiven) throw;
+    out.estimateText = std::string("no resonance estimate (") + e.what() + ")";
+  }
+  if (rangeGiven) {
+    out.fromHz = options.fromHz, out.toHz = options.toHz;
+  } else {
+    out.fromHz = 0.9 * std::min(out.estimate->freeHz, out.estimate->stuckHz);
+    out.toHz = 1.1 * std::max(out.estimate->freeHz, out.estimate->stuckHz);
+  }
+  out.curve = sweepDisc(out.setup, out.fromHz, out.toHz, options, out.warnings);
+  out.headline = discHeadline(out.curve);
+  if (out.headline.found) log::info(out.headline.text);
+  return out;
+}
+
+}  // namespace cyclone::disc

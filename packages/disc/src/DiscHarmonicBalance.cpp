@@ -1,0 +1,292 @@
+#include "cyclone/disc/DiscHarmonicBalance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/hbm/CondensedSystem.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/ScalarElementAdapter.hpp"
+#include "cyclone/hbm/UnilateralSpring.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/mesh/Mesh.hpp"
+#include "cyclone/rom/SectorReceptance.hpp"
+
+namespace cyclone::disc {
+
+using response::ForcedResponseSetup;
+
+namespace {
+
+Eigen::Vector3d vec(const mesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+int retainedIndex(const DiscReducedModels& models, mesh::Index node, const std::string& set) {
+  const auto it = std::find(models.retainedNodes.begin(), models.retainedNodes.end(), node);
+  if (it == models.retainedNodes.end())
+    throw InputError("reduced_model/retained_node_sets", "does not retain node set '" + set +
+                                                             "', which the forced response uses: add it");
+  return int(it - models.retainedNodes.begin());
+}
+
+// Petrov's condensed unknowns (hbm/CondensedSystem.hpp): each contact's relative
+// displacement and the excited and output DOFs instead of every retained DOF. The
+// same solutions; half the unknowns of the default disc, an 8 times cheaper
+// factorisation per Newton step. Where the coordinates are not independent (an
+// output node on a contact face) the full system stays, and the log says so.
+void condenseOntoContacts(ForcedResponseSetup& setup) {
+  const auto& full = *setup.system;
+  const int n = full.numDofs(), nc = full.numCoefficients();
+  std::vector<int> kept;
+  for (int dof = 0; dof < n; ++dof)
+    if (full.excitation().segment(dof * nc, nc).squaredNorm() > 0 || full.staticLoad().segment(dof * nc, nc).squaredNorm() > 0)
+      kept.push_back(dof);
+  for (int dof : setup.outputDofs)
+    if (std::find(kept.begin(), kept.end(), dof) == kept.end()) kept.push_back(dof);
+  hbm::CondensedSystem condensed;
+  try {
+    condensed = hbm::condenseOntoElements(full, kept);
+  } catch (const InputError& e) {
+    log::info(std::string("forced response: the full retained DOFs are solved (") + e.what() + ")");
+    return;
+  }
+  std::vector<std::string> names;
+  for (int dof : condensed.keptDofs) names.push_back(setup.dofNames[std::size_t(dof)]);
+  const char* axis[] = {"t1", "t2", "n"};
+  for (std::size_t e = 0; e < full.elements().size(); ++e) {
+    const int d = int(full.elements()[e].W.cols());
+    for (int k = 0; k < d; ++k)
+      names.push_back(setup.elementNames[e] + std::to_string(e) + "_" + axis[3 - d + k]);
+  }
+  for (int& dof : setup.outputDofs)
+    dof = int(std::find(condensed.keptDofs.begin(), condensed.keptDofs.end(), dof) - condensed.keptDofs.begin());
+  std::ostringstream msg;
+  msg << "forced response: condensed onto the contacts' relative displacements and the excited and output DOFs, "
+      << condensed.system->numDofs() << " coordinates for " << n << " retained DOFs";
+  log::info(msg.str());
+  setup.dofNames = std::move(names);
+  setup.system = std::move(condensed.system);
+}
+
+}  // namespace
+
+Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                   const ShroudContactSpec& contact) {
+  const auto& right = mesh.nodeSet(contact.rightSet);
+  const Eigen::Vector3d a = vec(models.sector.axis.direction).normalized(), p0 = vec(models.sector.axis.point);
+  Eigen::Vector3d n = contact.normal, t = contact.tangent;
+  if (n.norm() == 0 && t.norm() == 0) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (auto i : right) c += vec(mesh.coords[i]);
+    c /= double(right.size());
+    Eigen::Vector3d r = (c - p0) - (c - p0).dot(a) * a;
+    if (r.norm() == 0) throw InputError("contact", "the right contact face lies on the axis: give normal and tangent");
+    r.normalize();
+    n = a.cross(r);  // towards increasing angle: into the next sector
+    t = r;
+  } else {
+    const double tol = 1e-6;
+    if (std::abs(n.norm() - 1) > tol || std::abs(t.norm() - 1) > tol || std::abs(n.dot(t)) > tol) {
+      std::ostringstream msg;
+      msg << "contact frame not orthonormal: |normal| = " << n.norm() << ", |tangent| = " << t.norm()
+          << ", normal . tangent = " << n.dot(t) << " (give unit vectors at right angles)";
+      throw InputError("contact/normal, contact/tangent", msg.str());
+    }
+  }
+  Eigen::Matrix3d E;
+  E.col(0) = t, E.col(1) = n.cross(t), E.col(2) = n;
+  return E;
+}
+
+ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, double referenceHz) {
+  const int N = models.sectors;
+  if (spec.engineOrder < 1)
+    throw InputError("disc_response/engine_order", "must be >= 1 (engine order " + std::to_string(spec.engineOrder) +
+                                                       " is no travelling excitation; 0 is a static load)");
+  if (spec.engineOrder > N)
+    throw InputError("disc_response/engine_order",
+                     std::to_string(spec.engineOrder) + " on " + std::to_string(N) +
+                         " sectors: the blades see it exactly as engine order " +
+                         std::to_string(spec.engineOrder % N) + " (EO mod N; the excitation exists only at the " +
+                         "sectors, so higher orders fold back); give " + std::to_string(spec.engineOrder % N));
+  if (spec.engineOrder == N)
+    throw InputError("disc_response/engine_order", std::to_string(N) + " on " + std::to_string(N) +
+                                                       " sectors folds to 0: every sector in phase (nodal diameter 0); "
+                                                       "not a travelling wave, use the nodal-diameter-0 response");
+  auto receptance = std::make_shared<rom::SectorReceptance>(N, models.models);
+  const hbm::HarmonicSet harmonics(spec.harmonics);
+  for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
+
+  // Contact pairs: right[i] of this sector against left[i] of the next, seen in this sector's frame.
+  const auto& left = mesh.nodeSet(spec.contact.leftSet);
+  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+  if (left.size() != right.size())
+    throw InputError("contact", "node sets '" + spec.contact.leftSet + "' (" + std::to_string(left.size()) +
+                                    " nodes) and '" + spec.contact.rightSet + "' (" + std::to_string(right.size()) +
+                                    ") do not pair");
+  const Eigen::Matrix3d Q = models.sector.rotation();
+  const Eigen::Vector3d p0 = vec(models.sector.axis.point);
+  double size = 0;
+  for (const auto& c : mesh.coords) size = std::max(size, (vec(c) - p0).norm());
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    const double gap = (Q * (vec(mesh.coords[left[i]]) - p0) + p0 - vec(mesh.coords[right[i]])).norm();
+    if (gap > 1e-6 * size) {
+      std::ostringstream msg;
+      msg << "contact node pairs do not match: right node " << mesh.nodeIds[right[i]] << " is " << gap
+          << " away from the rotated left node " << mesh.nodeIds[left[i]]
+          << " (pair i: right[i] = R(2 pi/N) left[i], in set order)";
+      throw InputError("contact", msg.str());
+    }
+  }
+  const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
+  hbm::FrictionContactParameters p;
+  p.tangentialDirections = 2, p.kn = spec.contact.kn, p.kt = spec.contact.kt, p.mu = spec.contact.mu;
+  p.preload = spec.contact.preload;
+  std::shared_ptr<const hbm::NonlinearElement> element;
+  try {
+    element = std::make_shared<hbm::FrictionContact>(p);
+  } catch (const InputError& e) {
+    throw InputError("contact", e.what());
+  }
+  std::vector<bool> isGap(left.size(), false);
+  std::shared_ptr<const hbm::NonlinearElement> gapElement;
+  if (!spec.gap.pairs.empty()) {
+    for (int i : spec.gap.pairs) {
+      if (i < 0 || i >= int(left.size()))
+        throw InputError("gap/pairs", "pair " + std::to_string(i) + " is not one of the " +
+                                          std::to_string(left.size()) + " contact pairs (0-based)");
+      if (isGap[std::size_t(i)]) throw InputError("gap/pairs", "pair " + std::to_string(i) + " is listed twice");
+      isGap[std::size_t(i)] = true;
+    }
+    if (!(std::isfinite(spec.gap.kn) && spec.gap.kn > 0))
+      throw InputError("gap/kn", "must be a positive stiffness (N/mm), got " + std::to_string(spec.gap.kn));
+    if (!std::isfinite(spec.gap.clearance)) throw InputError("gap/clearance", "must be finite");
+    gapElement = std::make_shared<hbm::ScalarElementAdapter>(
+        std::make_shared<hbm::UnilateralSpring>(spec.gap.kn, spec.gap.clearance));
+  }
+  const int samples = spec.samples > 0 ? spec.samples
+                                       : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
+
+  ForcedResponseSetup setup;
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
+  auto& hb = *setup.system;
+  hbm::CyclicCoupling coupling;
+  coupling.sectors = N, coupling.engineOrder = spec.engineOrder;
+  hb.setCyclic(coupling);
+  // Z = A^-1 per harmonic when every model has the full rank (hybrid, full FE): a
+  // cheaper Newton step than the compliance statement a modal truncation needs.
+  bool invertible = true;
+  for (const auto& [k, m] : models.models) {
+    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
+    if (h && !h->hasStaticCorrection()) invertible = false;
+  }
+  hb.useDynamicStiffness(invertible);
+  const int n = hb.numDofs();
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    const int r = retainedIndex(models, right[i], spec.contact.rightSet);
+    const int l = retainedIndex(models, left[i], spec.contact.leftSet);
+    const int d = isGap[i] ? 1 : 3;  // a gap acts on the normal (the frame's last column) only
+    const Eigen::MatrixXd Ei = E.rightCols(d);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
+    W.middleRows(3 * r, 3) = -Ei;                    // - this sector's right node
+    Wnext.middleRows(3 * l, 3) = Q.transpose() * Ei;  // + the next sector's left node, rotated into this frame
+    hb.addElement(isGap[i] ? gapElement : element, W, Wnext);
+    setup.elementNames.push_back(isGap[i] ? "gap" : "contact");
+  }
+  // Excitation on harmonic 1 (cos), travelling with the engine order.
+  const Eigen::Vector3d d = spec.excitation.direction.normalized();
+  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  for (auto node : mesh.nodeSet(spec.excitation.nodeSet)) {
+    const int i = retainedIndex(models, node, spec.excitation.nodeSet);
+    for (int c = 0; c < 3; ++c)
+      if (d(c) != 0) hb.addExcitation(3 * i + c, 1, spec.excitation.amplitude * d(c));
+  }
+  setup.dofNames.resize(n);
+  for (int i = 0; i < n / 3; ++i)
+    for (int c = 0; c < 3; ++c)
+      setup.dofNames[3 * i + c] = "node" + std::to_string(mesh.nodeIds[models.retainedNodes[i]]) + "_" + "xyz"[c];
+  for (const auto& set : spec.responseNodeSets)
+    for (auto node : mesh.nodeSet(set)) {
+      const int i = retainedIndex(models, node, set);
+      // The output DOF: the direction of the excitation's largest component first.
+      int c0 = 0;
+      d.cwiseAbs().maxCoeff(&c0);
+      setup.outputDofs.push_back(3 * i + c0);
+      for (int c = 0; c < 3; ++c)
+        if (c != c0) setup.outputDofs.push_back(3 * i + c);
+    }
+  if (spec.condensed) condenseOntoContacts(setup);
+  setup.parameter = ForcedResponseSetup::Parameter::Omega;
+  setup.omegaUnit = 2 * M_PI * referenceHz;
+  setup.unknownScale = 0;  // displacements of ~1e-3 mm: scaled to order one for the arclength
+  setup.stability = ForcedResponseSetup::Stability::Auto;  // the scene's disc_response/stability
+  setup.continuation = discContinuationOptions();
+  setup.fallback = discContinuationOptions(continuation::ContinuationOptions::Engine::Loca);
+  return setup;
+}
+
+continuation::ContinuationOptions discContinuationOptions(continuation::ContinuationOptions::Engine engine) {
+  continuation::ContinuationOptions opt;
+  opt.engine = engine;
+  opt.maxSteps = 2000, opt.tolerance = 1e-8;
+  if (engine == continuation::ContinuationOptions::Engine::PredictorCorrector) {
+    opt.initialStep = 0.01, opt.maxStep = 0.2, opt.minStep = 1e-6;
+    opt.turnAngle = 0.12;  // the disc's curves as measured (docs/scenes.md); 0.25 not yet tried there
+  } else {
+    opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7;
+    opt.arcLengthScaling = false;     // the unknowns are scaled to order one (unknownScale)
+    opt.stopWhereItTurnsBack = true;  // never a false "range finished" after walking back from a kink
+  }
+  return opt;
+}
+
+ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReducedModels& models, int family) {
+  auto& hb = *setup.system;
+  ResonanceEstimate out;
+  out.nodalDiameter = hb.nodalDiameter(1);
+  const auto& hz = models.naturalHz.at(out.nodalDiameter);
+  if (family < 1 || family > int(hz.size()))
+    throw InputError("disc_response/family", "must lie in 1.." + std::to_string(hz.size()) +
+                                                 " (the natural frequencies computed per nodal diameter)");
+  out.freeHz = hz[family - 1];
+  // The stuck system's peak: the response linearised at rest on a log scan from below
+  // the family up to 8x its free frequency (stuck shroud contacts stiffen it a lot),
+  // harmonic 1 alone (the linearised harmonics do not couple).
+  const auto first = hbm::withHarmonics(hb, hbm::HarmonicSet({1}), hb.aft().numSamples());
+  const int dof = setup.outputDofs.front(), nc = first->numCoefficients();
+  const int c = first->aft().harmonics().cosIndex(1);
+  auto amplitude = [&](double f) {
+    const Eigen::VectorXd X = first->linearizedSolution(2 * M_PI * f, setup.excitationScale);
+    return std::hypot(X(dof * nc + c), X(dof * nc + c + 1));
+  };
+  const double lo = (family > 1 ? hz[family - 2] * 1.02 : 0.8 * out.freeHz), hi = 8.0 * out.freeHz;
+  const int steps = 300;
+  std::vector<double> f(steps + 1), amp(steps + 1);
+  for (int i = 0; i <= steps; ++i) f[i] = lo * std::pow(hi / lo, double(i) / steps), amp[i] = amplitude(f[i]);
+  // The first interior local maximum that stands out (a resonance, not a flat rise).
+  int at = -1;
+  for (int i = 1; i < steps; ++i)
+    if (amp[i] > amp[i - 1] && amp[i] >= amp[i + 1] && amp[i] > 2 * std::min(amp[0], amp[steps])) {
+      at = i;
+      break;
+    }
+  if (at < 0)
+    throw InputError("disc_response", "no resonance of the stuck system between " + std::to_string(lo) + " and " +
+                                          std::to_string(hi) + " Hz: give frequency_range_hz");
+  out.stuckHz = f[at];
+  // Golden-section polish on the bracketing scan interval.
+  double a = f[at - 1], b = f[at + 1];
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  for (int it = 0; it < 40; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (amplitude(x1) > amplitude(x2)) b = x2;
+    else a = x1;
+  }
+  out.stuckHz = 0.5 * (a + b);
+  return out;
+}
+
+}  // namespace cyclone::disc

@@ -1,0 +1,277 @@
+#include "cyclone/disc/DiscReducedModels.hpp"
+
+#include <Teuchos_Comm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/ContentHash.hpp"
+#include "cyclone/mesh/MeshDigest.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/cyclic/CyclicTransform.hpp"
+#include "cyclone/cyclic/Prestress.hpp"
+#include "cyclone/io/ReducedModelFile.hpp"
+#include "cyclone/rom/BoundaryReduction.hpp"
+#include "cyclone/rom/CraigBamptonModel.hpp"
+#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/GuyanModel.hpp"
+
+namespace cyclone::disc {
+
+std::string reducedModelKindName(ReducedModelKind kind) {
+  switch (kind) {
+    case ReducedModelKind::Hybrid: return "hybrid";
+    case ReducedModelKind::Truncation: return "truncation";
+    case ReducedModelKind::Guyan: return "guyan";
+    case ReducedModelKind::CraigBampton: return "craig_bampton";
+    case ReducedModelKind::FullFe: return "full_fe";
+  }
+  return "";
+}
+
+ReducedModelKind reducedModelKindFromName(const std::string& name, const std::string& key) {
+  for (auto kind : {ReducedModelKind::Hybrid, ReducedModelKind::Truncation, ReducedModelKind::Guyan,
+                    ReducedModelKind::CraigBampton, ReducedModelKind::FullFe})
+    if (reducedModelKindName(kind) == name) return kind;
+  throw InputError(key, "unknown kind '" + name +
+                            "' (hybrid: modes + exact static correction; truncation: modes only; guyan; "
+                            "craig_bampton: `modes` fixed-interface modes; full_fe: the FE compliance itself, the "
+                            "reference)");
+}
+
+std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics) {
+  std::set<int> nds;
+  for (int h : harmonics) {
+    const long k = ((long(h) * engineOrder) % sectors + sectors) % sectors;
+    nds.insert(int(2 * k > sectors ? sectors - k : k));
+  }
+  return {nds.begin(), nds.end()};
+}
+
+namespace {
+
+// The prestress as the cache's digests have named it since its first version.
+std::string prestressName(cyclic::PrestressKind kind) {
+  switch (kind) {
+    case cyclic::PrestressKind::None: return "none";
+    case cyclic::PrestressKind::Linear: return "linear";
+    case cyclic::PrestressKind::Nonlinear: return "nonlinear";
+  }
+  return "";
+}
+
+// Everything a model of one nodal diameter depends on, mesh included.
+std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
+  ContentHash h;
+  h.add(std::string("cyclone reduced model v1"));
+  mesh::addToHash(h, mesh);
+  for (const auto& sets : {s.fixedNodeSets, s.leftSets, s.rightSets, s.retainedNodeSets})
+    mesh::addNodeSetsToHash(h, mesh, sets);
+  h.add(s.material.E).add(s.material.nu).add(s.material.rho);
+  h.add(s.sectors).add(s.axis.point.data(), sizeof(double) * 3).add(s.axis.direction.data(), sizeof(double) * 3);
+  h.add(s.rpm).add(prestressName(s.prestress)).add(reducedModelKindName(s.kind)).add(s.modes).add(s.omega0).add(s.lossFactor).add(nd);
+  return h.hex();
+}
+
+// Natural frequencies in Hz from eigenvalues with pairs listed twice (a pair counts once).
+std::vector<double> distinctHz(const std::vector<double>& eigenvalues, int copies) {
+  std::vector<double> hz;
+  for (std::size_t j = 0; j < eigenvalues.size(); j += std::size_t(copies))
+    hz.push_back(std::sqrt(std::max(eigenvalues[j], 0.0)) / (2 * M_PI));
+  return hz;
+}
+
+ReducedModelCheck readCheck(const std::string& path, int nd) {
+  ReducedModelCheck c;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) return c;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string v[4];
+    for (auto& x : v) std::getline(cells, x, ',');
+    c.hz.push_back(std::stod(v[0])), c.reduced.push_back(std::stod(v[1]));
+    c.full.push_back(std::stod(v[2])), c.error.push_back(std::stod(v[3]));
+  }
+  c.nodalDiameter = nd;
+  return c;
+}
+
+}  // namespace
+
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& c) {
+  AtomicFile file(path);
+  std::ofstream out(file.tempPath());
+  out.precision(12);
+  out << "freq_hz,reduced_abs,full_abs,relative_error\n";
+  for (std::size_t i = 0; i < c.hz.size(); ++i)
+    out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
+  out.close();
+  if (!out) throw Error("cannot write " + path);
+  file.commit();
+}
+
+double ReducedModelCheck::maxError() const {
+  double e = 0;
+  for (double x : error) e = std::max(e, x);
+  return e;
+}
+
+std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                                   const DiscModelSpec& spec, linalg::CommPtr comm) {
+  if (spec.prestress == cyclic::PrestressKind::None || spec.rpm == 0) return std::nullopt;
+  fe::Axis axis;
+  axis.point = Eigen::Vector3d(spec.axis.point[0], spec.axis.point[1], spec.axis.point[2]);
+  axis.direction = Eigen::Vector3d(spec.axis.direction[0], spec.axis.direction[1], spec.axis.direction[2]);
+  const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, spec.fixedNodeSets);
+  return spec.prestress == cyclic::PrestressKind::Linear ? cyclic::solveLinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm)
+                                    : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
+}
+
+DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
+                                         const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
+                                         linalg::CommPtr comm) {
+  if (spec.modes < 1) throw InputError("reduced_model/modes", "must be at least 1");
+  if (nodalDiameters.empty()) throw InputError("reduced_model", "no nodal diameters asked for");
+  Timer timer;
+  DiscReducedModels out;
+  out.sectors = spec.sectors;
+  out.sector = cyclic::makeCyclicSector(mesh, spec.sectors, spec.axis, spec.leftSets, spec.rightSets);
+  for (int k : nodalDiameters) cyclic::checkHarmonicIndex(spec.sectors, k);
+  for (const auto& name : spec.retainedNodeSets)
+    for (mesh::Index n : mesh.nodeSet(name))
+      if (std::find(out.retainedNodes.begin(), out.retainedNodes.end(), n) == out.retainedNodes.end())
+        out.retainedNodes.push_back(n);
+
+  rom::HarmonicModelProblem problem;
+  problem.material = spec.material;
+  problem.fixedNodeSets = spec.fixedNodeSets;
+  problem.retainedNodeSets = spec.retainedNodeSets;
+  problem.lossFactor = spec.lossFactor;
+  std::optional<cyclic::PrestressState> prestress;
+  bool prestressed = false;
+  auto ensurePrestress = [&] {
+    if (prestressed) return;
+    prestress = discPrestress(mesh, out.sector, spec, comm);
+    prestressed = true;
+    if (prestress) problem.prestress = &*prestress;
+  };
+
+  // Every reduced kind has an HDF5 form; the full FE model is the reference and is rebuilt.
+  const bool cache = !cacheDirectory.empty() && spec.kind != ReducedModelKind::FullFe;
+  if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
+  for (int k : nodalDiameters) {
+    const std::string path =
+        cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
+              : std::string();
+    std::optional<io::ReducedModelRecord> cached;
+    if (cache && std::filesystem::exists(path)) {
+      try {
+        cached = io::readReducedModelHdf5(path);
+      } catch (const std::exception& e) {
+        // Truncated or damaged (a killed copy, a full disk): rebuilt and written again.
+        log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " cannot be read (" + e.what() +
+                  "); rebuilding it");
+      }
+    }
+    if (cached) {
+      if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
+        out.check = readCheck(path + ".check.csv", k);
+      const auto& record = *cached;
+      if (record.kind != reducedModelKindName(spec.kind))
+        throw InputError(path, "holds a " + record.kind + " model, " + reducedModelKindName(spec.kind) + " expected");
+      // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
+      out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
+                             ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)
+                             : distinctHz(record.modes.eigenvalues, record.modes.copies);
+      if (out.naturalHz[k].empty()) throw InputError(path, "holds no natural frequencies of the full model");
+      out.models[k] = record.model();
+      out.files[k] = path;
+      ++out.reused;
+      log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
+      continue;
+    }
+    ensurePrestress();
+    problem.harmonic = k;
+    Timer build;
+    auto full = std::make_shared<rom::CyclicHarmonicModel>(mesh, out.sector, problem, comm);
+    const auto modes = full->modes(spec.modes);
+    if (modes.numRigidBodyModes() > 0)
+      throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +
+                                                          ": a disc response needs the disc held (e.g. the bore)");
+    out.naturalHz[k] = distinctHz(modes.eigenvalues, modes.copies);
+    std::shared_ptr<const rom::ComplianceModel> model;
+    std::shared_ptr<const rom::HybridFrfModel> hybrid;
+    std::shared_ptr<const rom::GuyanModel> guyan;
+    std::shared_ptr<const rom::CraigBamptonModel> craigBampton;
+    if (spec.kind == ReducedModelKind::FullFe) {
+      model = full;
+    } else if (spec.kind == ReducedModelKind::Guyan || spec.kind == ReducedModelKind::CraigBampton) {
+      const auto reduction = rom::reduceOntoRetainedDofs(*full, spec.kind == ReducedModelKind::Guyan ? 0 : spec.modes);
+      if (spec.kind == ReducedModelKind::Guyan) model = guyan = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
+      else model = craigBampton = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
+    } else {
+      hybrid = spec.kind == ReducedModelKind::Hybrid
+                   ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes),
+                                                           spec.lossFactor)
+                   : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
+      model = hybrid;
+    }
+    out.models[k] = model;
+    ++out.built;
+    if (k == spec.checkNodalDiameter && spec.kind != ReducedModelKind::FullFe && spec.checkFrequencies > 0) {
+      // From half the first natural frequency to the fifth's (or the last computed), log-spaced.
+      Timer check;
+      const auto& hz = out.naturalHz[k];
+      const double lo = 0.5 * hz.front(), hi = 1.05 * hz[std::min<std::size_t>(4, hz.size() - 1)];
+      auto& c = out.check;
+      c.nodalDiameter = k;
+      for (int i = 0; i < spec.checkFrequencies; ++i) {
+        const double f = lo * std::pow(hi / lo, double(i) / std::max(1, spec.checkFrequencies - 1));
+        const Eigen::MatrixXcd Ar = model->compliance(2 * M_PI * f), Af = full->compliance(2 * M_PI * f);
+        c.hz.push_back(f);
+        c.reduced.push_back(std::abs(Ar(Ar.rows() - 1, Ar.rows() - 1)));  // the last retained node's last direction
+        c.full.push_back(std::abs(Af(Af.rows() - 1, Af.rows() - 1)));
+        c.error.push_back((Ar - Af).norm() / Af.norm());
+      }
+      c.seconds = check.seconds();
+      std::ostringstream line;
+      line << "reduced model check at ND " << k << ": largest relative error " << c.maxError() << " over "
+           << spec.checkFrequencies << " frequencies " << lo << ".." << hi << " Hz (" << c.seconds << " s)";
+      log::info(line.str());
+      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", c);
+    }
+    std::ostringstream msg;
+    msg << "reduced model ND " << k << " (" << reducedModelKindName(spec.kind) << ", " << spec.modes << " natural frequencies, "
+        << full->size() << " retained DOFs): built in " << build.seconds() << " s; first " << out.naturalHz[k].front()
+        << " Hz";
+    log::info(msg.str());
+    if (cache) {
+      std::vector<int> nodes, directions, copies;
+      const int nn = int(out.retainedNodes.size());
+      for (int c = 0; c < full->copies(); ++c)
+        for (int i = 0; i < nn; ++i)
+          for (int d = 0; d < 3; ++d)
+            nodes.push_back(int(out.retainedNodes[i])), directions.push_back(d), copies.push_back(c);
+      auto record =
+          hybrid ? io::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies)
+          : guyan ? io::makeReducedModelRecord(*guyan, k, spec.sectors, spec.rpm, nodes, directions, copies)
+                  : io::makeReducedModelRecord(*craigBampton, k, spec.sectors, spec.rpm, nodes, directions, copies);
+      if (!hybrid) record.fullModelEigenvalues = modes.eigenvalues;
+      if (comm->getRank() == 0) io::writeReducedModelHdf5(path, record);
+      out.files[k] = path;
+    }
+  }
+  comm->barrier();
+  out.seconds = timer.seconds();
+  return out;
+}
+
+}  // namespace cyclone::disc

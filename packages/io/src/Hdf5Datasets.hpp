@@ -1,0 +1,61 @@
+#pragma once
+// Small HDF5 helpers shared by the package's file formats (private header).
+#include <H5Cpp.h>
+
+#include <string>
+#include <vector>
+
+namespace cyclone::io::hdf5 {
+
+template <class T>
+void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, const H5::PredType& type) {
+  const hsize_t dims[1] = {v.size()};
+  H5::DataSpace space(1, dims);
+  file.createDataSet(name, type, space).write(v.data(), type);
+}
+
+template <class T>
+std::vector<T> readVector(H5::H5File& file, const char* name, const H5::PredType& type) {
+  auto set = file.openDataSet(name);
+  hsize_t dims[1];
+  set.getSpace().getSimpleExtentDims(dims);
+  std::vector<T> v(dims[0]);
+  if (!v.empty()) set.read(v.data(), type);
+  return v;
+}
+
+// Scalar attributes on the file's root group.
+template <class T>
+void writeAttribute(H5::H5File& file, const char* name, T value, const H5::PredType& type) {
+  file.createAttribute(name, type, H5::DataSpace(H5S_SCALAR)).write(type, &value);
+}
+
+template <class T>
+T readAttribute(H5::H5File& file, const char* name, const H5::PredType& type) {
+  T value{};
+  file.openAttribute(name).read(type, &value);
+  return value;
+}
+
+inline void writeIntAttribute(H5::H5File& f, const char* n, int v) { writeAttribute(f, n, v, H5::PredType::NATIVE_INT); }
+inline int readIntAttribute(H5::H5File& f, const char* n) { return readAttribute<int>(f, n, H5::PredType::NATIVE_INT); }
+inline void writeDoubleAttribute(H5::H5File& f, const char* n, double v) {
+  writeAttribute(f, n, v, H5::PredType::NATIVE_DOUBLE);
+}
+inline double readDoubleAttribute(H5::H5File& f, const char* n) {
+  return readAttribute<double>(f, n, H5::PredType::NATIVE_DOUBLE);
+}
+
+// Fixed-length string attributes (what h5dump and h5py show as plain strings).
+inline void writeStringAttribute(H5::H5File& f, const char* n, const std::string& v) {
+  const H5::StrType type(H5::PredType::C_S1, v.empty() ? 1 : v.size());
+  f.createAttribute(n, type, H5::DataSpace(H5S_SCALAR)).write(type, v);
+}
+inline std::string readStringAttribute(H5::H5File& f, const char* n) {
+  auto attr = f.openAttribute(n);
+  std::string v;
+  attr.read(attr.getStrType(), v);
+  return v;
+}
+
+}  // namespace cyclone::io::hdf5

@@ -1,0 +1,175 @@
+#include "cyclone/io/TraceCheckpointDirectory.hpp"
+
+#include <H5Cpp.h>
+
+#include <filesystem>
+
+#include "Hdf5Datasets.hpp"
+
+#include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+
+namespace cyclone::io {
+
+using namespace hdf5;
+using continuation::TraceState;
+
+namespace {
+
+// Rows of equal length as a [rows x n] dataset (rows of another length are stored as
+// zeros: the caller marks them).
+void writeRows(H5::H5File& h5, const char* name, const std::vector<Eigen::VectorXd>& rows, std::size_t n) {
+  std::vector<double> flat(rows.size() * n, 0.0);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (std::size_t(rows[i].size()) == n) std::copy(rows[i].data(), rows[i].data() + n, flat.begin() + long(i * n));
+  const hsize_t dims[2] = {rows.size(), n};
+  H5::DataSpace space(2, dims);
+  auto set = h5.createDataSet(name, H5::PredType::NATIVE_DOUBLE, space);
+  if (!flat.empty()) set.write(flat.data(), H5::PredType::NATIVE_DOUBLE);
+}
+
+std::vector<Eigen::VectorXd> readRows(H5::H5File& h5, const char* name) {
+  auto set = h5.openDataSet(name);
+  hsize_t dims[2];
+  if (set.getSpace().getSimpleExtentNdims() != 2) throw Error(std::string(name) + " is not two-dimensional");
+  set.getSpace().getSimpleExtentDims(dims);
+  std::vector<double> flat(dims[0] * dims[1]);
+  if (!flat.empty()) set.read(flat.data(), H5::PredType::NATIVE_DOUBLE);
+  std::vector<Eigen::VectorXd> rows;
+  for (hsize_t i = 0; i < dims[0]; ++i)
+    rows.push_back(Eigen::Map<const Eigen::VectorXd>(flat.data() + i * dims[1], Eigen::Index(dims[1])));
+  return rows;
+}
+
+void writeLong(H5::H5File& h5, const char* name, long v) { writeAttribute(h5, name, v, H5::PredType::NATIVE_LONG); }
+long readLong(H5::H5File& h5, const char* name) { return readAttribute<long>(h5, name, H5::PredType::NATIVE_LONG); }
+
+}  // namespace
+
+void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s) {
+  if (readOnly_) return;
+  std::filesystem::create_directories(dir_);
+  const std::string final = path(key);
+  AtomicFile file(final);
+  const auto& b = s.branch;
+  const std::size_t P = b.points.size(), n = P > 0 ? std::size_t(b.points.front().x.size()) : 0;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    std::vector<double> parameter;
+    std::vector<Eigen::VectorXd> x;
+    for (const auto& pt : b.points) parameter.push_back(pt.parameter), x.push_back(pt.x);
+    writeVector(h5, "parameter", parameter, H5::PredType::NATIVE_DOUBLE);
+    writeRows(h5, "x", x, n);
+    std::vector<long> starts(b.segmentStarts.begin(), b.segmentStarts.end());
+    writeVector(h5, "segment_starts", starts, H5::PredType::NATIVE_LONG);
+    writeIntAttribute(h5, "complete", s.complete);
+    writeIntAttribute(h5, "finished", b.finished);
+    writeIntAttribute(h5, "returned_to_start", b.returnedToStart);
+    writeDoubleAttribute(h5, "reached", b.reached);
+    writeStringAttribute(h5, "stop_reason", b.stopReason);
+    writeIntAttribute(h5, "failed_steps", b.failedSteps);
+    const auto& st = b.statistics;
+    writeIntAttribute(h5, "newton_iterations", st.newtonIterations);
+    writeIntAttribute(h5, "rejected_steps", st.rejectedSteps);
+    writeIntAttribute(h5, "spherical_steps", st.sphericalSteps);
+    writeLong(h5, "residuals", st.residuals);
+    writeLong(h5, "jacobians", st.jacobians);
+    writeLong(h5, "factorizations", st.factorizations);
+    writeDoubleAttribute(h5, "residual_seconds", st.residualSeconds);
+    writeDoubleAttribute(h5, "jacobian_seconds", st.jacobianSeconds);
+    writeDoubleAttribute(h5, "factor_seconds", st.factorSeconds);
+    writeDoubleAttribute(h5, "seconds", st.seconds);
+    if (!s.complete) {
+      if (s.tangentX.size() != P || s.tangentP.size() != P || s.measures.size() != P)
+        throw Error("trace checkpoint: per-point state of inconsistent length");
+      std::vector<int> known;
+      for (const auto& t : s.tangentX) known.push_back(std::size_t(t.size()) == n ? 1 : 0);
+      writeVector(h5, "tangent_known", known, H5::PredType::NATIVE_INT);
+      writeRows(h5, "tangent_x", s.tangentX, n);
+      writeVector(h5, "tangent_p", s.tangentP, H5::PredType::NATIVE_DOUBLE);
+      writeVector(h5, "measure", s.measures, H5::PredType::NATIVE_DOUBLE);
+      writeRows(h5, "direction_x", {s.directionX}, std::size_t(s.directionX.size()));
+      writeDoubleAttribute(h5, "direction_p", s.directionP);
+      writeDoubleAttribute(h5, "step", s.step);
+      writeDoubleAttribute(h5, "scale_x", s.scaleX);
+      writeDoubleAttribute(h5, "scale_p", s.scaleP);
+      writeDoubleAttribute(h5, "largest_norm", s.largestNorm);
+      writeDoubleAttribute(h5, "scale_floor", s.scaleFloor);
+      writeLong(h5, "retractions", s.retractions);
+      writeLong(h5, "anchor", s.anchor);
+      writeLong(h5, "creep_checked", s.creepChecked);
+    }
+  } catch (const H5::Exception& e) {
+    throw Error("cannot write " + final + ": " + e.getDetailMsg());
+  }
+  file.commit();
+}
+
+std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key) {
+  const std::string p = path(key);
+  if (!std::filesystem::exists(p)) return std::nullopt;
+  TraceState s;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File h5(p, H5F_ACC_RDONLY);
+    auto& b = s.branch;
+    const auto parameter = readVector<double>(h5, "parameter", H5::PredType::NATIVE_DOUBLE);
+    auto x = readRows(h5, "x");
+    if (x.size() != parameter.size()) throw Error("points and parameters differ in number");
+    for (std::size_t i = 0; i < x.size(); ++i) b.points.push_back({parameter[i], std::move(x[i])});
+    for (long v : readVector<long>(h5, "segment_starts", H5::PredType::NATIVE_LONG)) b.segmentStarts.push_back(std::size_t(v));
+    s.complete = readIntAttribute(h5, "complete") != 0;
+    b.finished = readIntAttribute(h5, "finished") != 0;
+    b.returnedToStart = readIntAttribute(h5, "returned_to_start") != 0;
+    b.reached = readDoubleAttribute(h5, "reached");
+    b.stopReason = readStringAttribute(h5, "stop_reason");
+    b.failedSteps = readIntAttribute(h5, "failed_steps");
+    auto& st = b.statistics;
+    st.newtonIterations = readIntAttribute(h5, "newton_iterations");
+    st.rejectedSteps = readIntAttribute(h5, "rejected_steps");
+    st.sphericalSteps = readIntAttribute(h5, "spherical_steps");
+    st.residuals = readLong(h5, "residuals");
+    st.jacobians = readLong(h5, "jacobians");
+    st.factorizations = readLong(h5, "factorizations");
+    st.residualSeconds = readDoubleAttribute(h5, "residual_seconds");
+    st.jacobianSeconds = readDoubleAttribute(h5, "jacobian_seconds");
+    st.factorSeconds = readDoubleAttribute(h5, "factor_seconds");
+    st.seconds = readDoubleAttribute(h5, "seconds");
+    if (!s.complete) {
+      if (b.points.empty()) throw Error("an unfinished trace without points");
+      const auto known = readVector<int>(h5, "tangent_known", H5::PredType::NATIVE_INT);
+      s.tangentX = readRows(h5, "tangent_x");
+      s.tangentP = readVector<double>(h5, "tangent_p", H5::PredType::NATIVE_DOUBLE);
+      s.measures = readVector<double>(h5, "measure", H5::PredType::NATIVE_DOUBLE);
+      const std::size_t P = b.points.size();
+      if (known.size() != P || s.tangentX.size() != P || s.tangentP.size() != P || s.measures.size() != P)
+        throw Error("per-point state of inconsistent length");
+      for (std::size_t i = 0; i < P; ++i)
+        if (!known[i]) s.tangentX[i].resize(0);
+      auto direction = readRows(h5, "direction_x");
+      if (direction.size() != 1) throw Error("no direction");
+      s.directionX = std::move(direction[0]);
+      s.directionP = readDoubleAttribute(h5, "direction_p");
+      s.step = readDoubleAttribute(h5, "step");
+      s.scaleX = readDoubleAttribute(h5, "scale_x");
+      s.scaleP = readDoubleAttribute(h5, "scale_p");
+      s.largestNorm = readDoubleAttribute(h5, "largest_norm");
+      s.scaleFloor = readDoubleAttribute(h5, "scale_floor");
+      s.retractions = readLong(h5, "retractions");
+      s.anchor = readLong(h5, "anchor");
+      s.creepChecked = readLong(h5, "creep_checked");
+      if (s.anchor < 0 || std::size_t(s.anchor) >= P || s.creepChecked < 0) throw Error("counters out of range");
+    }
+  } catch (const std::exception& e) {
+    log::warn("continuation: checkpoint " + p + " cannot be read (" + e.what() + "); that trace is computed again");
+    return std::nullopt;
+  } catch (const H5::Exception& e) {
+    log::warn("continuation: checkpoint " + p + " cannot be read (" + e.getDetailMsg() + "); that trace is computed again");
+    return std::nullopt;
+  }
+  return s;
+}
+
+}  // namespace cyclone::io

@@ -1,0 +1,76 @@
+#pragma once
+// The checks of a traced forced-response curve at its largest-response point: the AFT's
+// sample count (the point solved again with twice the samples) and the harmonic
+// truncation (on a frequency curve the peak found again with H + 1, H + 2, ...; on other
+// curves the point solved with one harmonic more). Friction and gaps place their events
+// only to within a sample, and a friction-damped peak moves with H, so both are
+// measured on every curve rather than assumed.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/continuation/PeakSearch.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/response/ForcedResponseSetup.hpp"
+
+namespace cyclone::response {
+
+/// The peak of the first output DOF's max |x(t)| solved again with twice the samples.
+struct SamplesCheck {
+  bool solved = false;  ///< Newton converged with 2N samples
+  int samples = 0;      ///< N, the curve's
+  double change = -1;   ///< |peak(2N) / peak(N) - 1| when solved
+  double residual = 0;  ///< Newton's last residual when not solved
+  std::string text;     ///< one line saying the above
+};
+SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::BranchPoint& point, double peak);
+
+/// One level of the harmonics check of a frequency curve.
+struct HarmonicsLevel {
+  int maxHarmonic = 0;
+  std::vector<int> harmonics;  ///< the level's harmonic set
+  int samples = 0;             ///< and its samples per period
+  continuation::PeakSearchResult peak;  ///< its parameter is the frequency in Hz
+  double seconds = 0;
+  double startHz = 0;  ///< where the search started (the level below's peak, or its flank)
+};
+
+/// The peak at the highest harmonic count the check reached, with the change from the
+/// level below: a frequency curve's headline.
+struct HarmonicsConvergedPeak {
+  bool found = false;
+  int maxHarmonic = 0;
+  double value = 0, hz = 0;
+  int belowHarmonic = -1;     ///< the level compared with (-1: none found)
+  double change = -1;         ///< |peak / peak below - 1| (-1: not known)
+  int notFoundHarmonic = -1;  ///< the next level, tried and its peak not found (-1: none)
+  /// The peak's solution: the curve's system raised to `harmonics` with `samples`
+  /// (hbm::withHarmonics), at hz.
+  Eigen::VectorXd x;
+  std::vector<int> harmonics;
+  int samples = 0;
+};
+
+struct HarmonicsCheck {
+  int dof = 0;                          ///< the output DOF whose peak is compared
+  std::vector<HarmonicsLevel> levels;   ///< a frequency curve's levels H, H + 1, ... (empty: the point check)
+  HarmonicsConvergedPeak converged;     ///< the highest level found (frequency curves)
+  std::string text;                     ///< one line: the levels, the last change, the time
+};
+/// The check at `branch.points[ip]` (its max |x(t)| `peak`): on a frequency curve the
+/// peaks with H up to max(setup.harmonicsCheckTo, H + 1), each level's peak search from
+/// the one below's; otherwise (and where a frequency curve has no interior peak) the
+/// point with harmonics 0..H+1. Not possible (said in the text) when the system has
+/// nothing for a raised harmonic.
+HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
+                              double peak);
+
+/// The solvers hold about four dense matrices of the unknowns' size: an InputError
+/// naming `harmonicsKey` where they would not fit in this machine's memory, a warning
+/// where each Newton iteration takes seconds.
+void checkDenseSize(const hbm::HarmonicBalanceSystem& system, const std::string& harmonicsKey);
+
+}  // namespace cyclone::response

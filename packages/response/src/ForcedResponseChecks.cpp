@@ -1,0 +1,337 @@
+#include "cyclone/response/ForcedResponseChecks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "cyclone/continuation/HomotopySolve.hpp"
+#include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/hbm/PeakMagnitude.hpp"
+
+namespace cyclone::response {
+
+SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
+  const auto [w, scale] = setup.apply(pt.parameter);
+  const auto& hb = *setup.system;
+  const int N = hb.aft().numSamples(), dof = setup.outputDofs.front(), nc = hb.numCoefficients();
+  const auto doubled = hbm::withHarmonics(hb, hb.aft().harmonics(), 2 * N);
+  // The force-scale form at this frequency: the same row scaling as the trace.
+  const auto problem = continuationProblem(*doubled, ForcedResponseSetup::Parameter::ForceScale, w);
+  Eigen::VectorXd X = pt.x;
+  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  SamplesCheck check;
+  check.samples = N;
+  std::ostringstream out;
+  if (!newton.converged) {
+    check.residual = newton.residualNorm;
+    out << "samples check: no solution with " << 2 * N << " samples at the peak (residual " << newton.residualNorm
+        << "); the sample count " << N << " may be too small";
+    log::warn(out.str());
+    check.text = out.str();
+    return check;
+  }
+  check.solved = true;
+  const double after = hbm::peakMagnitude(hb.aft().harmonics(), Eigen::VectorXd(X.segment(dof * nc, nc)));
+  check.change = std::abs(after / peak - 1);
+  out << "samples check: " << N << " -> " << 2 * N << " samples changes the peak max|x| of DOF " << dof << " by "
+      << check.change << " (relative)";
+  if (check.change > 1e-2) log::warn(out.str() + ": raise `samples`");
+  check.text = out.str();
+  return check;
+}
+
+// The solvers hold about four dense matrices of the unknowns' size (the Jacobian, the
+// bordered one and the factors of two of them): refused where they would not fit in
+// this machine's memory, a warning where each Newton iteration takes seconds (one
+// Jacobian and LU took about 1 s at 2349 unknowns on the default disc).
+void checkDenseSize(const hbm::HarmonicBalanceSystem& hb, const std::string& harmonicsKey) {
+  constexpr double kMaxGigabytes = 12, kSlowUnknowns = 5000;
+  const double n = hb.numUnknowns(), gigabytes = 4 * 8 * n * n / 1e9;
+  std::ostringstream what;
+  what.precision(3);
+  what << hb.aft().harmonics().size() << " harmonics (up to " << hb.aft().harmonics().maxHarmonic() << ") on "
+       << hb.numDofs() << " DOFs make " << hb.numUnknowns() << " unknowns";
+  if (gigabytes > kMaxGigabytes) {
+    what << ": the dense Jacobian and its factors would take " << gigabytes << " GB (at most " << kMaxGigabytes
+         << " here); use fewer harmonics";
+    throw InputError(harmonicsKey, what.str());
+  }
+  if (n > kSlowUnknowns)
+    log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
+              std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");
+}
+
+
+namespace {
+
+// `set` and one harmonic more (h), with at least the system's samples.
+hbm::HarmonicSet withHarmonic(const hbm::HarmonicSet& set, int h) {
+  std::vector<int> list = set.harmonics();
+  list.push_back(h);
+  return hbm::HarmonicSet(list);
+}
+std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
+                                                         const hbm::HarmonicSet& raised) {
+  auto system = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
+  checkDenseSize(*system, "harmonics_check_to");
+  return system;
+}
+
+// The largest response of DOF `dof` along a frequency curve near the solution X at
+// `hz`: the peak search at fixed frequencies (PeakSearch.hpp), which passes the
+// corners of friction paths where an arclength corrector stalls. Its parameter is the
+// frequency in Hz (what its messages name). The window (+-5 %, and `offset` more for
+// a start that far from the peak it seeks) holds the shift of a friction-damped peak
+// between harmonic truncations.
+continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& system, const Eigen::VectorXd& X,
+                                          double hz, double excitationScale, int dof, double tolerance,
+                                          double offset = 0) {
+  const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
+  continuation::ContinuationProblem problem = byOmega;
+  problem.residual = [byOmega](const Eigen::VectorXd& x, double f, Eigen::VectorXd& R) {
+    byOmega.residual(x, 2 * M_PI * f, R);
+  };
+  problem.jacobian = [byOmega](const Eigen::VectorXd& x, double f, Eigen::MatrixXd& J) {
+    byOmega.jacobian(x, 2 * M_PI * f, J);
+  };
+  const int nc = system.numCoefficients();
+  const auto& H = system.aft().harmonics();
+  continuation::PeakSearchOptions o;
+  o.step = 1e-3 * hz, o.maxStep = 5e-3 * hz, o.minStep = 1e-8 * hz;
+  o.window = 0.05 * hz + std::abs(offset), o.parameterTolerance = 1e-5 * hz;
+  o.tolerance = tolerance;
+  // From a neighbour's prediction Newton converges in a few iterations; one that does not
+  // within 20 is cut (a step) or replaced (a flank start at a level's start), not waited for.
+  o.maxNewtonIterations = 20;
+  const auto measure = [&](const Eigen::VectorXd& x) {
+    return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc)));
+  };
+  return continuation::findLocalPeak(problem, X, hz, measure, o);
+}
+
+// The solution X of the level below, carried to `system` (one harmonic more, h), solved
+// at `hz`: Newton, or where it stalls the homotopy that switches the new harmonic's
+// equations on (HomotopySolve.hpp). X is updated in place.
+continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& system, Eigen::VectorXd& X, double hz,
+                                          double excitationScale, int h, double tolerance) {
+  const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
+  const auto& set = system.aft().harmonics();
+  const int nc = system.numCoefficients();
+  std::vector<int> added;
+  for (int d = 0; d < system.numDofs(); ++d) {
+    added.push_back(d * nc + set.cosIndex(h));
+    if (h > 0) added.push_back(d * nc + set.sinIndex(h));
+  }
+  return continuation::solveByHomotopy(byOmega, X, 2 * M_PI * hz, added, tolerance);
+}
+
+
+// Solutions of one harmonic set at frequencies (Hz) near its peak: the traced curve's
+// points, a peak search's path.
+using SolvedPoints = std::vector<std::pair<double, Eigen::VectorXd>>;
+
+// A start for the raised system on the level below's flank, where the two differ
+// less than at a peak that moves with H: the level below's solutions (`lower`) at
+// least 0.5 % of the frequency from its peak, nearest first, each carried up and
+// solved at its frequency (at most 6 tried). Empty when none converges.
+std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& lowerSystem,
+                                              const hbm::HarmonicBalanceSystem& raised, SolvedPoints lower,
+                                              double peakHz, double scale, double tolerance) {
+  const auto byOmega = continuationProblem(raised, ForcedResponseSetup::Parameter::Omega, 0, scale);
+  std::sort(lower.begin(), lower.end(), [peakHz](const auto& a, const auto& b) {
+    return std::abs(a.first - peakHz) < std::abs(b.first - peakHz);
+  });
+  int tried = 0;
+  for (const auto& [f, x] : lower) {
+    if (std::abs(f - peakHz) < 5e-3 * peakHz) continue;
+    if (++tried > 6) break;
+    Eigen::VectorXd y =
+        hbm::transferCoefficients(x, lowerSystem.numDofs(), lowerSystem.aft().harmonics(), raised.aft().harmonics());
+    if (continuation::solveNewton(byOmega, y, 2 * M_PI * f, tolerance, 10).converged) return {f, y};
+  }
+  return {0, Eigen::VectorXd()};
+}
+
+// The peak of the curve with H, then with H + 1, H + 2, ... up to `upTo`, each level's
+// search started from the one below's peak (its solution carried to one more
+// harmonic), or from the level below's flank when Newton finds nothing there (its
+// search path; for the first raised level also `curve`, the traced points). Stops at
+// a level whose peak is not found (a fold, no solution).
+std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
+                                       double scale, int dof, double tolerance, int upTo, const SolvedPoints& curve) {
+  std::vector<HarmonicsLevel> levels;
+  std::unique_ptr<hbm::HarmonicBalanceSystem> lowerSystem, current;
+  const hbm::HarmonicBalanceSystem* system = &hb;
+  hbm::HarmonicSet set = hb.aft().harmonics();
+  Eigen::VectorXd X = x;
+  SolvedPoints lowerPoints;
+  for (int H = set.maxHarmonic(); H <= upTo; ++H) {
+    Timer timer;
+    const hbm::HarmonicBalanceSystem* lower = system;
+    if (H > set.maxHarmonic()) {
+      const hbm::HarmonicSet raised = withHarmonic(set, H);
+      lowerSystem = std::move(current);  // keeps `lower` alive
+      current = raisedSystem(hb, raised);
+      X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
+      set = raised, system = current.get();
+    }
+    HarmonicsLevel level;
+    level.maxHarmonic = H;
+    level.harmonics = set.harmonics(), level.samples = system->aft().numSamples();
+    level.startHz = hz;
+    bool started = true;  // X solves this level at hz (the search's own Newton would only repeat a failure)
+    if (system != lower) {
+      const auto carried = solveCarried(*system, X, hz, scale, H, tolerance);
+      started = carried.newton.converged;
+      if (carried.blockStart || carried.byHomotopy) {
+        const std::string how = carried.blockStart ? "the added harmonic solved with the others held, then " : "";
+        log::info("harmonics check: H " + std::to_string(H) + " at " + std::to_string(hz) + " Hz " +
+                  (started ? "solved from H " + std::to_string(H - 1) + " by " + how +
+                                 (carried.byHomotopy ? "the homotopy (" + std::to_string(carried.points) + " points)"
+                                                     : "Newton")
+                           : "not solved: " + carried.reason));
+      }
+      if (!started) level.peak.reason = "no solution at the start (" + carried.reason + ")";
+    }
+    if (started) level.peak = searchPeak(*system, X, hz, scale, dof, tolerance);
+    if (level.peak.x.size() == 0 && system != lower) {
+      const auto [f, start] = flankStart(*lower, *system, lowerPoints, hz, scale, tolerance);
+      if (start.size() > 0) {
+        level.startHz = f;
+        level.peak = searchPeak(*system, start, f, scale, dof, tolerance, f - hz);
+      } else {
+        level.peak.reason += ", nor from the level below's solutions on its flank";
+      }
+    }
+    level.seconds = timer.seconds();
+    levels.push_back(level);
+    if (!level.peak.found) break;
+    X = level.peak.x, hz = level.peak.parameter;
+    lowerPoints = level.peak.path;
+    if (levels.size() == 1) lowerPoints.insert(lowerPoints.end(), curve.begin(), curve.end());
+  }
+  return levels;
+}
+
+// The response at the point itself with harmonics 0..H+1: Newton from its solution
+// carried over, at the same parameter.
+std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
+  const auto [w, scale] = setup.apply(pt.parameter);
+  const auto& hb = *setup.system;
+  const auto& H = hb.aft().harmonics();
+  const int dof = setup.outputDofs.front(), next = H.maxHarmonic() + 1;
+  std::ostringstream out;
+  out << "harmonics check: H " << H.maxHarmonic() << " -> " << next;
+  const hbm::HarmonicSet raised = withHarmonic(H, next);
+  const auto refined = raisedSystem(hb, raised);
+  const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
+  Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
+  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  if (!newton.converged) {
+    out << ": no solution at the peak (residual " << newton.residualNorm << ")";
+    log::warn(out.str());
+    return out.str();
+  }
+  const int nc = refined->numCoefficients();
+  const double after = hbm::peakMagnitude(raised, Eigen::VectorXd(X.segment(dof * nc, nc)));
+  const double change = std::abs(after / peak - 1);
+  out << " changes the peak max|x| of DOF " << dof << " by " << change << " (relative)";
+  if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
+  return out.str();
+}
+
+// The harmonic truncation is checked by raising H: on a frequency curve the peaks
+// with H, H + 1, ... (up to setup.harmonicsCheckTo) are compared, each found by the
+// peak search (PeakSearch.hpp: fixed-frequency steps uphill, then golden section). A
+// peak that moves in frequency changes the response at a fixed frequency far more
+// than the peak itself, so the change at the traced point alone says little there.
+// Other parameters (force, preload, ...), and a frequency curve whose largest point is
+// no interior peak (it rises at the end of the range), compare the point with
+// harmonics 0..H+1. Not possible when the system has nothing for a raised harmonic (a
+// reduced model without that nodal diameter): said so.
+}  // namespace
+
+HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
+                              double peak) {
+  const auto& pt = branch.points[ip];
+  HarmonicsCheck check;
+  check.dof = setup.outputDofs.front();
+  auto& best = check.converged;
+  try {
+    if (setup.parameter != ForcedResponseSetup::Parameter::Omega) {
+      check.text = pointHarmonicsCheck(setup, pt, peak);
+      return check;
+    }
+    Timer timer;
+    const auto [w, scale] = setup.apply(pt.parameter);
+    const auto& hb = *setup.system;
+    const int dof = setup.outputDofs.front();
+    const int upTo = std::max(setup.harmonicsCheckTo, hb.aft().harmonics().maxHarmonic() + 1);
+    // The traced points within 5 % of the peak: flank starts for the first raised level.
+    SolvedPoints curve;
+    for (const auto& p : branch.points) {
+      const double f = setup.apply(p.parameter).first / (2 * M_PI);
+      if (std::abs(f / (w / (2 * M_PI)) - 1) <= 0.05) curve.emplace_back(f, p.x);
+    }
+    setup.apply(pt.parameter);
+    const auto levels =
+        peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo, curve);
+    check.levels = levels;
+    if (!levels.front().peak.found) {  // no interior peak with the curve's own harmonics
+      check.text = pointHarmonicsCheck(setup, pt, peak) + " (no peak search: " + levels.front().peak.reason + ")";
+      return check;
+    }
+    std::ostringstream out;
+    out << "harmonics check: peak max|x| of DOF " << dof << " by harmonics:";
+    out.precision(6);
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      const auto& l = levels[i];
+      out << (i ? "; " : " ") << "H " << l.maxHarmonic << " ";
+      if (l.peak.found) {
+        out << l.peak.value << " at " << l.peak.parameter << " Hz";
+        if (i > 0 && l.startHz != levels[i - 1].peak.parameter)
+          out << " (searched from the flank at " << l.startHz << " Hz)";
+      } else if (l.peak.x.size() == 0) {
+        out << "not found (" << l.peak.reason << ")";
+      } else {
+        out << "not found (" << l.peak.reason << "; best point " << l.peak.value << " at " << l.peak.parameter
+            << " Hz)";
+      }
+    }
+    // The change between the last two levels whose peaks were both found.
+    std::size_t j = levels.size() - 1;
+    while (j >= 1 && !(levels[j].peak.found && levels[j - 1].peak.found)) --j;
+    std::size_t reached = 0;
+    for (; reached < levels.size() && levels[reached].peak.found; ++reached) {
+      best.found = true;
+      best.maxHarmonic = levels[reached].maxHarmonic, best.value = levels[reached].peak.value,
+      best.hz = levels[reached].peak.parameter;
+      best.x = levels[reached].peak.x, best.harmonics = levels[reached].harmonics, best.samples = levels[reached].samples;
+    }
+    if (best.found && reached < levels.size()) best.notFoundHarmonic = levels[reached].maxHarmonic;
+    if (j >= 1) {
+      const auto &before = levels[j - 1].peak, &after = levels[j].peak;
+      const double change = std::abs(after.value / before.value - 1);
+      if (levels[j].maxHarmonic == best.maxHarmonic) best.belowHarmonic = levels[j - 1].maxHarmonic, best.change = change;
+      out << "; H " << levels[j - 1].maxHarmonic << " -> " << levels[j].maxHarmonic << " changes the peak by "
+          << change << " (relative), its frequency by " << std::abs(after.parameter / before.parameter - 1) << "; "
+          << timer.seconds() << " s";
+      if (change > 1e-2) log::warn(out.str() + ": the curve is not converged in the harmonics near its peak");
+      else log::info(out.str());
+    } else {
+      out << "; " << timer.seconds() << " s";
+      log::warn(out.str() + ": the harmonic convergence of the peak is not known");
+    }
+    check.text = out.str();
+  } catch (const std::exception& e) {
+    check.text = std::string("harmonics check: not possible (") + e.what() + ")";
+  }
+  return check;
+}
+
+}  // namespace cyclone::response

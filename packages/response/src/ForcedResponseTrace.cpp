@@ -1,0 +1,226 @@
+// The first point of a forced-response curve, found without help from the scene.
+//
+// Why not simply Newton from the linear solution: with friction elements the
+// linear solution without them is far from the response (NLvib example 07 at
+// W = 0.5: |X| = 2.1 against 0.12, because the stuck elements add stiffness 20),
+// the elements slip over the whole period there, and Newton walks into a spurious
+// local minimum of ||R|| (0.27) where the sliders carry a static offset and the
+// Jacobian is nearly singular. From rest the first Newton step is the system with
+// the friction stuck, within 1e-3 of the answer. Where no Newton start converges,
+// the response is followed from rest as the excitation grows.
+#include <cmath>
+#include <sstream>
+
+#include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/response/ForcedResponseTrace.hpp"
+
+namespace cyclone::response {
+
+namespace {
+
+const char* engineName(continuation::ContinuationOptions::Engine engine) {
+  return engine == continuation::ContinuationOptions::Engine::Loca ? "LOCA" : "the predictor-corrector";
+}
+
+}  // namespace
+
+StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
+  const auto& hb = *setup.system;
+  const auto& o = setup.continuation;
+  const auto [omega, scale] = setup.apply(o.from);  // the start's frequency and excitation scale
+  const auto problem = continuationProblem(setup);
+  Timer timer;
+  StartingPoint start;
+  auto attempt = [&](Eigen::VectorXd x, const std::string& method) {
+    if (!continuation::solveNewton(problem, x, o.from, o.tolerance, 100).converged) return false;
+    start.x = std::move(x);
+    start.method = method;
+    start.seconds = timer.seconds();
+    return true;
+  };
+  if (attempt(Eigen::VectorXd::Zero(hb.numUnknowns()), "Newton from rest")) return start;
+  if (attempt(hb.linearSolution(omega, scale), "Newton from the linear solution")) return start;
+
+  // The ramp: the excitation scale from 0 to the start's scale at the start frequency.
+  setup.apply(o.from);  // the element or damping value of the start
+  const auto ramp = continuationProblem(hb, ForcedResponseSetup::Parameter::ForceScale, omega);
+  continuation::ContinuationOptions r = o;
+  r.from = 0;
+  r.to = scale;
+  r.initialStep = 0.05 * std::abs(scale);
+  r.maxStep = 0.2 * std::abs(scale);
+  r.turnAngle = 0.12;
+  r.minStep = 1e-8 * std::abs(scale);
+  r.maxSteps = 500;
+  // Each engine in turn: the ramp can meet a stretch where the stuck contacts' static
+  // state drifts at an almost constant excitation (seen on a coarse 8-sector disc at
+  // 4 % of the load), which one engine's steps cross and the other's follow.
+  using Engine = continuation::ContinuationOptions::Engine;
+  std::string why;
+  for (Engine engine : {o.engine, o.engine == Engine::Loca ? Engine::PredictorCorrector : Engine::Loca}) {
+    r.engine = engine;
+    const auto branch = continuation::traceBranch(ramp, Eigen::VectorXd::Zero(hb.numUnknowns()), r);
+    const std::string name = engineName(engine);
+    if (!branch.points.empty() && std::abs(branch.points.back().parameter - scale) <= 1e-9 * std::abs(scale) + 1e-12 &&
+        attempt(branch.points.back().x, "ramp of the excitation from rest (" + name + ", " +
+                                            std::to_string(branch.points.size()) + " points)"))
+      return start;
+    why += (why.empty() ? "" : "; ") + name + ": " + branch.stopReason;
+  }
+  start.method = "no converged start: Newton from rest and from the linear solution stagnated, and the ramp of the "
+                 "excitation from rest stopped (" + why + ")";
+  start.seconds = timer.seconds();
+  return start;
+}
+
+namespace {
+
+// One arclength run over setup.continuation's range from a converged start.
+continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::VectorXd& start, double scale) {
+  if (!(scale > 0) || scale == 1) return continuation::traceBranch(continuationProblem(setup), start, setup.continuation);
+  // LOCA's arclength mixes the unknowns with the parameter: unknowns of order one keep
+  // its steps in proportion (X = scale Y).
+  const auto base = continuationProblem(setup);
+  continuation::ContinuationProblem scaled = base;
+  scaled.residual = [base, scale](const Eigen::VectorXd& Y, double p, Eigen::VectorXd& R) {
+    base.residual(scale * Y, p, R);
+  };
+  scaled.jacobian = [base, scale](const Eigen::VectorXd& Y, double p, Eigen::MatrixXd& J) {
+    base.jacobian(scale * Y, p, J);
+    J *= scale;
+  };
+  if (base.measure) scaled.measure = [base, scale](const Eigen::VectorXd& Y) { return base.measure(scale * Y); };
+  auto branch = continuation::traceBranch(scaled, start / scale, setup.continuation);
+  for (auto& point : branch.points) point.x *= scale;
+  return branch;
+}
+
+// The parameter a sweep from the end of `upward`'s range got closest to its start.
+double farthestTowardsTheStart(const continuation::Branch& down, const continuation::ContinuationOptions& upward) {
+  double lowest = upward.to;
+  for (const auto& pt : down.points)
+    lowest = upward.to >= upward.from ? std::min(lowest, pt.parameter) : std::max(lowest, pt.parameter);
+  return lowest;
+}
+
+// No start at the range's start: the curve from the other end, as far as it goes (a
+// start can fail where the response is large and close to a fold or an internal
+// resonance, and converge at the other end, off resonance: the default disc at H = 5,
+// docs/scenes.md).
+continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingPoint& failed) {
+  const auto upward = setup.continuation;
+  setup.continuation.from = upward.to, setup.continuation.to = upward.from;
+  const StartingPoint far = findStartingPoint(setup);
+  continuation::Branch down;
+  if (far.x.size() > 0) {
+    const double scale = setup.unknownScale != 0 ? setup.unknownScale : far.x.cwiseAbs().maxCoeff();
+    down = traceOneSweep(setup, far.x, scale);
+  }
+  setup.continuation = upward;
+  setup.apply(upward.from);
+  std::ostringstream why;
+  why << "no start at the start of the range (" << failed.method << "); from the end of the range ("
+      << (far.x.size() > 0 ? far.method : "no start either: " + far.method) << ") ";
+  if (down.points.empty()) {
+    why << "nothing traced";
+  } else {
+    const double lowest = farthestTowardsTheStart(down, upward);
+    why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
+    if (!down.finished) why << "; " << upward.from << " .. " << lowest << " not traced";
+  }
+  down.stopReason = why.str();
+  return down;
+}
+
+// Both sweeps with setup.continuation's engine.
+continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start) {
+  if (start.x.size() == 0) return traceFromTheEnd(setup, start);
+  double scale = setup.unknownScale;
+  if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
+  auto branch = traceOneSweep(setup, start.x, scale);
+  if (branch.finished || branch.points.empty()) return branch;
+
+  // The branch folded back to the start, or stopped short of the end: the rest of the
+  // range holds another branch, or the same one past what stopped the sweep, which a
+  // sweep from the other end finds (as a test rig's downward sweep does).
+  const auto upward = setup.continuation;
+  double reached = upward.from;  // the farthest the first sweep got
+  for (const auto& pt : branch.points)
+    reached = upward.to >= upward.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+  if (branch.returnedToStart) reached = branch.reached;
+  setup.continuation.from = upward.to, setup.continuation.to = upward.from;
+  const StartingPoint far = findStartingPoint(setup);
+  continuation::Branch down;
+  if (far.x.size() > 0) down = traceOneSweep(setup, far.x, scale);
+  setup.continuation = upward;
+  setup.apply(upward.from);
+  std::ostringstream why;
+  if (branch.returnedToStart)
+    why << "two sweeps: from the start the branch turned back at p = " << reached << " and returned to the start";
+  else
+    why << "two sweeps: from the start the branch stopped at p = " << reached << " (" << branch.stopReason << ")";
+  why << "; from the end of the range (" << (far.x.size() > 0 ? far.method : "no start: " + far.method)
+      << ") ";
+  if (down.points.empty()) {
+    why << "nothing traced: " << upward.to << " .. " << reached << " not traced";
+  } else {
+    const double lowest = farthestTowardsTheStart(down, upward);
+    const bool covered = upward.to >= upward.from ? lowest <= reached : lowest >= reached;
+    why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
+    if (!covered) why << "; " << reached << " .. " << lowest << " not traced";
+    branch.finished = covered;
+    branch.segmentStarts.push_back(branch.points.size());
+    for (auto& pt : down.points) branch.points.push_back(std::move(pt));
+    branch.failedSteps += down.failedSteps;
+  }
+  branch.stopReason = why.str();
+  return branch;
+}
+
+// Where one engine leaves the curve incomplete, the other traces it again (the
+// engines fail in different places: the predictor-corrector where a stuck contact's
+// static state drifts at an almost constant frequency, LOCA at stick-slip kinks that
+// its corrector's plane misses); the complete curve, or else the first, is kept.
+continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start) {
+  auto branch = traceWithOneEngine(setup, start);
+  if (branch.finished || !setup.fallback) return branch;
+  const auto primary = setup.continuation;
+  continuation::ContinuationOptions other = *setup.fallback;
+  other.from = primary.from, other.to = primary.to, other.tolerance = primary.tolerance;
+  log::info(std::string("forced response: ") + engineName(primary.engine) + " left the curve incomplete (" +
+            branch.stopReason + "); traced again with " + engineName(other.engine));
+  setup.continuation = other;
+  const StartingPoint again = start.x.size() > 0 ? start : findStartingPoint(setup);
+  auto second = traceWithOneEngine(setup, again);
+  setup.continuation = primary;
+  setup.apply(primary.from);
+  if (second.finished) {
+    second.stopReason += std::string(" (traced by ") + engineName(other.engine) + " after " +
+                         engineName(primary.engine) + " left it incomplete: " + branch.stopReason + ")";
+    return second;
+  }
+  branch.stopReason += std::string("; ") + engineName(other.engine) + " did not complete it either (" +
+                       second.stopReason + ")";
+  return branch;
+}
+
+}  // namespace
+
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
+  const long unsettledBefore = hbm::FrictionContact::unsettledEvaluations();
+  auto branch = traceWithFallback(setup, start);
+  if (const long n = hbm::FrictionContact::unsettledEvaluations() - unsettledBefore; n > 0)
+    log::warn("forced response: " + std::to_string(n) +
+              " friction force evaluations ended on a slider state that is not periodic (the period map's "
+              "Newton did not settle it); points near them may carry a force error");
+  return branch;
+}
+
+continuation::Branch traceForcedResponse(ForcedResponseSetup& setup) {
+  return traceForcedResponse(setup, findStartingPoint(setup));
+}
+
+}  // namespace cyclone::response
