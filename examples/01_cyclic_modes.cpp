@@ -35,16 +35,16 @@ int main(int argc, char** argv) {
   // 3. Three modes per nodal diameter 0..12, titanium, the bore held.
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.modesPerHarmonic = 3;
+  problem.modesPerNodalDiameter = 3;
   const auto modes = cyclic::solveCyclicModes(mesh, sector, problem, env.comm());
 
   // 4. The table, and what cyclic symmetry implies: ND 0 and N/2 single modes, the
   //    others pairs of equal frequency; all positive with the bore held.
   bool ok = modes.size() == std::size_t(sectors / 2 + 1);
   for (const auto& nd : modes) {
-    const bool single = nd.harmonic == 0 || 2 * nd.harmonic == sectors;
+    const bool single = nd.nodalDiameter == 0 || 2 * nd.nodalDiameter == sectors;
     ok = ok && nd.copies == (single ? 1 : 2) && nd.frequenciesHz.size() == std::size_t(3 * nd.copies);
-    std::printf("ND %2d:", nd.harmonic);
+    std::printf("ND %2d:", nd.nodalDiameter);
     for (std::size_t j = 0; j < nd.frequenciesHz.size(); j += std::size_t(nd.copies)) {
       const double f = nd.frequenciesHz[j];
       ok = ok && f > 0 && (single || std::abs(nd.frequenciesHz[j + 1] / f - 1) < 1e-8);

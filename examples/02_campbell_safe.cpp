@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   //    (stress stiffening and spin softening), the bore held.
   cyclic::ModalSweepProblem sweep;
   sweep.modes.fixedNodeSets = {"bore"};
-  sweep.modes.modesPerHarmonic = 2;
+  sweep.modes.modesPerNodalDiameter = 2;
   sweep.speedsRpm = {0.0, 5000.0, 10000.0};
   sweep.prestress = cyclic::PrestressKind::Linear;
   const auto speeds = cyclic::solveModalSweep(mesh, sector, sweep, env.comm());

@@ -269,7 +269,7 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
   problem.fixedNodeSets = modelSpec.fixedNodeSets;
   problem.retainedNodeSets = modelSpec.retainedNodeSets;
   problem.lossFactor = modelSpec.lossFactor;
-  problem.prestress = prestress ? &*prestress : nullptr;
+  if (prestress) problem.prestress = std::make_shared<const cyclic::PrestressState>(*prestress);
   const auto vibration = fatigue::recoverSectorVibration(mesh, models.sector, problem, loads, point.omega, comm);
   double diff = 0, scale = 0;
   for (std::size_t k = 0; k < solution.size(); ++k) {

@@ -22,6 +22,7 @@
 #include "cyclone/rom/HybridFrfModel.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/hbm/ElementStates.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
@@ -46,8 +47,7 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
     auto cy = scene.section("cyclic");
     spec.sectors = cy.getInt("sectors", builtInSectors);
     if (spec.sectors < 2) throw InputError(cy.where("sectors"), "is required (>= 2) for a mesh read from a file");
-    spec.axis.point = cy.getVector3("axis_point", {0, 0, 0});
-    spec.axis.direction = cy.getVector3("axis_direction", {0, 0, 1});
+    spec.axis = readRotationAxis(cy);
     // The reduced models are cantilevered: the disc's faces cyclic, the shroud's free
     // (configuration and the shroud's faces are the modal analysis's).
     const auto faces = readCyclicFaces(cy);
@@ -145,54 +145,29 @@ std::string shortNumber(double v) {
   return s.str();
 }
 
-// The relative motion W and force F (coefficients) of every contact at the peak point.
-struct PeakContactStates {
-  double omega = 0;
-  Eigen::MatrixXd X;                            // nc x dofs
-  std::vector<Eigen::MatrixXd> W, F;            // per element: nc x d
-};
-
-PeakContactStates peakContactStates(const PeakPoint& point) {
-  const auto& hb = *point.system;
-  const int nc = hb.numCoefficients();
-  PeakContactStates out;
-  out.omega = point.omega;
-  out.X = Eigen::Map<const Eigen::MatrixXd>(point.x.data(), nc, hb.numDofs());
-  for (const auto& c : hb.elements()) {
-    Eigen::MatrixXd W = out.X * c.W;
-    if (c.Wnext.size() != 0) W += hb.nextSectorMap() * (out.X * c.Wnext);
-    Eigen::MatrixXd F;
-    c.element->harmonicForce(hb.aft(), W, out.omega, F, nullptr);
-    out.W.push_back(W), out.F.push_back(F);
-  }
-  return out;
-}
-
-// Per contact at the peak point: the energy friction dissipates per cycle,
-// E = sum_h pi h (F_ch . W_sh - F_sh . W_ch) from the coefficients of the relative
-// motion w and of the contact force f (exact for the harmonics kept), and the
-// mean normal force. Returns the energies.
-std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const PeakContactStates& peak,
-                                         const std::string& path) {
+// Per contact at the peak point (hbm::elementStates): the energy friction dissipates per
+// cycle, the mean normal force and the first harmonic's slip amplitude. Returns the energies.
+std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const std::vector<hbm::ElementState>& states,
+                                         double omega, const std::string& path) {
   AtomicFile file(path);
   std::ofstream csv(file.tempPath());
   csv.precision(10);
   csv << "contact,freq_hz,dissipated_energy_per_cycle,mean_normal_force,slip_amplitude\n";
   std::vector<double> energies;
-  for (std::size_t e = 0; e < peak.W.size(); ++e) {
-    const Eigen::MatrixXd &W = peak.W[e], &F = peak.F[e];
-    double energy = 0, slip = 0;
-    for (int h : H.harmonics()) {
-      if (h == 0) continue;
-      const int ic = H.cosIndex(h), is = H.sinIndex(h);
-      for (int k = 0; k < W.cols(); ++k) energy += M_PI * h * (F(ic, k) * W(is, k) - F(is, k) * W(ic, k));
-      if (h == 1 && W.cols() == 3) slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
+  for (std::size_t e = 0; e < states.size(); ++e) {
+    const Eigen::MatrixXd &W = states[e].W, &F = states[e].F;
+    const double energy = hbm::dissipatedEnergyPerCycle(H, states[e]);
+    double slip = 0;
+    if (H.contains(1) && W.cols() == 3) {
+      const int ic = H.cosIndex(1), is = H.sinIndex(1);
+      slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
     }
     const double normal = H.contains(0) ? F(H.cosIndex(0), W.cols() - 1) : 0.0;
-    csv << e << "," << peak.omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
+    csv << e << "," << omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
     energies.push_back(energy);
   }
   csv.close();
+  if (!csv) throw Error("cannot write " + path);
   file.commit();
   return energies;
 }
@@ -201,12 +176,13 @@ std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const PeakCo
 // (not its truncated Fourier series, whose Gibbs ripples would blur the stick and
 // slip corners) against the relative motion over one period, for the chosen
 // contacts; and the response DOFs over that period.
-void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& point, const PeakContactStates& peak,
-                           const std::vector<int>& contacts, const std::string& outDir, SceneSummary& summary) {
+void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& point,
+                           const std::vector<hbm::ElementState>& states, const std::vector<int>& contacts,
+                           const std::string& outDir, SceneSummary& summary) {
   const auto& hb = *point.system;
   const auto& aft = hb.aft();
   const int N = aft.numSamples();
-  const double hz = peak.omega / (2 * M_PI);
+  const double hz = point.omega / (2 * M_PI);
   std::vector<double> phase(std::size_t(N) + 1);
   for (int i = 0; i <= N; ++i) phase[std::size_t(i)] = double(i) / N;
   const char* tangential[] = {"t1", "t2"};
@@ -224,11 +200,9 @@ void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& po
     int line = 0;
     double xLow = 0, xHigh = 0;  // the loops' extent: a margin on both sides, none drawn on the frame
     for (int e : contacts) {
-      const Eigen::MatrixXd& W = peak.W[std::size_t(e)];
-      const int d = int(W.cols());
-      Eigen::MatrixXd w(N, d);
-      for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
-      const Eigen::MatrixXd f = hb.elements()[std::size_t(e)].element->forceSamples(aft, W, peak.omega);
+      const auto period = hbm::elementPeriod(hb, std::size_t(e), states[std::size_t(e)], point.omega);
+      const Eigen::MatrixXd &w = period.w, &f = period.f;
+      const int d = int(w.cols());
       for (int i = 0; i < N; ++i) {
         // Tangential columns: d - 1 of them (none for a gap element).
         auto t = [&](const Eigen::MatrixXd& m, int c) { return c < d - 1 ? m(i, c) : 0.0; };
@@ -260,9 +234,10 @@ void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& po
     std::ostringstream title;
     title << "Response over one period at " << point.what;
     post::SvgPlot plot(title.str(), "t / T", "displacement (mm)");
+    const int nc = hb.numCoefficients();
     Eigen::MatrixXd x(N, setup.outputDofs.size());
     for (std::size_t k = 0; k < setup.outputDofs.size(); ++k) {
-      aft.toTime(peak.X.col(setup.outputDofs[k]).data(), x.col(Eigen::Index(k)).data());
+      aft.toTime(point.x.data() + std::ptrdiff_t(setup.outputDofs[k]) * nc, x.col(Eigen::Index(k)).data());
       std::vector<double> y(std::size_t(N) + 1);
       for (int i = 0; i <= N; ++i) y[std::size_t(i)] = x(i % N, Eigen::Index(k));
       plot.addLine(phase, y, post::SvgPlot::palette(int(k)), setup.dofNames[std::size_t(setup.outputDofs[k])]);
@@ -444,13 +419,14 @@ void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, c
   auto& setup = solved.setup;
   const PeakPoint point = referencePeakPoint(setup, solved.curve);
   if (comm->getRank() == 0) {
-    const PeakContactStates peak = peakContactStates(point);
-    const auto energies = writeContactEnergies(point.system->aft().harmonics(), peak, outDir + "/disc_frc_contacts.csv");
+    const auto states = hbm::elementStates(*point.system, point.x, point.omega);
+    const auto energies =
+        writeContactEnergies(point.system->aft().harmonics(), states, point.omega, outDir + "/disc_frc_contacts.csv");
     summary.written.push_back(outDir + "/disc_frc_contacts.csv");
     // Default: the contact that dissipates most at the peak.
     std::vector<int> loops = hysteresisContacts;
     if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
-    writePeakTimeResponse(setup, point, peak, loops, outDir, summary);
+    writePeakTimeResponse(setup, point, states, loops, outDir, summary);
   }
   const auto& ps = plan.peakStress;
   if (ps.atHz > 0)

@@ -58,6 +58,13 @@ namespace cyclone::scenes {
 
 const char* demoScene() { return demoSceneYaml(); }
 
+mesh::RotationAxis readRotationAxis(SceneSection& section) {
+  const auto p = section.getVector3("axis_point", {0, 0, 0}), d = section.getVector3("axis_direction", {0, 0, 1});
+  mesh::RotationAxis axis{Eigen::Vector3d(p[0], p[1], p[2]), Eigen::Vector3d(d[0], d[1], d[2])};
+  if (!(axis.direction.norm() > 0)) throw InputError(section.where("axis_direction"), "must not be zero");
+  return axis;
+}
+
 cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback) {
   const std::string value = section.getString("prestress", fallback);
   if (value == "linear") return cyclic::PrestressKind::Linear;
@@ -231,13 +238,13 @@ std::string rpmTag(double rpm) {
 // below 1e-4 of the highest frequency computed for their ND).
 std::string speedModesLine(const cyclic::SpeedModes& sm) {
   std::ostringstream line;
-  line << "modes at " << sm.rpm << " rpm: ND " << sm.harmonics.front().harmonic << ".." << sm.harmonics.back().harmonic
-       << ", lowest " << sm.harmonics.front().frequenciesHz.front() << " Hz (ND " << sm.harmonics.front().harmonic << ")";
+  line << "modes at " << sm.rpm << " rpm: ND " << sm.nodalDiameters.front().nodalDiameter << ".." << sm.nodalDiameters.back().nodalDiameter
+       << ", lowest " << sm.nodalDiameters.front().frequenciesHz.front() << " Hz (ND " << sm.nodalDiameters.front().nodalDiameter << ")";
   std::string rigid;
-  for (const auto& hm : sm.harmonics) {
+  for (const auto& hm : sm.nodalDiameters) {
     int count = 0;
     for (double f : hm.frequenciesHz) count += f < 1e-4 * hm.frequenciesHz.back();
-    if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.harmonic) + ": " +
+    if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.nodalDiameter) + ": " +
                         std::to_string(count);
   }
   if (!rigid.empty()) line << "; rigid-body modes " << rigid;
@@ -254,8 +261,8 @@ cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh
   auto& problem = sweep.modes;
   problem.material = material;
   problem.fixedNodeSets = fixedSets;
-  problem.harmonics = m.getIntList("nodal_diameters", {});
-  problem.modesPerHarmonic = m.getInt("modes_per_nd", 6);
+  problem.nodalDiameters = m.getIntList("nodal_diameters", {});
+  problem.modesPerNodalDiameter = m.getInt("modes_per_nd", 6);
   const std::string eigenSolver = m.getString("eigen_solver", "shift_invert");
   if (eigenSolver == "lobpcg") problem.method = solvers::EigenMethod::Lobpcg;
   else if (eigenSolver != "shift_invert")
@@ -282,22 +289,22 @@ cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh
     throw InputError(m.where("mac"), "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'");
   writeMac = macChoice == "speeds";
   m.rejectUnknownKeys();
-  for (int k : problem.harmonics)
+  for (int k : problem.nodalDiameters)
     if (k < 0 || k > sectors / 2)
       throw InputError(m.where("nodal_diameters"), "nodal diameter " + std::to_string(k) + " is outside 0.." +
                                                         std::to_string(sectors / 2) + " for " +
                                                         std::to_string(sectors) + " sectors");
-  for (std::size_t i = 0; i < problem.harmonics.size(); ++i)
+  for (std::size_t i = 0; i < problem.nodalDiameters.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (problem.harmonics[i] == problem.harmonics[j])
+      if (problem.nodalDiameters[i] == problem.nodalDiameters[j])
         throw InputError(m.where("nodal_diameters"),
-                         "nodal diameter " + std::to_string(problem.harmonics[i]) + " is listed twice");
-  if (problem.modesPerHarmonic < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
+                         "nodal diameter " + std::to_string(problem.nodalDiameters[i]) + " is listed twice");
+  if (problem.modesPerNodalDiameter < 1) throw InputError(m.where("modes_per_nd"), "must be at least 1");
   // The eigen-solver's Krylov space, about 3 modes_per_nd vectors, must fit in the
   // sector's 3 x nodes DOFs (100000 reached Anasazi and came back as its internal
   // text: issue 20).
-  if (const long nodes = long(mesh.numNodes()); problem.modesPerHarmonic > nodes / 2)
-    throw InputError(m.where("modes_per_nd"), std::to_string(problem.modesPerHarmonic) +
+  if (const long nodes = long(mesh.numNodes()); problem.modesPerNodalDiameter > nodes / 2)
+    throw InputError(m.where("modes_per_nd"), std::to_string(problem.modesPerNodalDiameter) +
                                                   " is more than half the sector's " + std::to_string(nodes) +
                                                   " nodes: the eigen-solver's space of about 3 x modes_per_nd "
                                                   "vectors must fit in its 3 x nodes DOFs");
@@ -315,14 +322,14 @@ cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh
 // prestress changed the mode shapes (diagonal near 1: same shapes, shifted frequencies).
 void writeSpeedMac(const std::vector<cyclic::SpeedModes>& results, const std::string& outDir, bool writer,
                    SceneSummary& summary) {
-  for (std::size_t h = 0; h < results.front().harmonics.size(); ++h) {
-    const auto& a = results.front().harmonics[h];
-    const auto mac = post::familyMac(a, results.back().harmonics[h]);
-    const std::string base = outDir + "/mac_nd" + std::to_string(a.harmonic);
+  for (std::size_t h = 0; h < results.front().nodalDiameters.size(); ++h) {
+    const auto& a = results.front().nodalDiameters[h];
+    const auto mac = post::familyMac(a, results.back().nodalDiameters[h]);
+    const std::string base = outDir + "/mac_nd" + std::to_string(a.nodalDiameter);
     if (writer) {
       post::writeMacCsv(base + ".csv", mac);
       post::writeMacSvg(base + ".svg", mac,
-                        "MAC ND " + std::to_string(a.harmonic) + ": " + rpmTag(results.front().rpm) + " (rows) vs " +
+                        "MAC ND " + std::to_string(a.nodalDiameter) + ": " + rpmTag(results.front().rpm) + " (rows) vs " +
                             rpmTag(results.back().rpm) + " (columns)");
     }
     summary.written.push_back(base + ".csv");
@@ -374,9 +381,8 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   if (sectors == 0) throw InputError(cy.where("sectors"), "is required for a mesh read from a file");
   const auto faces = readCyclicFaces(cy);
   const auto left = faces.left(), right = faces.right();
-  const auto ap = cy.getVector3("axis_point", {0, 0, 0}), ad = cy.getVector3("axis_direction", {0, 0, 1});
+  const mesh::RotationAxis axis = readRotationAxis(cy);
   cy.rejectUnknownKeys();
-  mesh::RotationAxis axis{ap, ad};
   const auto sector = cyclic::makeCyclicSector(mesh, sectors, axis, left, right);
   {
     std::ostringstream msg;
@@ -388,8 +394,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto m = scene.section("modal");
   bool writeMac = false;
   auto sweep = readModalSweep(m, mesh, sectors, material, fixedSets, outDir, writeMac);
-  sweep.axis.point = Eigen::Vector3d(ap[0], ap[1], ap[2]);
-  sweep.axis.direction = Eigen::Vector3d(ad[0], ad[1], ad[2]);
+  sweep.axis = axis;
   auto dg = scene.section("diagrams");
   std::vector<int> defaultOrders;
   for (int eo = 1; eo <= sectors; ++eo) defaultOrders.push_back(eo);
@@ -411,7 +416,7 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       summary.written.push_back(path);
     }
     const std::string path = outDir + "/modes_" + rpmTag(rpm) + ".exo";
-    if (writer) cyclic::writeModesExodus(path, mesh, rpm, sm.harmonics);
+    if (writer) cyclic::writeModesExodus(path, mesh, rpm, sm.nodalDiameters);
     summary.written.push_back(path);
     logPeakMemory("the prestress and modes at " + rpmTag(rpm), comm);
     summary.computed.push_back(speedModesLine(sm));
@@ -845,11 +850,7 @@ void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string&
   {
     auto l = scene.section("loads");
     problem.speedRpm = l.getDouble("speed_rpm", 0.0);
-    const auto p = l.getVector3("axis_point", {0, 0, 0});
-    const auto d = l.getVector3("axis_direction", {0, 0, 1});
-    problem.axis.point = Eigen::Vector3d(p[0], p[1], p[2]);
-    problem.axis.direction = Eigen::Vector3d(d[0], d[1], d[2]);
-    if (problem.axis.direction.norm() == 0) throw InputError(l.where("axis_direction"), "must not be zero");
+    problem.axis = readRotationAxis(l);
     const auto b = l.getVector3("body_force", {0, 0, 0});
     problem.bodyForce = Eigen::Vector3d(b[0], b[1], b[2]);
     auto forces = l.section("nodal_forces");

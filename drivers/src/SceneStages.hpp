@@ -67,6 +67,10 @@ struct CyclicFaces {
 /// Reads configuration and the disc's and shroud's left and right node sets.
 CyclicFaces readCyclicFaces(SceneSection& cyclic);
 
+/// `axis_point` and `axis_direction` of a section (default: the z axis); InputError for a
+/// zero direction.
+mesh::RotationAxis readRotationAxis(SceneSection& section);
+
 /// `prestress` of a section: linear, nonlinear or none (`fallback` when absent);
 /// InputError naming the key otherwise.
 cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback);

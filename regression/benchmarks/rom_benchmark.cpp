@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
   problem.lossFactor = kEta;
   Timer timer;
   const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, problem.fixedNodeSets);
-  const auto prestress = cyclic::solveNonlinearPrestress(mesh, k0, problem.material, kRpm, fe::Axis{}, comm);
-  problem.prestress = &prestress;
+  const auto prestress = cyclic::solveNonlinearPrestress(mesh, k0, problem.material, kRpm, mesh::RotationAxis{}, comm);
+  problem.prestress = std::make_shared<const cyclic::PrestressState>(prestress);
   std::printf("default disc N = %d, mesh size %g: %zu nodes; nonlinear prestress at %.0f rpm %.1f s; eta = %g, "
               "%d modes (pairs count once) for hybrid, truncation and Craig-Bampton\n",
               p.sectors, meshSize, std::size_t(mesh.numNodes()), kRpm, timer.seconds(), kEta, modes);

@@ -43,8 +43,8 @@ struct ShroudedSectorCase {
     problem.lossFactor = lossFactor;
     if (!fixedSets.empty()) {
       const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, fixedSets);
-      prestress = cyclic::solveLinearPrestress(mesh, k0, problem.material, kRpm, fe::Axis{}, Tpetra::getDefaultComm());
-      problem.prestress = &prestress;
+      prestress = cyclic::solveLinearPrestress(mesh, k0, problem.material, kRpm, mesh::RotationAxis{}, Tpetra::getDefaultComm());
+      problem.prestress = std::make_shared<const cyclic::PrestressState>(prestress);
     }
   }
 };

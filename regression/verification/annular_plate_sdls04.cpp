@@ -47,8 +47,8 @@ TEST(AnnularPlateSDLS04, EighteenSectorCyclicModel) {
     cyclic::CyclicModalProblem problem;
     problem.material = fe::IsotropicElastic{"steel", 2e11, 0.3, 7800};
     problem.fixedNodeSets = {"x0"};
-    problem.harmonics = {0, 1, 2, 3};
-    problem.modesPerHarmonic = 2;
+    problem.nodalDiameters = {0, 1, 2, 3};
+    problem.modesPerNodalDiameter = 2;
     const auto modes = cyclic::solveCyclicModes(m, sector, problem, Tpetra::getDefaultComm());
     // Per ND: the lowest two distinct frequencies (pairs listed twice for ND 1..3).
     std::vector<double> f[2];

@@ -34,12 +34,12 @@ TEST(CyclicLobpcg, AgreesWithShiftInvertPerNodalDiameter) {
                                                {"disc_right", "shroud_right"});
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.modesPerHarmonic = 4;
+  problem.modesPerNodalDiameter = 4;
   const std::vector<int> harmonics = {0, 3, p.sectors / 2};
   std::printf("\ncyclic sector (%d sectors, %lld nodes): LOBPCG + MueLu against shift-invert\n", p.sectors,
               (long long)sectorMesh.numNodes());
   for (int k : harmonics) {
-    problem.harmonics = {k};
+    problem.nodalDiameters = {k};
     problem.method = solvers::EigenMethod::ShiftInvert;
     Timer timer;
     const auto reference = cyclic::solveCyclicModes(sectorMesh, sector, problem, Tpetra::getDefaultComm()).front();
@@ -49,7 +49,7 @@ TEST(CyclicLobpcg, AgreesWithShiftInvertPerNodalDiameter) {
     const auto lobpcg = cyclic::solveCyclicModes(sectorMesh, sector, problem, Tpetra::getDefaultComm()).front();
     const double lobpcgSeconds = timer.seconds();
     ASSERT_EQ(lobpcg.frequenciesHz.size(), reference.frequenciesHz.size()) << "k = " << k;
-    ASSERT_EQ(reference.frequenciesHz.size(), std::size_t(problem.modesPerHarmonic * reference.copies));
+    ASSERT_EQ(reference.frequenciesHz.size(), std::size_t(problem.modesPerNodalDiameter * reference.copies));
     double worst = 0;
     for (std::size_t i = 0; i < reference.frequenciesHz.size(); ++i)
       worst = std::max(worst, std::abs(lobpcg.frequenciesHz[i] / reference.frequenciesHz[i] - 1));

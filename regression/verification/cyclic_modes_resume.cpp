@@ -34,13 +34,13 @@ public:
   std::vector<std::string> order;  // keys in the order saved (nodal diameter order on one rank)
 };
 
-void expectSame(const std::vector<cyclic::HarmonicModes>& a, const std::vector<cyclic::HarmonicModes>& b) {
+void expectSame(const std::vector<cyclic::NodalDiameterModes>& a, const std::vector<cyclic::NodalDiameterModes>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].harmonic, b[i].harmonic);
-    EXPECT_EQ(a[i].frequenciesHz, b[i].frequenciesHz) << "ND " << a[i].harmonic;
-    EXPECT_EQ(a[i].shapeReal, b[i].shapeReal) << "ND " << a[i].harmonic;
-    EXPECT_EQ(a[i].shapeImag, b[i].shapeImag) << "ND " << a[i].harmonic;
+    EXPECT_EQ(a[i].nodalDiameter, b[i].nodalDiameter);
+    EXPECT_EQ(a[i].frequenciesHz, b[i].frequenciesHz) << "ND " << a[i].nodalDiameter;
+    EXPECT_EQ(a[i].shapeReal, b[i].shapeReal) << "ND " << a[i].nodalDiameter;
+    EXPECT_EQ(a[i].shapeImag, b[i].shapeImag) << "ND " << a[i].nodalDiameter;
   }
 }
 
@@ -57,11 +57,11 @@ TEST(CyclicModesResume, AResumedSweepSolvesOnlyWhatWasMissing) {
                                                {"disc_right", "shroud_right"});
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.modesPerHarmonic = 4;
-  fe::Axis axis;
+  problem.modesPerNodalDiameter = 4;
+  mesh::RotationAxis axis;
   const auto k0 = cyclic::cyclicTransform(sectorMesh, sector, 0, problem.fixedNodeSets);
   const auto prestress = cyclic::solveLinearPrestress(sectorMesh, k0, problem.material, 10000, axis, comm);
-  problem.prestress = &prestress;
+  problem.prestress = std::make_shared<const cyclic::PrestressState>(prestress);
 
   Timer timer;
   const auto uninterrupted = cyclic::solveCyclicModes(sectorMesh, sector, problem, comm);
@@ -95,7 +95,7 @@ TEST(CyclicModesResume, AResumedSweepSolvesOnlyWhatWasMissing) {
   other->kept = first->kept;
   problem.checkpoints = other;
   problem.material.E *= 1.01;
-  problem.harmonics = {0, 1};
+  problem.nodalDiameters = {0, 1};
   const auto stiffer = cyclic::solveCyclicModes(sectorMesh, sector, problem, comm);
   EXPECT_EQ(other->order.size(), 2u);
   EXPECT_GT(stiffer[0].frequenciesHz[0], uninterrupted[0].frequenciesHz[0]);

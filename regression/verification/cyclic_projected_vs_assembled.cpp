@@ -45,16 +45,16 @@ void compare(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const c
   Timer timer;
   const auto projected = cyclic::solveCyclicModes(mesh, sector, problem, comm);
   const double tProjected = timer.seconds();
-  const auto matrices = cyclic::assembleSectorMatrices(mesh, problem.material, problem.prestress);
+  const auto matrices = cyclic::assembleSectorMatrices(mesh, problem.material, problem.prestress.get());
   const auto& M = matrices.M;
   double worstFrequency = 0, worstMac = 0, worstQuotient = 0, tAssembled = 0;
   for (const auto& hm : projected) {
     timer.restart();
-    const auto op = cyclic::assembleHarmonicOperators(mesh, sector, hm.harmonic, problem.material,
-                                                      problem.fixedNodeSets, problem.prestress, comm);
-    const auto ref = cyclic::solveHarmonicModes(op, problem.modesPerHarmonic, problem.shift);
+    const auto op = cyclic::assembleNodalDiameterOperators(mesh, sector, hm.nodalDiameter, problem.material,
+                                                      problem.fixedNodeSets, problem.prestress.get(), comm);
+    const auto ref = cyclic::solveNodalDiameterModes(op, problem.modesPerNodalDiameter, problem.shift);
     tAssembled += timer.seconds();
-    ASSERT_EQ(ref.frequenciesHz.size(), hm.frequenciesHz.size()) << name << " ND " << hm.harmonic;
+    ASSERT_EQ(ref.frequenciesHz.size(), hm.frequenciesHz.size()) << name << " ND " << hm.nodalDiameter;
     std::vector<Shape> refA, refB;
     for (std::size_t i = 0; i < ref.frequenciesHz.size(); ++i) {
       refA.push_back(op.assembler->nodalField(*ref.modes, int(i), 0));
@@ -64,7 +64,7 @@ void compare(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const c
     for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i) {
       const double rel = std::abs(hm.frequenciesHz[i] / ref.frequenciesHz[i] - 1);
       worstFrequency = std::max(worstFrequency, rel);
-      EXPECT_LT(rel, 1e-8) << name << " ND " << hm.harmonic << " mode " << i + 1;
+      EXPECT_LT(rel, 1e-8) << name << " ND " << hm.nodalDiameter << " mode " << i + 1;
       // MAC against the reference modes of the same eigenvalue (a pair spans a plane
       // in which either code may pick any basis): the M-norm share of the mode inside
       // that span. The reference modes are M-orthonormal.
@@ -81,14 +81,14 @@ void compare(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const c
           std::sqrt(massProduct(matrices.K, hm.shapeReal[i], hm.shapeImag[i], hm.shapeReal[i], hm.shapeImag[i]) /
                     self) / (2 * M_PI);
       worstQuotient = std::max(worstQuotient, std::abs(quotient / hm.frequenciesHz[i] - 1));
-      EXPECT_LT(std::abs(quotient / hm.frequenciesHz[i] - 1), 1e-8) << name << " ND " << hm.harmonic << " mode " << i + 1;
+      EXPECT_LT(std::abs(quotient / hm.frequenciesHz[i] - 1), 1e-8) << name << " ND " << hm.nodalDiameter << " mode " << i + 1;
       worstMac = std::max(worstMac, std::abs(1 - mac));
-      EXPECT_GT(mac, 1 - 1e-8) << name << " ND " << hm.harmonic << " mode " << i + 1;
+      EXPECT_GT(mac, 1 - 1e-8) << name << " ND " << hm.nodalDiameter << " mode " << i + 1;
     }
   }
   std::printf("%s: ND %d..%d, %d modes per ND: max |f / f_assembled - 1| = %.1e, max |1 - MAC| = %.1e, "
               "max |Rayleigh quotient / f - 1| = %.1e; projected %.2f s, assembled per ND %.2f s\n",
-              name, projected.front().harmonic, projected.back().harmonic, problem.modesPerHarmonic, worstFrequency,
+              name, projected.front().nodalDiameter, projected.back().nodalDiameter, problem.modesPerNodalDiameter, worstFrequency,
               worstMac, worstQuotient, tProjected, tAssembled);
 }
 
@@ -103,11 +103,11 @@ void compareDefaultDisc(int modesPerNd, std::vector<int> nodalDiameters = {}) {
                                                {"disc_right", "shroud_right"});
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.modesPerHarmonic = modesPerNd;
-  problem.harmonics = std::move(nodalDiameters);
+  problem.modesPerNodalDiameter = modesPerNd;
+  problem.nodalDiameters = std::move(nodalDiameters);
   const auto state = cyclic::solveNonlinearPrestress(mesh, cyclic::cyclicTransform(mesh, sector, 0, {"bore"}),
-                                                     problem.material, 10000, fe::Axis{}, Tpetra::getDefaultComm());
-  problem.prestress = &state;
+                                                     problem.material, 10000, mesh::RotationAxis{}, Tpetra::getDefaultComm());
+  problem.prestress = std::make_shared<const cyclic::PrestressState>(state);
   compare(mesh, sector, problem,
           ("default disc, tet10, NLGEOM 10000 rpm, " + std::to_string(modesPerNd) + " modes per ND").c_str());
 }
@@ -133,9 +133,9 @@ TEST(CyclicProjectedVsAssembled, Hex20AnnularSectorLinearPrestress) {
   cyclic::CyclicModalProblem problem;
   problem.material = fe::IsotropicElastic{"steel", 2e11, 0.3, 7800};
   problem.fixedNodeSets = {"x0"};
-  problem.modesPerHarmonic = 4;
+  problem.modesPerNodalDiameter = 4;
   const auto state = cyclic::solveLinearPrestress(mesh, cyclic::cyclicTransform(mesh, sector, 0, {"x0"}),
-                                                  problem.material, 20000, fe::Axis{}, Tpetra::getDefaultComm());
-  problem.prestress = &state;
+                                                  problem.material, 20000, mesh::RotationAxis{}, Tpetra::getDefaultComm());
+  problem.prestress = std::make_shared<const cyclic::PrestressState>(state);
   compare(mesh, sector, problem, "annular sector, HEX20, linear prestress 20000 rpm");
 }

@@ -227,8 +227,8 @@ TEST(DiscFriction, StiffStuckContactsTieTheShroud) {
                                              {"disc_right", "shroud_right"});
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.harmonics = {estimate.nodalDiameter};
-  problem.modesPerHarmonic = 3;
+  problem.nodalDiameters = {estimate.nodalDiameter};
+  problem.modesPerNodalDiameter = 3;
   const auto modes = cyclic::solveCyclicModes(disc.mesh, tied, problem, Tpetra::getDefaultComm());
   double nearest = 1e300;
   for (double f : modes.front().frequenciesHz)

@@ -31,7 +31,7 @@ void compareRingAndSector(const std::vector<std::string>& left, const std::vecto
   const auto sector = cyclic::makeCyclicSector(sectorMesh, p.sectors, {}, left, right);
   cyclic::CyclicModalProblem problem;
   problem.fixedNodeSets = {"bore"};
-  problem.modesPerHarmonic = 4;
+  problem.modesPerNodalDiameter = 4;
   Timer timer;
   const auto modes = cyclic::solveCyclicModes(sectorMesh, sector, problem, Tpetra::getDefaultComm());
   const double sectorSeconds = timer.seconds();
@@ -41,7 +41,7 @@ void compareRingAndSector(const std::vector<std::string>& left, const std::vecto
   std::vector<std::pair<double, int>> expected;  // frequency, k
   for (const auto& hm : modes) {
     ceiling = std::min(ceiling, hm.frequenciesHz.back());
-    for (double f : hm.frequenciesHz) expected.push_back({f, hm.harmonic});
+    for (double f : hm.frequenciesHz) expected.push_back({f, hm.nodalDiameter});
   }
   std::sort(expected.begin(), expected.end());
   while (!expected.empty() && expected.back().first > ceiling * (1 - 1e-9)) expected.pop_back();
@@ -64,14 +64,14 @@ void compareRingAndSector(const std::vector<std::string>& left, const std::vecto
   for (std::size_t i = 0; i < expected.size(); ++i)
     worst = std::max(worst, std::abs(full.frequenciesHz[i] / expected[i].first - 1));
   std::printf("%s: %zu ring modes (%ld DOF, %.2f s) vs sector k = 0..%d (%.2f s): max relative difference %.2e\n",
-              name, expected.size(), dofs.numFree(), ringSeconds, sector.maxHarmonicIndex(), sectorSeconds, worst);
+              name, expected.size(), dofs.numFree(), ringSeconds, sector.maxNodalDiameter(), sectorSeconds, worst);
   for (std::size_t i = 0; i < expected.size(); ++i)
     EXPECT_NEAR(full.frequenciesHz[i] / expected[i].first, 1.0, 1e-8)
         << name << " ring mode " << i + 1 << " (sector k = " << expected[i].second << ")";
   // Multiplicities: pairs for 0 < k < N/2 appear twice in the sector list by construction,
   // and the ring reproduces them, so the counts per k must be 1 or 2 per family.
   for (const auto& hm : modes)
-    EXPECT_EQ(hm.frequenciesHz.size(), std::size_t(problem.modesPerHarmonic * hm.copies));
+    EXPECT_EQ(hm.frequenciesHz.size(), std::size_t(problem.modesPerNodalDiameter * hm.copies));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Verification: Guyan and Craig-Bampton models (and the hybrid FRF model and
-// modal truncation alongside) of one harmonic index of the built-in shrouded
+// modal truncation alongside) of one nodal diameter of the built-in shrouded
 // sector (cantilever, 10 000 rpm linear prestress, k = 2 of N = 8, structural
 // damping) against the full FE model with the same K_k, M_k and constraints:
 //   - compliance over a band covering the first 5 families: Craig-Bampton

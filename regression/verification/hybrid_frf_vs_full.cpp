@@ -1,6 +1,6 @@
 // Verification: the hybrid FRF model (Petrov 2011, exact static correction) and
 // plain modal truncation against the full FE dynamic compliance at retained DOFs,
-// for one harmonic index (a travelling pair, real form) of the built-in shrouded
+// for one nodal diameter (a travelling pair, real form) of the built-in shrouded
 // sector, cantilever (shroud faces free), prestressed at 10 000 rpm, structural
 // damping. The reference is a direct complex solve of (1 + i eta) K - w^2 M per
 // frequency; the band covers the first 5 natural frequencies, at, next to and

@@ -53,7 +53,7 @@ Level runLevel(int nx, int ny) {
   const auto comm = Tpetra::getDefaultComm();
   const double A = h * h, I = h * h * h * h / 12;
   const double wRef = std::sqrt(steel.E * I / (steel.rho * A * std::pow(L, 4)));
-  fe::Axis axis;  // z through the root: rotation in the xy-plane, flap = z, lag = y
+  mesh::RotationAxis axis;  // z through the root: rotation in the xy-plane, flap = z, lag = y
   Level level{nx, dofs.numFree(), {}, {}, 0};
   for (int i = 0; i < 5; ++i) {
     const double omega = etas[i] * wRef;
@@ -126,7 +126,7 @@ TEST(RotatingCantilever, UnreachableSpeedIsReportedWithTheLastConvergedSpeed) {
   cyclic::NonlinearPrestressOptions opt;
   opt.minLoadStep = 1e-2;
   try {
-    cyclic::solveNonlinearPrestress(beam, dofs.transform(), steel, 3 * axialRpm, fe::Axis{}, Tpetra::getDefaultComm(),
+    cyclic::solveNonlinearPrestress(beam, dofs.transform(), steel, 3 * axialRpm, mesh::RotationAxis{}, Tpetra::getDefaultComm(),
                                     opt);
     FAIL() << "a speed three times the axial frequency was reported reached";
   } catch (const SolverError& e) {
@@ -137,9 +137,9 @@ TEST(RotatingCantilever, UnreachableSpeedIsReportedWithTheLastConvergedSpeed) {
   }
   // Well below it the same solver converges, and agrees with the linear prestress to
   // the order of the strains (~1e-3 here).
-  const auto nl = cyclic::solveNonlinearPrestress(beam, dofs.transform(), steel, 0.2 * axialRpm, fe::Axis{},
+  const auto nl = cyclic::solveNonlinearPrestress(beam, dofs.transform(), steel, 0.2 * axialRpm, mesh::RotationAxis{},
                                                   Tpetra::getDefaultComm());
-  const auto lin = cyclic::solveLinearPrestress(beam, dofs.transform(), steel, 0.2 * axialRpm, fe::Axis{},
+  const auto lin = cyclic::solveLinearPrestress(beam, dofs.transform(), steel, 0.2 * axialRpm, mesh::RotationAxis{},
                                                 Tpetra::getDefaultComm());
   const auto tip = beam.nodeSet("x1").front();
   std::printf("tip ux at %.0f rpm: nonlinear %.6e, linear %.6e\n", 0.2 * axialRpm, nl.displacement[tip][0],

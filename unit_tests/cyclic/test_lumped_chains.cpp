@@ -19,7 +19,7 @@ struct LumpedSector {
   cyclic::CyclicSector sector;
 };
 
-// Eigenvalues (rad/s)^2 of the sector reduced at harmonic index k, ascending.
+// Eigenvalues (rad/s)^2 of the sector reduced at nodal diameter k, ascending.
 Eigen::VectorXd reducedEigenvalues(const LumpedSector& s, int k) {
   std::vector<char> fixed(3 * s.n, 0);
   for (int i = 0; i < s.n; ++i) fixed[3 * i + 1] = fixed[3 * i + 2] = 1;  // only x is a DOF

@@ -18,9 +18,9 @@ Eigen::Vector3d resultant(const Eigen::VectorXd& f) {
   return total;
 }
 
-Axis randomAxis(std::mt19937& rng) {
+RotationAxis randomAxis(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-2.0, 2.0);
-  Axis axis;
+  RotationAxis axis;
   axis.point = Eigen::Vector3d(u(rng), u(rng), u(rng));
   axis.direction = Eigen::Vector3d(u(rng), u(rng), 3.0);  // deliberately not unit length
   return axis;
@@ -36,7 +36,7 @@ TEST_P(CentrifugalLoadTest, AffineElementResultantIsMassTimesCentroidDistance) {
     const Eigen::Matrix3d A = randomAffineMatrix(rng);
     const Eigen::Vector3d c(4, 1, -2);
     const ElementCoords X = affineElement(t, A, c);
-    const Axis axis = randomAxis(rng);
+    const RotationAxis axis = randomAxis(rng);
     const double V = A.determinant() * referenceVolume(t);
     const Eigen::Vector3d centroid = A * referenceCentroid(t) + c;
     const Eigen::Vector3d expected =
@@ -55,7 +55,7 @@ TEST_P(CentrifugalLoadTest, ResultantVanishesAboutAnAxisThroughTheCentroid) {
   const Eigen::Matrix3d A = randomAffineMatrix(rng);
   const Eigen::Vector3d c(4, 1, -2);
   const ElementCoords X = affineElement(t, A, c);
-  Axis axis = randomAxis(rng);
+  RotationAxis axis = randomAxis(rng);
   axis.point = A * referenceCentroid(t) + c;
   const double V = A.determinant() * referenceVolume(t);
   const double scale = kRho * kOmega * kOmega * V * X.cwiseAbs().maxCoeff();
@@ -68,7 +68,7 @@ TEST_P(CentrifugalLoadTest, AxisDirectionLengthAndSignDoNotMatter) {
   const auto t = GetParam();
   std::mt19937 rng(53);
   const ElementCoords X = distortedElement(t, rng);
-  Axis axis = randomAxis(rng);
+  RotationAxis axis = randomAxis(rng);
   const Eigen::VectorXd f = elementCentrifugalLoad(t, X, kRho, kOmega, axis);
   axis.direction *= -7.5;
   const Eigen::VectorXd g = elementCentrifugalLoad(t, X, kRho, kOmega, axis);
@@ -83,7 +83,7 @@ INSTANTIATE_TEST_SUITE_P(AllTypes, CentrifugalLoadTest, ::testing::ValuesIn(kAll
 TEST(CentrifugalLoad, Tet4NodalLoadsMatchClosedForm) {
   std::mt19937 rng(54);
   const ElementCoords X = distortedElement(ElementType::Tet4, rng, 0.2);
-  const Axis axis = randomAxis(rng);
+  const RotationAxis axis = randomAxis(rng);
   Eigen::Matrix<double, 3, 4> r;
   for (int a = 0; a < 4; ++a) r.col(a) = distanceFromAxis(X.row(a).transpose(), axis.point, axis.direction);
   Eigen::Matrix3d edges;
@@ -112,7 +112,7 @@ TEST(CentrifugalLoad, TetBlockResultantMatchesFirstMomentOfVolume) {
       volume += V;
       moment += V * X.topRows(4).colwise().mean().transpose();
     }
-    Axis axis = randomAxis(rng);
+    RotationAxis axis = randomAxis(rng);
     auto bodyResultant = [&] {
       Eigen::Vector3d total = Eigen::Vector3d::Zero();
       for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e)
@@ -133,7 +133,7 @@ TEST(CentrifugalLoad, TetBlockResultantMatchesFirstMomentOfVolume) {
 
 TEST(CentrifugalLoad, ZeroAxisDirectionIsRejected) {
   std::mt19937 rng(56);
-  Axis axis;
+  RotationAxis axis;
   axis.direction.setZero();
   EXPECT_THROW(elementCentrifugalLoad(ElementType::Hex8, distortedElement(ElementType::Hex8, rng), kRho, kOmega, axis),
                cyclone::Error);

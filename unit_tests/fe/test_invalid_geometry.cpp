@@ -18,7 +18,7 @@ void expectEveryKernelRejects(ElementType t, const ElementCoords& X, const std::
   const std::vector<std::pair<const char*, std::function<void()>>> kernels = {
       {"stiffness", [&] { elementStiffness(t, X, mat); }},
       {"mass", [&] { elementMass(t, X, 1.0); }},
-      {"centrifugal", [&] { elementCentrifugalLoad(t, X, 1.0, 1.0, Axis{}); }},
+      {"centrifugal", [&] { elementCentrifugalLoad(t, X, 1.0, 1.0, RotationAxis{}); }},
       {"body", [&] { elementBodyLoad(t, X, Eigen::Vector3d::UnitX()); }},
       {"volume", [&] { elementVolume(t, X); }},
       {"stresses", [&] { elementStresses(t, X, mat, ue); }},

@@ -57,7 +57,7 @@ TEST(PrestressKernels, SpinSofteningEnergyOfTranslation) {
   Eigen::Matrix3d F;
   F << 0.8, 0.1, 0.0, -0.2, 1.2, 0.1, 0.0, 0.3, 0.9;
   const double rho = 7.85e-9, omega = 1200.0;
-  fe::Axis axis;
+  mesh::RotationAxis axis;
   axis.direction = Eigen::Vector3d(1, 2, 2);  // |a| = 3, normalised by the kernel
   const Eigen::Vector3d a = axis.direction.normalized();
   const Eigen::Vector3d t(0.4, -1.0, 2.0);

@@ -6,9 +6,9 @@ using namespace cyclone;
 
 namespace {
 // A single-copy harmonic with two modes whose shapes are unit vectors on given nodes.
-cyclic::HarmonicModes twoModes(int nd, double f1, int node1, double f2, int node2) {
-  cyclic::HarmonicModes hm;
-  hm.harmonic = nd;
+cyclic::NodalDiameterModes twoModes(int nd, double f1, int node1, double f2, int node2) {
+  cyclic::NodalDiameterModes hm;
+  hm.nodalDiameter = nd;
   hm.copies = 1;
   hm.frequenciesHz = {f1, f2};
   std::vector<std::array<double, 3>> zero(4, {0, 0, 0});

@@ -25,13 +25,13 @@
 
 namespace cyclone::cyclic {
 
-HarmonicOperators assembleHarmonicOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+NodalDiameterOperators assembleNodalDiameterOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
                                             const fe::IsotropicElastic& material,
                                             const std::vector<std::string>& fixedNodeSets,
                                             const PrestressState* prestress, linalg::CommPtr comm) {
-  checkHarmonicIndex(sector.sectors, k);
-  HarmonicOperators op;
-  op.harmonic = k;
+  checkNodalDiameter(sector.sectors, k);
+  NodalDiameterOperators op;
+  op.nodalDiameter = k;
   op.copies = copiesFor(sector.sectors, k);
   op.assembler = std::make_unique<fe::Assembler>(mesh, cyclicTransform(mesh, sector, k, fixedNodeSets), comm);
   op.K = tangentStiffness(*op.assembler, material, prestress);
@@ -39,7 +39,7 @@ HarmonicOperators assembleHarmonicOperators(const mesh::Mesh& mesh, const Cyclic
   return op;
 }
 
-solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int distinctModes, double shift,
+solvers::ModalResult solveNodalDiameterModes(const NodalDiameterOperators& operators, int distinctModes, double shift,
                                         solvers::EigenMethod method) {
   const auto& assembler = *operators.assembler;
   solvers::ModalOptions opt;
@@ -57,9 +57,9 @@ solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int 
 
 namespace {
 
-std::string describe(const HarmonicModes& hm, solvers::EigenMethod method) {
+std::string describe(const NodalDiameterModes& hm, solvers::EigenMethod method) {
   std::ostringstream msg;
-  msg << "nodal diameter " << hm.harmonic << ": " << hm.equations << " equations, " << hm.frequenciesHz.size()
+  msg << "nodal diameter " << hm.nodalDiameter << ": " << hm.equations << " equations, " << hm.frequenciesHz.size()
       << " modes, " << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.front()) << " .. "
       << (hm.frequenciesHz.empty() ? 0.0 : hm.frequenciesHz.back()) << " Hz, " << hm.seconds << " s ("
       << (hm.projected ? "projection " : "assembly ") << hm.assemblySeconds << " s, "
@@ -73,18 +73,18 @@ std::string describe(const HarmonicModes& hm, solvers::EigenMethod method) {
 
 // One nodal diameter on its own operators assembled on the transform (Tpetra, distributed
 // over comm): the LOBPCG path, and shift-invert for a free sector whose shift must be found.
-HarmonicModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+NodalDiameterModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
                              const CyclicModalProblem& problem, linalg::CommPtr comm) {
   Timer timer;
-  const auto op = assembleHarmonicOperators(mesh, sector, k, problem.material, problem.fixedNodeSets,
-                                            problem.prestress, comm);
+  const auto op = assembleNodalDiameterOperators(mesh, sector, k, problem.material, problem.fixedNodeSets,
+                                            problem.prestress.get(), comm);
   const auto& assembler = *op.assembler;
-  HarmonicModes hm;
-  hm.harmonic = k;
+  NodalDiameterModes hm;
+  hm.nodalDiameter = k;
   hm.copies = op.copies;
   hm.equations = assembler.transform().numEquations();
   hm.assemblySeconds = timer.seconds();
-  const auto result = solveHarmonicModes(op, problem.modesPerHarmonic, problem.shift, problem.method);
+  const auto result = solveNodalDiameterModes(op, problem.modesPerNodalDiameter, problem.shift, problem.method);
   hm.frequenciesHz = result.frequenciesHz;
   for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
     hm.shapeReal.push_back(assembler.nodalField(*result.modes, int(i), 0));
@@ -101,14 +101,14 @@ HarmonicModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector,
 // One nodal diameter projected from the sector's matrices (one process). Empty when the
 // shift is automatic and K_k does not factor (a free sector): the caller then takes the
 // assembled path, whose shift search handles rigid-body modes.
-std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
                                             const SectorMatrices& matrices, const CyclicModalProblem& problem,
                                             FactorCache& factors) {
   Timer timer;
   const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
   HarmonicForm form(matrices, transform);
-  HarmonicModes hm;
-  hm.harmonic = k;
+  NodalDiameterModes hm;
+  hm.nodalDiameter = k;
   hm.copies = transform.copies();
   hm.equations = transform.numEquations();
   hm.projected = true;
@@ -138,7 +138,7 @@ std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const Cyclic
   eigen.solveUpper = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.solveUpper(x, y); };
   if (form.complexForm()) eigen.partner = [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) { form.timesI(x, y); };
   solvers::ModalOptions opt;
-  opt.numModes = int(std::min<long long>(problem.modesPerHarmonic * hm.copies, hm.equations - 1));
+  opt.numModes = int(std::min<long long>(problem.modesPerNodalDiameter * hm.copies, hm.equations - 1));
   // Blocks of 2. A travelling-wave pair starts from [v, iv] and then needs one solve per
   // block (solveModes' partner): a complex Krylov space of numBlocks vectors, 22 for 5
   // pairs, converged on the built-in sector without a restart (14 and 17 restarted and
@@ -161,8 +161,8 @@ std::optional<HarmonicModes> solveProjected(const mesh::Mesh& mesh, const Cyclic
 }
 
 // A nodal diameter's result as numbers, for the owner rank to broadcast.
-std::vector<double> pack(const HarmonicModes& hm) {
-  std::vector<double> out = {double(hm.harmonic), double(hm.copies), double(hm.equations), hm.seconds,
+std::vector<double> pack(const NodalDiameterModes& hm) {
+  std::vector<double> out = {double(hm.nodalDiameter), double(hm.copies), double(hm.equations), hm.seconds,
                              hm.assemblySeconds, hm.factorSeconds, hm.solveSeconds, double(hm.solves),
                              double(hm.rank), double(hm.projected), double(hm.frequenciesHz.size())};
   out.insert(out.end(), hm.frequenciesHz.begin(), hm.frequenciesHz.end());
@@ -172,11 +172,11 @@ std::vector<double> pack(const HarmonicModes& hm) {
   return out;
 }
 
-HarmonicModes unpack(const std::vector<double>& in, mesh::Index numNodes) {
-  HarmonicModes hm;
+NodalDiameterModes unpack(const std::vector<double>& in, mesh::Index numNodes) {
+  NodalDiameterModes hm;
   std::size_t at = 0;
   auto next = [&]() { return in.at(at++); };
-  hm.harmonic = int(next());
+  hm.nodalDiameter = int(next());
   hm.copies = int(next());
   hm.equations = (long long)next();
   hm.seconds = next();
@@ -209,8 +209,8 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
   h.addAll(std::vector<long long>(sector.right.begin(), sector.right.end()));
   h.add(sector.axis.point.data(), sizeof(double) * 3).add(sector.axis.direction.data(), sizeof(double) * 3);
   h.add(problem.material.E).add(problem.material.nu).add(problem.material.rho);
-  h.add(problem.modesPerHarmonic).add(problem.shift).add(int(problem.method)).add(k);
-  if (const auto* p = problem.prestress) {
+  h.add(problem.modesPerNodalDiameter).add(problem.shift).add(int(problem.method)).add(k);
+  if (const auto* p = problem.prestress.get()) {
     h.add(std::string("prestress")).add(p->speedRpm).add(p->omega).add(int(p->nonlinear));
     h.add(p->axis.point.data(), sizeof(double) * 3).add(p->axis.direction.data(), sizeof(double) * 3);
     for (const auto& u : p->displacement) h.add(u.data(), sizeof(double) * 3);
@@ -221,30 +221,30 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
 
 }  // namespace
 
-std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
+std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
-  std::vector<int> harmonics = problem.harmonics;
+  std::vector<int> harmonics = problem.nodalDiameters;
   if (harmonics.empty())
-    for (int k = 0; k <= sector.maxHarmonicIndex(); ++k) harmonics.push_back(k);
-  for (int k : harmonics) checkHarmonicIndex(sector.sectors, k);
-  if (problem.modesPerHarmonic < 1) throw InputError("modes_per_nd", "must be at least 1");
+    for (int k = 0; k <= sector.maxNodalDiameter(); ++k) harmonics.push_back(k);
+  for (int k : harmonics) checkNodalDiameter(sector.sectors, k);
+  if (problem.modesPerNodalDiameter < 1) throw InputError("modes_per_nd", "must be at least 1");
 
-  std::vector<HarmonicModes> out;
+  std::vector<NodalDiameterModes> out;
   // A nodal diameter saved by an earlier run under the same inputs.
-  auto readBack = [&](int k, std::string& key) -> std::optional<HarmonicModes> {
+  auto readBack = [&](int k, std::string& key) -> std::optional<NodalDiameterModes> {
     if (!problem.checkpoints) return std::nullopt;
     key = harmonicModesKey(mesh, sector, problem, k);
     const auto saved = problem.checkpoints->load(key);
     if (!saved) return std::nullopt;
-    HarmonicModes hm;
+    NodalDiameterModes hm;
     try {
       hm = unpack(*saved, mesh.numNodes());
     } catch (const std::exception&) {  // too short: not this mesh's modes
       return std::nullopt;
     }
     hm.rank = comm->getRank();
-    if (hm.harmonic != k) return std::nullopt;
+    if (hm.nodalDiameter != k) return std::nullopt;
     log::info("nodal diameter " + std::to_string(k) + ": " + std::to_string(hm.frequenciesHz.size()) +
               " modes read back from the checkpoint of an earlier run (" + key.substr(0, 8) + ")");
     return hm;
@@ -267,7 +267,7 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   // diameters spread over the ranks (round robin), each solved on one process and
   // broadcast by its owner; the same answer on any number of ranks.
   const int ranks = comm->getSize(), rank = comm->getRank();
-  const auto matrices = assembleSectorMatrices(mesh, problem.material, problem.prestress);
+  const auto matrices = assembleSectorMatrices(mesh, problem.material, problem.prestress.get());
   {
     std::ostringstream msg;
     msg << "sector matrices (every nodal diameter's element work): " << matrices.K.rows() << " DOFs, "
@@ -280,7 +280,7 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
     std::string key;
     if (auto saved = readBack(harmonics[i], key)) return std::move(*saved);
     auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
-    HarmonicModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
+    NodalDiameterModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
     if (rank == 0) log::info(describe(hm, problem.method));
     if (problem.checkpoints) problem.checkpoints->save(key, pack(hm));
@@ -292,7 +292,7 @@ std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const Cyclic
   }
   // A failure on one rank is carried to all of them with its message: the others
   // would otherwise wait in the broadcast for a result that never comes.
-  std::vector<HarmonicModes> mine(harmonics.size());
+  std::vector<NodalDiameterModes> mine(harmonics.size());
   std::vector<std::string> failure(harmonics.size());
   for (std::size_t i = 0; i < harmonics.size(); ++i) {
     if (int(i % ranks) != rank) continue;
@@ -330,16 +330,16 @@ void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>&
   if (!f) throw Error("cannot write " + path);
   std::fprintf(f, "rpm,nd,mode,freq_hz\n");
   for (const auto& speed : speeds)
-    for (const auto& hm : speed.harmonics)
+    for (const auto& hm : speed.nodalDiameters)
       for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i)
-        std::fprintf(f, "%.10g,%d,%zu,%.12g\n", speed.rpm, hm.harmonic, i + 1, hm.frequenciesHz[i]);
+        std::fprintf(f, "%.10g,%d,%zu,%.12g\n", speed.rpm, hm.nodalDiameter, i + 1, hm.frequenciesHz[i]);
   const bool ok = std::fclose(f) == 0;
   if (!ok) throw Error("cannot write " + path);
   file.commit();
 }
 
 void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,
-                      const std::vector<HarmonicModes>& modes) {
+                      const std::vector<NodalDiameterModes>& modes) {
   mesh::ExodusResults r;
   r.nodalNames = {"ux", "uy", "uz", "u_imag_x", "u_imag_y", "u_imag_z"};  // ParaView groups both as vectors
   r.globalNames = {"nd", "mode", "rpm"};
@@ -353,7 +353,7 @@ void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rp
           step.nodal[d][n] = hm.shapeReal[i][n][d];
           step.nodal[3 + d][n] = hm.shapeImag[i][n][d];
         }
-      step.global = {double(hm.harmonic), double(i + 1), rpm};
+      step.global = {double(hm.nodalDiameter), double(i + 1), rpm};
       r.steps.push_back(std::move(step));
     }
   mesh::writeExodus(path, mesh, r);

@@ -15,9 +15,9 @@ Eigen::Matrix3d CyclicSector::rotation() const {
   return Eigen::AngleAxisd(sectorAngle(), a.normalized()).toRotationMatrix();
 }
 
-void checkHarmonicIndex(int sectors, int k) {
+void checkNodalDiameter(int sectors, int k) {
   if (k < 0 || k > sectors / 2)
-    throw InputError("harmonic index " + std::to_string(k),
+    throw InputError("nodal diameter " + std::to_string(k),
                      "must lie in 0.." + std::to_string(sectors / 2) + " for " + std::to_string(sectors) +
                          " sectors (a nodal diameter d > N/2 is the same as N - d)");
 }

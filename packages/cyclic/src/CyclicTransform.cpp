@@ -68,7 +68,7 @@ bool travellingWavePaired(const fe::DofTransform& T) {
 
 fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int k, const std::vector<char>& fixed,
                                  const Eigen::Matrix3d& Q) {
-  checkHarmonicIndex(sector.sectors, k);
+  checkNodalDiameter(sector.sectors, k);
   const int copies = copiesFor(sector.sectors, k);
   const double phi = k * 2 * M_PI / sector.sectors;
   // Exact values where they are exact, so k = 0 and N/2 stay real and clean.

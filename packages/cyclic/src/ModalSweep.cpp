@@ -21,19 +21,19 @@ std::vector<SpeedModes> solveModalSweep(const mesh::Mesh& mesh, const CyclicSect
   std::vector<SpeedModes> results;
   CyclicModalProblem modes = problem.modes;
   for (double rpm : speeds) {
-    std::optional<PrestressState> state;
+    modes.prestress.reset();
     if (problem.prestress != PrestressKind::None && rpm > 0) {
       const auto k0 = cyclicTransform(mesh, sector, 0, modes.fixedNodeSets);
-      state = problem.prestress == PrestressKind::Linear
-                  ? solveLinearPrestress(mesh, k0, modes.material, rpm, problem.axis, comm)
-                  : solveNonlinearPrestress(mesh, k0, modes.material, rpm, problem.axis, comm);
+      modes.prestress = std::make_shared<const PrestressState>(
+          problem.prestress == PrestressKind::Linear
+              ? solveLinearPrestress(mesh, k0, modes.material, rpm, problem.axis, comm)
+              : solveNonlinearPrestress(mesh, k0, modes.material, rpm, problem.axis, comm));
     }
-    modes.prestress = state ? &*state : nullptr;
     std::ostringstream what;
-    what << "modes at " << rpm << " rpm" << (state ? " (prestressed, spin softening; Coriolis neglected)" : "");
+    what << "modes at " << rpm << " rpm" << (modes.prestress ? " (prestressed, spin softening; Coriolis neglected)" : "");
     log::info(what.str());
     SpeedModes sm{rpm, solveCyclicModes(mesh, sector, modes, comm)};
-    if (visit) visit(modes.prestress, sm);
+    if (visit) visit(modes.prestress.get(), sm);
     results.push_back(std::move(sm));
   }
   return results;

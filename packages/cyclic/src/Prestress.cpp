@@ -17,7 +17,7 @@
 namespace cyclone::cyclic {
 
 PrestressState solveLinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
-                                    const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                    const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
                                     linalg::CommPtr comm) {
   Timer timer;
   PrestressState state;
@@ -101,7 +101,7 @@ Eigen::VectorXd elementDisplacement(const mesh::Mesh& mesh, mesh::Index e,
 }  // namespace
 
 PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
-                                       const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                       const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
                                        linalg::CommPtr comm, const NonlinearPrestressOptions& opt) {
   Timer timer;
   PrestressState state;

@@ -75,7 +75,7 @@ void condenseOntoContacts(ForcedResponseSetup& setup) {
 Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                    const ShroudContactSpec& contact) {
   const auto& right = mesh.nodeSet(contact.rightSet);
-  const Eigen::Vector3d a = vec(models.sector.axis.direction).normalized(), p0 = vec(models.sector.axis.point);
+  const Eigen::Vector3d a = models.sector.axis.direction.normalized(), p0 = models.sector.axis.point;
   Eigen::Vector3d n = contact.normal, t = contact.tangent;
   if (n.norm() == 0 && t.norm() == 0) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -100,35 +100,36 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
   return E;
 }
 
-ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
-                                           const DiscResponseSpec& spec, double referenceHz) {
-  const int N = models.sectors;
-  if (spec.engineOrder < 1)
-    throw InputError("disc_response/engine_order", "must be >= 1 (engine order " + std::to_string(spec.engineOrder) +
+namespace {
+
+// An engine order the sectors carry as a travelling wave: 1 <= EO < N.
+void checkEngineOrder(int engineOrder, int N) {
+  if (engineOrder < 1)
+    throw InputError("disc_response/engine_order", "must be >= 1 (engine order " + std::to_string(engineOrder) +
                                                        " is no travelling excitation; 0 is a static load)");
-  if (spec.engineOrder > N)
+  if (engineOrder > N)
     throw InputError("disc_response/engine_order",
-                     std::to_string(spec.engineOrder) + " on " + std::to_string(N) +
+                     std::to_string(engineOrder) + " on " + std::to_string(N) +
                          " sectors: the blades see it exactly as engine order " +
-                         std::to_string(spec.engineOrder % N) + " (EO mod N; the excitation exists only at the " +
-                         "sectors, so higher orders fold back); give " + std::to_string(spec.engineOrder % N));
-  if (spec.engineOrder == N)
+                         std::to_string(engineOrder % N) + " (EO mod N; the excitation exists only at the " +
+                         "sectors, so higher orders fold back); give " + std::to_string(engineOrder % N));
+  if (engineOrder == N)
     throw InputError("disc_response/engine_order", std::to_string(N) + " on " + std::to_string(N) +
                                                        " sectors folds to 0: every sector in phase (nodal diameter 0); "
                                                        "not a travelling wave, use the nodal-diameter-0 response");
-  auto receptance = std::make_shared<rom::SectorReceptance>(N, models.models);
-  const hbm::HarmonicSet harmonics(spec.harmonics);
-  for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
+}
 
-  // Contact pairs: right[i] of this sector against left[i] of the next, seen in this sector's frame.
-  const auto& left = mesh.nodeSet(spec.contact.leftSet);
-  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+// The contact pairs: right[i] of this sector against left[i] of the next, which must be
+// its image under the sector rotation.
+void checkContactPairs(const mesh::Mesh& mesh, const DiscReducedModels& models, const ShroudContactSpec& contact) {
+  const auto& left = mesh.nodeSet(contact.leftSet);
+  const auto& right = mesh.nodeSet(contact.rightSet);
   if (left.size() != right.size())
-    throw InputError("contact", "node sets '" + spec.contact.leftSet + "' (" + std::to_string(left.size()) +
-                                    " nodes) and '" + spec.contact.rightSet + "' (" + std::to_string(right.size()) +
+    throw InputError("contact", "node sets '" + contact.leftSet + "' (" + std::to_string(left.size()) +
+                                    " nodes) and '" + contact.rightSet + "' (" + std::to_string(right.size()) +
                                     ") do not pair");
   const Eigen::Matrix3d Q = models.sector.rotation();
-  const Eigen::Vector3d p0 = vec(models.sector.axis.point);
+  const Eigen::Vector3d p0 = models.sector.axis.point;
   double size = 0;
   for (const auto& c : mesh.coords) size = std::max(size, (vec(c) - p0).norm());
   for (std::size_t i = 0; i < left.size(); ++i) {
@@ -141,54 +142,54 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
       throw InputError("contact", msg.str());
     }
   }
-  const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
+}
+
+// Which pairs carry a gap element instead of friction (checked), and that element.
+std::shared_ptr<const hbm::NonlinearElement> gapElementFor(const ShroudGapSpec& gap, std::size_t pairs,
+                                                          std::vector<bool>& isGap) {
+  isGap.assign(pairs, false);
+  if (gap.pairs.empty()) return nullptr;
+  for (int i : gap.pairs) {
+    if (i < 0 || i >= int(pairs))
+      throw InputError("gap/pairs", "pair " + std::to_string(i) + " is not one of the " + std::to_string(pairs) +
+                                        " contact pairs (0-based)");
+    if (isGap[std::size_t(i)]) throw InputError("gap/pairs", "pair " + std::to_string(i) + " is listed twice");
+    isGap[std::size_t(i)] = true;
+  }
+  if (!(std::isfinite(gap.kn) && gap.kn > 0))
+    throw InputError("gap/kn", "must be a positive stiffness (N/mm), got " + std::to_string(gap.kn));
+  if (!std::isfinite(gap.clearance)) throw InputError("gap/clearance", "must be finite");
+  return std::make_shared<hbm::ScalarElementAdapter>(std::make_shared<hbm::UnilateralSpring>(gap.kn, gap.clearance));
+}
+
+// The shroud contacts' 3D friction law (InputError naming `contact` for bad parameters).
+std::shared_ptr<const hbm::NonlinearElement> frictionElement(const ShroudContactSpec& contact) {
   hbm::FrictionContactParameters p;
-  p.tangentialDirections = 2, p.kn = spec.contact.kn, p.kt = spec.contact.kt, p.mu = spec.contact.mu;
-  p.preload = spec.contact.preload;
-  std::shared_ptr<const hbm::NonlinearElement> element;
+  p.tangentialDirections = 2, p.kn = contact.kn, p.kt = contact.kt, p.mu = contact.mu;
+  p.preload = contact.preload;
   try {
-    element = std::make_shared<hbm::FrictionContact>(p);
+    return std::make_shared<hbm::FrictionContact>(p);
   } catch (const InputError& e) {
     throw InputError("contact", e.what());
   }
-  std::vector<bool> isGap(left.size(), false);
-  std::shared_ptr<const hbm::NonlinearElement> gapElement;
-  if (!spec.gap.pairs.empty()) {
-    for (int i : spec.gap.pairs) {
-      if (i < 0 || i >= int(left.size()))
-        throw InputError("gap/pairs", "pair " + std::to_string(i) + " is not one of the " +
-                                          std::to_string(left.size()) + " contact pairs (0-based)");
-      if (isGap[std::size_t(i)]) throw InputError("gap/pairs", "pair " + std::to_string(i) + " is listed twice");
-      isGap[std::size_t(i)] = true;
-    }
-    if (!(std::isfinite(spec.gap.kn) && spec.gap.kn > 0))
-      throw InputError("gap/kn", "must be a positive stiffness (N/mm), got " + std::to_string(spec.gap.kn));
-    if (!std::isfinite(spec.gap.clearance)) throw InputError("gap/clearance", "must be finite");
-    gapElement = std::make_shared<hbm::ScalarElementAdapter>(
-        std::make_shared<hbm::UnilateralSpring>(spec.gap.kn, spec.gap.clearance));
-  }
-  const int samples = spec.samples > 0 ? spec.samples
-                                       : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
+}
 
-  ForcedResponseSetup setup;
-  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
-  auto& hb = *setup.system;
-  hbm::CyclicCoupling coupling;
-  coupling.sectors = N, coupling.engineOrder = spec.engineOrder;
-  hb.setCyclic(coupling);
-  // Z = A^-1 per harmonic when every model has the full rank (hybrid, full FE): a
-  // cheaper Newton step than the compliance statement a modal truncation needs.
-  bool invertible = true;
-  for (const auto& [k, m] : models.models) {
-    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
-    if (h && !h->hasStaticCorrection()) invertible = false;
-  }
-  hb.useDynamicStiffness(invertible);
+// One element per pair, on w = E^T (Q^T u_next,left - u_right): friction, or a gap on the
+// normal (the frame's last column) only.
+void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, const DiscReducedModels& models,
+                        const DiscResponseSpec& spec, const std::shared_ptr<const hbm::NonlinearElement>& element,
+                        ForcedResponseSetup& setup) {
+  const auto& left = mesh.nodeSet(spec.contact.leftSet);
+  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+  const Eigen::Matrix3d Q = models.sector.rotation();
+  const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
+  std::vector<bool> isGap;
+  const auto gapElement = gapElementFor(spec.gap, left.size(), isGap);
   const int n = hb.numDofs();
   for (std::size_t i = 0; i < left.size(); ++i) {
     const int r = retainedIndex(models, right[i], spec.contact.rightSet);
     const int l = retainedIndex(models, left[i], spec.contact.leftSet);
-    const int d = isGap[i] ? 1 : 3;  // a gap acts on the normal (the frame's last column) only
+    const int d = isGap[i] ? 1 : 3;
     const Eigen::MatrixXd Ei = E.rightCols(d);
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
     W.middleRows(3 * r, 3) = -Ei;                    // - this sector's right node
@@ -196,7 +197,12 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     hb.addElement(isGap[i] ? gapElement : element, W, Wnext);
     setup.elementNames.push_back(isGap[i] ? "gap" : "contact");
   }
-  // Excitation on harmonic 1 (cos), travelling with the engine order.
+}
+
+// The excitation on harmonic 1 (cos), travelling with the engine order, and the output
+// DOFs: each response node's excitation direction first, then its other two.
+void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, const DiscReducedModels& models,
+                             const DiscResponseSpec& spec, ForcedResponseSetup& setup) {
   const Eigen::Vector3d d = spec.excitation.direction.normalized();
   if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
   for (auto node : mesh.nodeSet(spec.excitation.nodeSet)) {
@@ -204,6 +210,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     for (int c = 0; c < 3; ++c)
       if (d(c) != 0) hb.addExcitation(3 * i + c, 1, spec.excitation.amplitude * d(c));
   }
+  const int n = hb.numDofs();
   setup.dofNames.resize(n);
   for (int i = 0; i < n / 3; ++i)
     for (int c = 0; c < 3; ++c)
@@ -218,6 +225,37 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
       for (int c = 0; c < 3; ++c)
         if (c != c0) setup.outputDofs.push_back(3 * i + c);
     }
+}
+
+}  // namespace
+
+ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                           const DiscResponseSpec& spec, double referenceHz) {
+  const int N = models.sectors;
+  checkEngineOrder(spec.engineOrder, N);
+  auto receptance = std::make_shared<rom::SectorReceptance>(N, models.models);
+  const hbm::HarmonicSet harmonics(spec.harmonics);
+  for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
+  checkContactPairs(mesh, models, spec.contact);
+  const auto element = frictionElement(spec.contact);
+  const int samples = spec.samples > 0 ? spec.samples
+                                       : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
+  ForcedResponseSetup setup;
+  setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
+  auto& hb = *setup.system;
+  hbm::CyclicCoupling coupling;
+  coupling.sectors = N, coupling.engineOrder = spec.engineOrder;
+  hb.setCyclic(coupling);
+  // Z = A^-1 per harmonic when every model has the full rank (hybrid, full FE): a
+  // cheaper Newton step than the compliance statement a modal truncation needs.
+  bool invertible = true;
+  for (const auto& [k, m] : models.models) {
+    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
+    if (h && !h->hasStaticCorrection()) invertible = false;
+  }
+  hb.useDynamicStiffness(invertible);
+  addContactElements(hb, mesh, models, spec, element, setup);
+  addExcitationAndOutputs(hb, mesh, models, spec, setup);
   if (spec.condensed) condenseOntoContacts(setup);
   setup.parameter = ForcedResponseSetup::Parameter::Omega;
   setup.omegaUnit = 2 * M_PI * referenceHz;

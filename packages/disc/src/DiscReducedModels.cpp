@@ -127,13 +127,108 @@ double ReducedModelCheck::maxError() const {
 std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
                                                    const DiscModelSpec& spec, linalg::CommPtr comm) {
   if (spec.prestress == cyclic::PrestressKind::None || spec.rpm == 0) return std::nullopt;
-  fe::Axis axis;
-  axis.point = Eigen::Vector3d(spec.axis.point[0], spec.axis.point[1], spec.axis.point[2]);
-  axis.direction = Eigen::Vector3d(spec.axis.direction[0], spec.axis.direction[1], spec.axis.direction[2]);
+  const mesh::RotationAxis& axis = spec.axis;
   const auto k0 = cyclic::cyclicTransform(mesh, sector, 0, spec.fixedNodeSets);
   return spec.prestress == cyclic::PrestressKind::Linear ? cyclic::solveLinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm)
                                     : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
 }
+
+namespace {
+
+// A cached model of nodal diameter k read back into `out` (false: none, or damaged and
+// to be rebuilt).
+bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, DiscReducedModels& out) {
+  if (path.empty() || !std::filesystem::exists(path)) return false;
+  std::optional<io::ReducedModelRecord> cached;
+  try {
+    cached = io::readReducedModelHdf5(path);
+  } catch (const std::exception& e) {
+    // Truncated or damaged (a killed copy, a full disk): rebuilt and written again.
+    log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " cannot be read (" + e.what() +
+              "); rebuilding it");
+    return false;
+  }
+  if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
+    out.check = readCheck(path + ".check.csv", k);
+  const auto& record = *cached;
+  if (record.kind != reducedModelKindName(spec.kind))
+    throw InputError(path, "holds a " + record.kind + " model, " + reducedModelKindName(spec.kind) + " expected");
+  // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
+  out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
+                         ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)
+                         : distinctHz(record.modes.eigenvalues, record.modes.copies);
+  if (out.naturalHz[k].empty()) throw InputError(path, "holds no natural frequencies of the full model");
+  out.models[k] = record.model();
+  out.files[k] = path;
+  ++out.reused;
+  log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
+  return true;
+}
+
+// One nodal diameter's reduced model of the spec's kind from its full FE model, and the
+// record its cache file holds (none for the full FE model itself).
+struct BuiltModel {
+  std::shared_ptr<const rom::ComplianceModel> model;
+  std::optional<io::ReducedModelRecord> record;
+};
+
+BuiltModel reduceModel(const std::shared_ptr<rom::CyclicHarmonicModel>& full, const rom::RetainedModes& modes, int k,
+                       const DiscModelSpec& spec, const std::vector<mesh::Index>& retainedNodes) {
+  std::vector<int> nodes, directions, copies;
+  for (int c = 0; c < full->copies(); ++c)
+    for (auto node : retainedNodes)
+      for (int d = 0; d < 3; ++d) nodes.push_back(int(node)), directions.push_back(d), copies.push_back(c);
+  BuiltModel out;
+  if (spec.kind == ReducedModelKind::FullFe) {
+    out.model = full;
+  } else if (spec.kind == ReducedModelKind::Guyan || spec.kind == ReducedModelKind::CraigBampton) {
+    const auto reduction = rom::reduceOntoRetainedDofs(*full, spec.kind == ReducedModelKind::Guyan ? 0 : spec.modes);
+    if (spec.kind == ReducedModelKind::Guyan) {
+      const auto guyan = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
+      out.model = guyan;
+      out.record = io::makeReducedModelRecord(*guyan, k, spec.sectors, spec.rpm, nodes, directions, copies);
+    } else {
+      const auto cb = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
+      out.model = cb;
+      out.record = io::makeReducedModelRecord(*cb, k, spec.sectors, spec.rpm, nodes, directions, copies);
+    }
+    out.record->fullModelEigenvalues = modes.eigenvalues;
+  } else {
+    const auto hybrid =
+        spec.kind == ReducedModelKind::Hybrid
+            ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes), spec.lossFactor)
+            : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
+    out.model = hybrid;
+    out.record = io::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies);
+  }
+  return out;
+}
+
+// The reduced model against the full FE compliance at spec.checkFrequencies frequencies
+// from half the first natural frequency to the fifth's (or the last computed), log-spaced.
+ReducedModelCheck checkAgainstFull(const rom::ComplianceModel& model, const rom::ComplianceModel& full, int k,
+                                   const std::vector<double>& hz, int frequencies) {
+  Timer timer;
+  const double lo = 0.5 * hz.front(), hi = 1.05 * hz[std::min<std::size_t>(4, hz.size() - 1)];
+  ReducedModelCheck c;
+  c.nodalDiameter = k;
+  for (int i = 0; i < frequencies; ++i) {
+    const double f = lo * std::pow(hi / lo, double(i) / std::max(1, frequencies - 1));
+    const Eigen::MatrixXcd Ar = model.compliance(2 * M_PI * f), Af = full.compliance(2 * M_PI * f);
+    c.hz.push_back(f);
+    c.reduced.push_back(std::abs(Ar(Ar.rows() - 1, Ar.rows() - 1)));  // the last retained node's last direction
+    c.full.push_back(std::abs(Af(Af.rows() - 1, Af.rows() - 1)));
+    c.error.push_back((Ar - Af).norm() / Af.norm());
+  }
+  c.seconds = timer.seconds();
+  std::ostringstream line;
+  line << "reduced model check at ND " << k << ": largest relative error " << c.maxError() << " over " << frequencies
+       << " frequencies " << lo << ".." << hi << " Hz (" << c.seconds << " s)";
+  log::info(line.str());
+  return c;
+}
+
+}  // namespace
 
 DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,
                                          const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
@@ -144,7 +239,7 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   DiscReducedModels out;
   out.sectors = spec.sectors;
   out.sector = cyclic::makeCyclicSector(mesh, spec.sectors, spec.axis, spec.leftSets, spec.rightSets);
-  for (int k : nodalDiameters) cyclic::checkHarmonicIndex(spec.sectors, k);
+  for (int k : nodalDiameters) cyclic::checkNodalDiameter(spec.sectors, k);
   for (const auto& name : spec.retainedNodeSets)
     for (mesh::Index n : mesh.nodeSet(name))
       if (std::find(out.retainedNodes.begin(), out.retainedNodes.end(), n) == out.retainedNodes.end())
@@ -155,15 +250,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   problem.fixedNodeSets = spec.fixedNodeSets;
   problem.retainedNodeSets = spec.retainedNodeSets;
   problem.lossFactor = spec.lossFactor;
-  std::optional<cyclic::PrestressState> prestress;
+  std::optional<cyclic::PrestressState> prestress;  // computed when the first model is built, not for read-backs
   bool prestressed = false;
-  auto ensurePrestress = [&] {
-    if (prestressed) return;
-    prestress = discPrestress(mesh, out.sector, spec, comm);
-    prestressed = true;
-    if (prestress) problem.prestress = &*prestress;
-  };
-
   // Every reduced kind has an HDF5 form; the full FE model is the reference and is rebuilt.
   const bool cache = !cacheDirectory.empty() && spec.kind != ReducedModelKind::FullFe;
   if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
@@ -171,34 +259,12 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     const std::string path =
         cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
               : std::string();
-    std::optional<io::ReducedModelRecord> cached;
-    if (cache && std::filesystem::exists(path)) {
-      try {
-        cached = io::readReducedModelHdf5(path);
-      } catch (const std::exception& e) {
-        // Truncated or damaged (a killed copy, a full disk): rebuilt and written again.
-        log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " cannot be read (" + e.what() +
-                  "); rebuilding it");
-      }
+    if (readCachedModel(path, k, spec, out)) continue;
+    if (!prestressed) {
+      prestress = discPrestress(mesh, out.sector, spec, comm);
+      prestressed = true;
+      if (prestress) problem.prestress = std::make_shared<const cyclic::PrestressState>(std::move(*prestress));
     }
-    if (cached) {
-      if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
-        out.check = readCheck(path + ".check.csv", k);
-      const auto& record = *cached;
-      if (record.kind != reducedModelKindName(spec.kind))
-        throw InputError(path, "holds a " + record.kind + " model, " + reducedModelKindName(spec.kind) + " expected");
-      // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
-      out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
-                             ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)
-                             : distinctHz(record.modes.eigenvalues, record.modes.copies);
-      if (out.naturalHz[k].empty()) throw InputError(path, "holds no natural frequencies of the full model");
-      out.models[k] = record.model();
-      out.files[k] = path;
-      ++out.reused;
-      log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
-      continue;
-    }
-    ensurePrestress();
     problem.harmonic = k;
     Timer build;
     auto full = std::make_shared<rom::CyclicHarmonicModel>(mesh, out.sector, problem, comm);
@@ -207,65 +273,20 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
       throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +
                                                           ": a disc response needs the disc held (e.g. the bore)");
     out.naturalHz[k] = distinctHz(modes.eigenvalues, modes.copies);
-    std::shared_ptr<const rom::ComplianceModel> model;
-    std::shared_ptr<const rom::HybridFrfModel> hybrid;
-    std::shared_ptr<const rom::GuyanModel> guyan;
-    std::shared_ptr<const rom::CraigBamptonModel> craigBampton;
-    if (spec.kind == ReducedModelKind::FullFe) {
-      model = full;
-    } else if (spec.kind == ReducedModelKind::Guyan || spec.kind == ReducedModelKind::CraigBampton) {
-      const auto reduction = rom::reduceOntoRetainedDofs(*full, spec.kind == ReducedModelKind::Guyan ? 0 : spec.modes);
-      if (spec.kind == ReducedModelKind::Guyan) model = guyan = std::make_shared<rom::GuyanModel>(reduction, spec.lossFactor);
-      else model = craigBampton = std::make_shared<rom::CraigBamptonModel>(reduction, spec.modes, spec.lossFactor);
-    } else {
-      hybrid = spec.kind == ReducedModelKind::Hybrid
-                   ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes),
-                                                           spec.lossFactor)
-                   : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
-      model = hybrid;
-    }
-    out.models[k] = model;
+    const auto built = reduceModel(full, modes, k, spec, out.retainedNodes);
+    out.models[k] = built.model;
     ++out.built;
     if (k == spec.checkNodalDiameter && spec.kind != ReducedModelKind::FullFe && spec.checkFrequencies > 0) {
-      // From half the first natural frequency to the fifth's (or the last computed), log-spaced.
-      Timer check;
-      const auto& hz = out.naturalHz[k];
-      const double lo = 0.5 * hz.front(), hi = 1.05 * hz[std::min<std::size_t>(4, hz.size() - 1)];
-      auto& c = out.check;
-      c.nodalDiameter = k;
-      for (int i = 0; i < spec.checkFrequencies; ++i) {
-        const double f = lo * std::pow(hi / lo, double(i) / std::max(1, spec.checkFrequencies - 1));
-        const Eigen::MatrixXcd Ar = model->compliance(2 * M_PI * f), Af = full->compliance(2 * M_PI * f);
-        c.hz.push_back(f);
-        c.reduced.push_back(std::abs(Ar(Ar.rows() - 1, Ar.rows() - 1)));  // the last retained node's last direction
-        c.full.push_back(std::abs(Af(Af.rows() - 1, Af.rows() - 1)));
-        c.error.push_back((Ar - Af).norm() / Af.norm());
-      }
-      c.seconds = check.seconds();
-      std::ostringstream line;
-      line << "reduced model check at ND " << k << ": largest relative error " << c.maxError() << " over "
-           << spec.checkFrequencies << " frequencies " << lo << ".." << hi << " Hz (" << c.seconds << " s)";
-      log::info(line.str());
-      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", c);
+      out.check = checkAgainstFull(*built.model, *full, k, out.naturalHz[k], spec.checkFrequencies);
+      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", out.check);
     }
     std::ostringstream msg;
-    msg << "reduced model ND " << k << " (" << reducedModelKindName(spec.kind) << ", " << spec.modes << " natural frequencies, "
-        << full->size() << " retained DOFs): built in " << build.seconds() << " s; first " << out.naturalHz[k].front()
-        << " Hz";
+    msg << "reduced model ND " << k << " (" << reducedModelKindName(spec.kind) << ", " << spec.modes
+        << " natural frequencies, " << full->size() << " retained DOFs): built in " << build.seconds() << " s; first "
+        << out.naturalHz[k].front() << " Hz";
     log::info(msg.str());
-    if (cache) {
-      std::vector<int> nodes, directions, copies;
-      const int nn = int(out.retainedNodes.size());
-      for (int c = 0; c < full->copies(); ++c)
-        for (int i = 0; i < nn; ++i)
-          for (int d = 0; d < 3; ++d)
-            nodes.push_back(int(out.retainedNodes[i])), directions.push_back(d), copies.push_back(c);
-      auto record =
-          hybrid ? io::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies)
-          : guyan ? io::makeReducedModelRecord(*guyan, k, spec.sectors, spec.rpm, nodes, directions, copies)
-                  : io::makeReducedModelRecord(*craigBampton, k, spec.sectors, spec.rpm, nodes, directions, copies);
-      if (!hybrid) record.fullModelEigenvalues = modes.eigenvalues;
-      if (comm->getRank() == 0) io::writeReducedModelHdf5(path, record);
+    if (cache && built.record) {
+      if (comm->getRank() == 0) io::writeReducedModelHdf5(path, *built.record);
       out.files[k] = path;
     }
   }

@@ -270,7 +270,7 @@ Teuchos::RCP<linalg::MultiVector> Assembler::assembleVector(const ElementVectorK
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::centrifugalLoad(const IsotropicElastic& material, double omega,
-                                                             const Axis& axis) const {
+                                                             const RotationAxis& axis) const {
   return assembleVector([&](mesh::Index, ElementType t, const ElementCoords& X) {
     return elementCentrifugalLoad(t, X, material.rho, omega, axis);
   });

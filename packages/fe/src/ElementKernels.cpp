@@ -114,7 +114,7 @@ double strainDisplacement(const ShapeTable& t, int q, const ElementCoords& X, do
   return t.weights[q] * detJ;
 }
 
-Eigen::Vector3d unitAxis(const Axis& axis) {
+Eigen::Vector3d unitAxis(const RotationAxis& axis) {
   const double norm = axis.direction.norm();
   if (!(norm > 0) || !std::isfinite(norm)) throw Error("centrifugal load: the rotation axis direction is zero");
   return axis.direction / norm;
@@ -158,7 +158,7 @@ Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho
 }
 
 Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
-                                       const Axis& axis) {
+                                       const RotationAxis& axis) {
   const int n = checkedNodeCount(type, X);
   const auto& t = shapeTable(type, Rule::Mass);
   const double floor = degenerateDetJ(X);
@@ -247,7 +247,7 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
 }
 
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
-                                     const Axis& axis) {
+                                     const RotationAxis& axis) {
   const int n = checkedNodeCount(type, X);
   const Eigen::Vector3d a = unitAxis(axis);
   const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();

@@ -9,6 +9,15 @@ ScalarElementAdapter::ScalarElementAdapter(std::shared_ptr<const ScalarElement> 
   if (!element_) throw InputError("nonlinear element", "no element given");
 }
 
+Eigen::MatrixXd ScalarElementAdapter::forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const {
+  const Eigen::VectorXd wCoefficients = W.col(0);
+  const Eigen::VectorXd w = aft.toTime(wCoefficients);
+  Eigen::VectorXd wdot, f;
+  if (element_->usesVelocity()) wdot = aft.toTime(Eigen::VectorXd(omega * (aft.derivativeMatrix() * wCoefficients)));
+  element_->evaluate(w, wdot, f, nullptr, nullptr);
+  return f;
+}
+
 void ScalarElementAdapter::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                                          Eigen::MatrixXd* jacobian) const {
   F = hbm::harmonicForce(*element_, aft, Eigen::VectorXd(W.col(0)), jacobian, omega);

@@ -365,6 +365,101 @@ void checkSize(std::size_t have, std::size_t want, const std::string& path, std:
 
 }  // namespace
 
+namespace {
+
+void writeNodes(int exoid, const Mesh& mesh, const std::string& path) {
+  const int64_t numNodes = mesh.numNodes();
+  std::vector<double> x(numNodes), y(numNodes), z(numNodes);
+  for (int64_t n = 0; n < numNodes; ++n) x[n] = mesh.coords[n][0], y[n] = mesh.coords[n][1], z[n] = mesh.coords[n][2];
+  check(ex_put_coord(exoid, x.data(), y.data(), z.data()), "ex_put_coord", path);
+  char xName[] = "x", yName[] = "y", zName[] = "z";
+  char* coordNames[] = {xName, yName, zName};
+  check(ex_put_coord_names(exoid, coordNames), "ex_put_coord_names", path);
+  std::vector<int64_t> ids(numNodes);
+  for (int64_t n = 0; n < numNodes; ++n) ids[n] = mesh.nodeIds.empty() ? n + 1 : mesh.nodeIds[n];
+  check(ex_put_id_map(exoid, EX_NODE_MAP, ids.data()), "ex_put_id_map", path);
+}
+
+// Blocks without element ids are numbered as Mesh::assignDefaultIds would.
+void writeBlocks(int exoid, const Mesh& mesh, const std::string& path) {
+  int64_t nextId = 1;
+  for (const auto& block : mesh.blocks)
+    for (Index id : block.elementIds) nextId = std::max<int64_t>(nextId, id + 1);
+  std::vector<int64_t> elementIds;
+  for (const auto& block : mesh.blocks) {
+    const int64_t ne = block.numElements(), n = nodesPerElement(block.type);
+    check(ex_put_block(exoid, EX_ELEM_BLOCK, block.id, exodusName(block.type).c_str(), ne, n, 0, 0, 0),
+          "ex_put_block", path);
+    if (ne > 0) {
+      std::vector<int64_t> conn(block.connectivity.begin(), block.connectivity.end());
+      for (auto& node : conn) ++node;
+      check(ex_put_conn(exoid, EX_ELEM_BLOCK, block.id, conn.data(), nullptr, nullptr), "ex_put_conn", path);
+    }
+    check(ex_put_name(exoid, EX_ELEM_BLOCK, block.id, block.name.substr(0, kMaxNameLength).c_str()), "ex_put_name",
+          path);
+    for (int64_t e = 0; e < ne; ++e)
+      elementIds.push_back(block.elementIds.empty() ? nextId++ : block.elementIds[e]);
+  }
+  if (mesh.numElements() > 0) check(ex_put_id_map(exoid, EX_ELEM_MAP, elementIds.data()), "ex_put_id_map", path);
+
+}
+
+void writeSets(int exoid, const Mesh& mesh, const std::string& path) {
+  int64_t setId = 1;
+  for (const auto& [name, nodes] : mesh.nodeSets) {
+    std::vector<int64_t> entries(nodes.begin(), nodes.end());
+    for (auto& node : entries) ++node;
+    writeSet(exoid, EX_NODE_SET, setId++, name, entries, nullptr, path);
+  }
+  setId = 1;
+  for (const auto& [name, elements] : mesh.elementSets) {
+    std::vector<int64_t> entries(elements.begin(), elements.end());
+    for (auto& element : entries) ++element;
+    writeSet(exoid, EX_ELEM_SET, setId++, name, entries, nullptr, path);
+  }
+  setId = 1;
+  for (const auto& [name, sides] : mesh.sideSets) {
+    std::vector<int64_t> elements, faces;
+    for (const auto& side : sides) elements.push_back(side.element + 1), faces.push_back(side.side + 1);
+    writeSet(exoid, EX_SIDE_SET, setId++, name, elements, &faces, path);
+  }
+
+}
+
+void writeResultStep(int exoid, const Mesh& mesh, const ExodusResults& results, std::size_t s,
+                     const std::string& path) {
+  const int64_t numNodes = mesh.numNodes(), numElements = mesh.numElements();
+  const auto& step = results.steps[s];
+  const int exoStep = static_cast<int>(s) + 1;
+  check(ex_put_time(exoid, exoStep, &step.time), "ex_put_time", path);
+  checkSize(step.nodal.size(), results.nodalNames.size(), path, s, "the list of nodal fields");
+  for (std::size_t v = 0; v < step.nodal.size(); ++v) {
+    checkSize(step.nodal[v].size(), numNodes, path, s, "nodal field '" + results.nodalNames[v] + "'");
+    if (numNodes > 0)
+      check(ex_put_var(exoid, exoStep, EX_NODAL, static_cast<int>(v) + 1, 1, numNodes, step.nodal[v].data()),
+            "ex_put_var", path);
+  }
+  checkSize(step.element.size(), results.elementNames.size(), path, s, "the list of element fields");
+  for (std::size_t v = 0; v < step.element.size(); ++v) {
+    checkSize(step.element[v].size(), numElements, path, s, "element field '" + results.elementNames[v] + "'");
+    int64_t first = 0;
+    for (const auto& block : mesh.blocks) {
+      const int64_t ne = block.numElements();
+      if (ne > 0)
+        check(ex_put_var(exoid, exoStep, EX_ELEM_BLOCK, static_cast<int>(v) + 1, block.id, ne,
+                         step.element[v].data() + first),
+              "ex_put_var", path);
+      first += ne;
+    }
+  }
+  checkSize(step.global.size(), results.globalNames.size(), path, s, "the list of global values");
+  if (!step.global.empty())
+    check(ex_put_glob_vars(exoid, exoStep, static_cast<int>(step.global.size()), step.global.data()),
+          "ex_put_glob_vars", path);
+}
+
+}  // namespace
+
 void writeExodus(const std::string& path, const Mesh& mesh, const ExodusResults& results) {
   quietExodus();
   checkConsistency(mesh);
@@ -387,58 +482,9 @@ void writeExodus(const std::string& path, const Mesh& mesh, const ExodusResults&
   init.num_side_sets = static_cast<int64_t>(mesh.sideSets.size());
   check(ex_put_init_ext(exoid, &init), "ex_put_init_ext", path);
 
-  {
-    std::vector<double> x(numNodes), y(numNodes), z(numNodes);
-    for (int64_t n = 0; n < numNodes; ++n) x[n] = mesh.coords[n][0], y[n] = mesh.coords[n][1], z[n] = mesh.coords[n][2];
-    check(ex_put_coord(exoid, x.data(), y.data(), z.data()), "ex_put_coord", path);
-    char xName[] = "x", yName[] = "y", zName[] = "z";
-    char* coordNames[] = {xName, yName, zName};
-    check(ex_put_coord_names(exoid, coordNames), "ex_put_coord_names", path);
-    std::vector<int64_t> ids(numNodes);
-    for (int64_t n = 0; n < numNodes; ++n) ids[n] = mesh.nodeIds.empty() ? n + 1 : mesh.nodeIds[n];
-    check(ex_put_id_map(exoid, EX_NODE_MAP, ids.data()), "ex_put_id_map", path);
-  }
-
-  // Blocks without element ids are numbered as Mesh::assignDefaultIds would.
-  int64_t nextId = 1;
-  for (const auto& block : mesh.blocks)
-    for (Index id : block.elementIds) nextId = std::max<int64_t>(nextId, id + 1);
-  std::vector<int64_t> elementIds;
-  for (const auto& block : mesh.blocks) {
-    const int64_t ne = block.numElements(), n = nodesPerElement(block.type);
-    check(ex_put_block(exoid, EX_ELEM_BLOCK, block.id, exodusName(block.type).c_str(), ne, n, 0, 0, 0),
-          "ex_put_block", path);
-    if (ne > 0) {
-      std::vector<int64_t> conn(block.connectivity.begin(), block.connectivity.end());
-      for (auto& node : conn) ++node;
-      check(ex_put_conn(exoid, EX_ELEM_BLOCK, block.id, conn.data(), nullptr, nullptr), "ex_put_conn", path);
-    }
-    check(ex_put_name(exoid, EX_ELEM_BLOCK, block.id, block.name.substr(0, kMaxNameLength).c_str()), "ex_put_name",
-          path);
-    for (int64_t e = 0; e < ne; ++e)
-      elementIds.push_back(block.elementIds.empty() ? nextId++ : block.elementIds[e]);
-  }
-  if (numElements > 0) check(ex_put_id_map(exoid, EX_ELEM_MAP, elementIds.data()), "ex_put_id_map", path);
-
-  int64_t setId = 1;
-  for (const auto& [name, nodes] : mesh.nodeSets) {
-    std::vector<int64_t> entries(nodes.begin(), nodes.end());
-    for (auto& node : entries) ++node;
-    writeSet(exoid, EX_NODE_SET, setId++, name, entries, nullptr, path);
-  }
-  setId = 1;
-  for (const auto& [name, elements] : mesh.elementSets) {
-    std::vector<int64_t> entries(elements.begin(), elements.end());
-    for (auto& element : entries) ++element;
-    writeSet(exoid, EX_ELEM_SET, setId++, name, entries, nullptr, path);
-  }
-  setId = 1;
-  for (const auto& [name, sides] : mesh.sideSets) {
-    std::vector<int64_t> elements, faces;
-    for (const auto& side : sides) elements.push_back(side.element + 1), faces.push_back(side.side + 1);
-    writeSet(exoid, EX_SIDE_SET, setId++, name, elements, &faces, path);
-  }
-
+  writeNodes(exoid, mesh, path);
+  writeBlocks(exoid, mesh, path);
+  writeSets(exoid, mesh, path);
   writeVariableNames(exoid, EX_GLOBAL, results.globalNames, path);
   writeVariableNames(exoid, EX_NODAL, results.nodalNames, path);
   writeVariableNames(exoid, EX_ELEM_BLOCK, results.elementNames, path);
@@ -449,35 +495,7 @@ void writeExodus(const std::string& path, const Mesh& mesh, const ExodusResults&
     check(ex_put_truth_table(exoid, EX_ELEM_BLOCK, numBlocks, numElementVars, truth.data()), "ex_put_truth_table", path);
   }
 
-  for (std::size_t s = 0; s < results.steps.size(); ++s) {
-    const auto& step = results.steps[s];
-    const int exoStep = static_cast<int>(s) + 1;
-    check(ex_put_time(exoid, exoStep, &step.time), "ex_put_time", path);
-    checkSize(step.nodal.size(), results.nodalNames.size(), path, s, "the list of nodal fields");
-    for (std::size_t v = 0; v < step.nodal.size(); ++v) {
-      checkSize(step.nodal[v].size(), numNodes, path, s, "nodal field '" + results.nodalNames[v] + "'");
-      if (numNodes > 0)
-        check(ex_put_var(exoid, exoStep, EX_NODAL, static_cast<int>(v) + 1, 1, numNodes, step.nodal[v].data()),
-              "ex_put_var", path);
-    }
-    checkSize(step.element.size(), results.elementNames.size(), path, s, "the list of element fields");
-    for (std::size_t v = 0; v < step.element.size(); ++v) {
-      checkSize(step.element[v].size(), numElements, path, s, "element field '" + results.elementNames[v] + "'");
-      int64_t first = 0;
-      for (const auto& block : mesh.blocks) {
-        const int64_t ne = block.numElements();
-        if (ne > 0)
-          check(ex_put_var(exoid, exoStep, EX_ELEM_BLOCK, static_cast<int>(v) + 1, block.id, ne,
-                           step.element[v].data() + first),
-                "ex_put_var", path);
-        first += ne;
-      }
-    }
-    checkSize(step.global.size(), results.globalNames.size(), path, s, "the list of global values");
-    if (!step.global.empty())
-      check(ex_put_glob_vars(exoid, exoStep, static_cast<int>(step.global.size()), step.global.data()),
-            "ex_put_glob_vars", path);
-  }
+  for (std::size_t s = 0; s < results.steps.size(); ++s) writeResultStep(exoid, mesh, results, s, path);
   file.close();
   out.commit();
 }

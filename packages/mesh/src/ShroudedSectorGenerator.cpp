@@ -77,108 +77,117 @@ double angleOf(double x, double y) { return std::atan2(y, x); }
 
 }  // namespace
 
-Mesh generateShroudedSector(const ShroudedSectorParameters& p) {
-  p.validate("shrouded sector");
-  const double alpha = 2 * M_PI / p.sectors;
+namespace {
+
+// Disc and shroud (differences of cylinder sectors spanning [0, alpha], turned to
+// [-alpha/2, alpha/2]) fused with the staggered blade plate; returns the volume's tag.
+int buildSectorGeometry(const ShroudedSectorParameters& p) {
+  const double alpha = 2 * M_PI / p.sectors, rTip = p.tipRadius();
+  namespace occ = gmsh::model::occ;
+  gmsh::model::add("shrouded_sector");
+  const int discOuter = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.rimRadius, -1, alpha);
+  const int discInner = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.boreRadius, -1, alpha);
+  gmsh::vectorpair disc;
+  std::vector<gmsh::vectorpair> map;
+  occ::cut({{3, discOuter}}, {{3, discInner}}, disc, map);
+  const double rOut = rTip + p.shroudThickness;
+  const int shroudOuter = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rOut, -1, alpha);
+  const int shroudInner = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rTip, -1, alpha);
+  gmsh::vectorpair shroud;
+  occ::cut({{3, shroudOuter}}, {{3, shroudInner}}, shroud, map);
+  gmsh::vectorpair rings = disc;
+  rings.insert(rings.end(), shroud.begin(), shroud.end());
+  occ::rotate(rings, 0, 0, 0, 0, 0, 1, -alpha / 2);
+  // Blade: a plate along +x reaching into disc and shroud so the fuse bonds them, staggered about x.
+  const double overlapIn = std::min(2.0 * p.bladeThickness, 0.25 * (p.rimRadius - p.boreRadius));
+  const double overlapOut = 0.5 * p.shroudThickness;
+  const int blade = occ::addBox(p.rimRadius - overlapIn, -p.bladeThickness / 2, -p.bladeChord / 2,
+                                p.bladeHeight + overlapIn + overlapOut, p.bladeThickness, p.bladeChord);
+  occ::rotate({{3, blade}}, 0, 0, 0, 1, 0, 0, p.bladeStaggerDeg * M_PI / 180);
+  gmsh::vectorpair fused;
+  std::vector<gmsh::vectorpair> fusedMap;
+  occ::fuse(disc, {{3, blade}, shroud[0]}, fused, fusedMap);
+  occ::synchronize();
+  if (fused.size() != 1)
+    throw Error("shrouded sector: disc, blade and shroud did not fuse into one volume (" +
+                std::to_string(fused.size()) + " volumes)");
+  gmsh::model::addPhysicalGroup(3, {fused[0].second}, 1);
+  gmsh::model::setPhysicalName(3, 1, "sector");
+
+  return fused[0].second;
+}
+
+// The side faces at -alpha/2 (left) and +alpha/2 (right), disc and shroud, meshed
+// periodically: right = R(alpha) left.
+void makeSideFacesPeriodic(double alpha) {
+  namespace occ = gmsh::model::occ;
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  struct Face { int tag; double r, z; };
+  std::vector<Face> left, right;
+  for (const auto& [dim, tag] : surfaces) {
+    double x, y, z;
+    occ::getCenterOfMass(dim, tag, x, y, z);
+    const double a = angleOf(x, y), r = std::hypot(x, y);
+    if (std::abs(a + alpha / 2) < 1e-9) left.push_back({tag, r, z});
+    if (std::abs(a - alpha / 2) < 1e-9) right.push_back({tag, r, z});
+  }
+  if (left.size() != 2 || right.size() != 2)
+    throw Error("shrouded sector: expected 2 side faces per side (disc, shroud), found " +
+                std::to_string(left.size()) + " left and " + std::to_string(right.size()) + " right");
+  auto byRadius = [](const Face& a, const Face& b) { return a.r < b.r; };
+  std::sort(left.begin(), left.end(), byRadius);
+  std::sort(right.begin(), right.end(), byRadius);
+  // Right = R(alpha) left: gmsh's affine transform maps the master (left) onto the slave (right).
+  const double c = std::cos(alpha), s = std::sin(alpha);
+  const std::vector<double> T = {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  gmsh::model::mesh::setPeriodic(2, {right[0].tag, right[1].tag}, {left[0].tag, left[1].tag}, T);
+}
+
+// The mesh size refused (InputError) where a lower bound on the sector's unknowns would
+// not fit in memory, warned about where the direct solvers' factors grow large.
+void checkMeshSize(const ShroudedSectorParameters& p, int volumeTag) {
+  // The sector needs at least V / (h^3 / (6 sqrt 2)) tetrahedra at size h (regular ones
+  // fill it), each tet10 bringing at least 1.35 nodes (1.68 measured at h = 2), a tet4
+  // 0.16: a lower bound on the unknowns, so nothing that would fit is refused. Above
+  // it gmsh would spend minutes and gigabytes before the solver ran out of memory.
+  double volume = 0;
+  gmsh::model::occ::getMass(3, volumeTag, volume);
+  const double tets = volume / (std::pow(p.meshSize, 3) / (6 * std::sqrt(2.0)));
+  const double unknowns = 3 * tets * (p.elementOrder == 2 ? 1.35 : 0.16);
+  if (unknowns > kMaxSectorUnknowns) {
+    std::ostringstream why;
+    why << "parameter 'mesh_size' " << p.meshSize << " would make at least " << tets << " elements and "
+        << unknowns << " unknowns in the sector (volume " << volume << "): more than " << kMaxSectorUnknowns
+        << ", whose stiffness matrix alone would fill this machine's memory; use a larger mesh_size";
+    throw InputError("shrouded_sector/mesh_size", why.str());
+  }
+  if (unknowns > kLargeSectorUnknowns) {
+    std::ostringstream cost;
+    cost << "mesh_size " << p.meshSize << ": at least " << unknowns << " unknowns in the sector; the direct "
+         << "solvers' factors grow faster than the model (CHOLMOD took 10 GB at 5e5, docs/solvers.md): "
+         << "check the peak memory lines, or use modal: eigen_solver: lobpcg";
+    log::warn(cost.str());
+  }
+}
+
+void setMeshOptions(const ShroudedSectorParameters& p) {
   const double rTip = p.tipRadius();
-  Timer timer;
-  GmshSession session;
-  Mesh mesh;
-  gmshCall("building the sector geometry", [&] {
-    namespace occ = gmsh::model::occ;
-    gmsh::model::add("shrouded_sector");
-    // Disc and shroud: differences of cylinder sectors spanning [0, alpha], turned to [-alpha/2, alpha/2].
-    const int discOuter = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.rimRadius, -1, alpha);
-    const int discInner = occ::addCylinder(0, 0, -p.discThickness / 2, 0, 0, p.discThickness, p.boreRadius, -1, alpha);
-    gmsh::vectorpair disc;
-    std::vector<gmsh::vectorpair> map;
-    occ::cut({{3, discOuter}}, {{3, discInner}}, disc, map);
-    const double rOut = rTip + p.shroudThickness;
-    const int shroudOuter = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rOut, -1, alpha);
-    const int shroudInner = occ::addCylinder(0, 0, -p.shroudWidth / 2, 0, 0, p.shroudWidth, rTip, -1, alpha);
-    gmsh::vectorpair shroud;
-    occ::cut({{3, shroudOuter}}, {{3, shroudInner}}, shroud, map);
-    gmsh::vectorpair rings = disc;
-    rings.insert(rings.end(), shroud.begin(), shroud.end());
-    occ::rotate(rings, 0, 0, 0, 0, 0, 1, -alpha / 2);
-    // Blade: a plate along +x reaching into disc and shroud so the fuse bonds them, staggered about x.
-    const double overlapIn = std::min(2.0 * p.bladeThickness, 0.25 * (p.rimRadius - p.boreRadius));
-    const double overlapOut = 0.5 * p.shroudThickness;
-    const int blade = occ::addBox(p.rimRadius - overlapIn, -p.bladeThickness / 2, -p.bladeChord / 2,
-                                  p.bladeHeight + overlapIn + overlapOut, p.bladeThickness, p.bladeChord);
-    occ::rotate({{3, blade}}, 0, 0, 0, 1, 0, 0, p.bladeStaggerDeg * M_PI / 180);
-    gmsh::vectorpair fused;
-    std::vector<gmsh::vectorpair> fusedMap;
-    occ::fuse(disc, {{3, blade}, shroud[0]}, fused, fusedMap);
-    occ::synchronize();
-    if (fused.size() != 1)
-      throw Error("shrouded sector: disc, blade and shroud did not fuse into one volume (" +
-                  std::to_string(fused.size()) + " volumes)");
-    gmsh::model::addPhysicalGroup(3, {fused[0].second}, 1);
-    gmsh::model::setPhysicalName(3, 1, "sector");
+  gmsh::option::setNumber("Mesh.CharacteristicLengthMax", p.meshSize);
+  gmsh::option::setNumber("Mesh.CharacteristicLengthMin", 0.0);
+  // A thin blade needs elements no thicker than itself to bend right.
+  gmsh::vectorpair bladePoints;
+  gmsh::model::getEntitiesInBoundingBox(p.rimRadius - 1e-6, -rTip, -p.discThickness, rTip + 1e-6, rTip,
+                                        p.discThickness, bladePoints, 0);
+  gmsh::model::mesh::setSize(bladePoints, std::min(p.meshSize, 2.0 * p.bladeThickness));
+  gmsh::option::setNumber("Mesh.ElementOrder", p.elementOrder);
+  gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay
+}
 
-    // Side faces: planar faces whose centre of mass lies at angle -alpha/2 (left) or +alpha/2 (right).
-    gmsh::vectorpair surfaces;
-    gmsh::model::getEntities(surfaces, 2);
-    struct Face { int tag; double r, z; };
-    std::vector<Face> left, right;
-    for (const auto& [dim, tag] : surfaces) {
-      double x, y, z;
-      occ::getCenterOfMass(dim, tag, x, y, z);
-      const double a = angleOf(x, y), r = std::hypot(x, y);
-      if (std::abs(a + alpha / 2) < 1e-9) left.push_back({tag, r, z});
-      if (std::abs(a - alpha / 2) < 1e-9) right.push_back({tag, r, z});
-    }
-    if (left.size() != 2 || right.size() != 2)
-      throw Error("shrouded sector: expected 2 side faces per side (disc, shroud), found " +
-                  std::to_string(left.size()) + " left and " + std::to_string(right.size()) + " right");
-    auto byRadius = [](const Face& a, const Face& b) { return a.r < b.r; };
-    std::sort(left.begin(), left.end(), byRadius);
-    std::sort(right.begin(), right.end(), byRadius);
-    // Right = R(alpha) left: gmsh's affine transform maps the master (left) onto the slave (right).
-    const double c = std::cos(alpha), s = std::sin(alpha);
-    const std::vector<double> T = {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    gmsh::model::mesh::setPeriodic(2, {right[0].tag, right[1].tag}, {left[0].tag, left[1].tag}, T);
-
-    // The sector needs at least V / (h^3 / (6 sqrt 2)) tetrahedra at size h (regular ones
-    // fill it), each tet10 bringing at least 1.35 nodes (1.68 measured at h = 2), a tet4
-    // 0.16: a lower bound on the unknowns, so nothing that would fit is refused. Above
-    // it gmsh would spend minutes and gigabytes before the solver ran out of memory.
-    double volume = 0;
-    occ::getMass(3, fused[0].second, volume);
-    const double tets = volume / (std::pow(p.meshSize, 3) / (6 * std::sqrt(2.0)));
-    const double unknowns = 3 * tets * (p.elementOrder == 2 ? 1.35 : 0.16);
-    if (unknowns > kMaxSectorUnknowns) {
-      std::ostringstream why;
-      why << "parameter 'mesh_size' " << p.meshSize << " would make at least " << tets << " elements and "
-          << unknowns << " unknowns in the sector (volume " << volume << "): more than " << kMaxSectorUnknowns
-          << ", whose stiffness matrix alone would fill this machine's memory; use a larger mesh_size";
-      throw InputError("shrouded_sector/mesh_size", why.str());
-    }
-    if (unknowns > kLargeSectorUnknowns) {
-      std::ostringstream cost;
-      cost << "mesh_size " << p.meshSize << ": at least " << unknowns << " unknowns in the sector; the direct "
-           << "solvers' factors grow faster than the model (CHOLMOD took 10 GB at 5e5, docs/solvers.md): "
-           << "check the peak memory lines, or use modal: eigen_solver: lobpcg";
-      log::warn(cost.str());
-    }
-    gmsh::option::setNumber("Mesh.CharacteristicLengthMax", p.meshSize);
-    gmsh::option::setNumber("Mesh.CharacteristicLengthMin", 0.0);
-    // A thin blade needs elements no thicker than itself to bend right.
-    gmsh::vectorpair bladePoints;
-    gmsh::model::getEntitiesInBoundingBox(p.rimRadius - 1e-6, -rTip, -p.discThickness, rTip + 1e-6, rTip,
-                                          p.discThickness, bladePoints, 0);
-    gmsh::model::mesh::setSize(bladePoints, std::min(p.meshSize, 2.0 * p.bladeThickness));
-    gmsh::option::setNumber("Mesh.ElementOrder", p.elementOrder);
-    gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay
-    std::ostringstream msg;
-    msg << "meshing the shrouded sector (" << p.sectors << " sectors, mesh size " << p.meshSize << ")";
-    log::info(msg.str());
-    gmsh::model::mesh::generate(3);
-    mesh = meshFromGmshModel("built-in shrouded sector");
-  });
-
-  // Named node sets from the geometry (tolerance relative to the model size).
+// Named node sets from the geometry (tolerance relative to the model size): bore, side
+// faces of disc and shroud, the mid-blade node, the shroud's contact pairs.
+void addNodeSets(Mesh& mesh, const ShroudedSectorParameters& p) {
+  const double alpha = 2 * M_PI / p.sectors, rTip = p.tipRadius();
   const double tol = 1e-7 * rTip;
   std::vector<Index> bore, discL, discR, shroudL, shroudR;
   const double cl = std::cos(-alpha / 2), sl = std::sin(-alpha / 2), cr = std::cos(alpha / 2), sr = std::sin(alpha / 2);
@@ -209,12 +218,33 @@ Mesh generateShroudedSector(const ShroudedSectorParameters& p) {
   const auto contact = pairRotatedNodes(mesh, shroudL, shroudR, alpha, axis, 1e-6 * rTip, "shroud side faces");
   mesh.nodeSets["shroud_contact_left"] = contact.left;
   mesh.nodeSets["shroud_contact_right"] = contact.right;
+}
+
+}  // namespace
+
+Mesh generateShroudedSector(const ShroudedSectorParameters& p) {
+  p.validate("shrouded sector");
+  Timer timer;
+  GmshSession session;
+  Mesh mesh;
+  gmshCall("building the sector geometry", [&] {
+    const int volume = buildSectorGeometry(p);
+    makeSideFacesPeriodic(2 * M_PI / p.sectors);
+    checkMeshSize(p, volume);
+    setMeshOptions(p);
+    std::ostringstream msg;
+    msg << "meshing the shrouded sector (" << p.sectors << " sectors, mesh size " << p.meshSize << ")";
+    log::info(msg.str());
+    gmsh::model::mesh::generate(3);
+    mesh = meshFromGmshModel("built-in shrouded sector");
+  });
+  addNodeSets(mesh, p);
   checkConsistency(mesh);
   checkElementGeometry(mesh);
   std::ostringstream msg;
   msg << "shrouded sector: " << mesh.numNodes() << " nodes, " << mesh.numElements() << " "
-      << exodusName(mesh.blocks[0].type) << " elements, " << discL.size() << "+" << shroudL.size()
-      << " nodes per side face, " << timer.seconds() << " s";
+      << exodusName(mesh.blocks[0].type) << " elements, " << mesh.nodeSets.at("disc_left").size() << "+"
+      << mesh.nodeSets.at("shroud_left").size() << " nodes per side face, " << timer.seconds() << " s";
   log::info(msg.str());
   return mesh;
 }

@@ -17,7 +17,7 @@ namespace cyclone::post {
 namespace {
 
 // Shapes of one family (columns): [real; imaginary] parts of its eigenvectors.
-Eigen::MatrixXd familyShapes(const cyclic::HarmonicModes& hm, int family) {
+Eigen::MatrixXd familyShapes(const cyclic::NodalDiameterModes& hm, int family) {
   const std::size_t nn = hm.shapeReal.empty() ? 0 : hm.shapeReal[0].size();
   Eigen::MatrixXd S(6 * nn, hm.copies);
   for (int c = 0; c < hm.copies; ++c) {
@@ -44,7 +44,7 @@ void writeAtomically(const std::string& path, Write&& write) {
 
 }  // namespace
 
-Eigen::MatrixXd familyMac(const cyclic::HarmonicModes& a, const cyclic::HarmonicModes& b) {
+Eigen::MatrixXd familyMac(const cyclic::NodalDiameterModes& a, const cyclic::NodalDiameterModes& b) {
   const int fa = int(a.frequenciesHz.size()) / a.copies, fb = int(b.frequenciesHz.size()) / b.copies;
   Eigen::MatrixXd mac(fa, fb);
   for (int i = 0; i < fa; ++i)
@@ -55,23 +55,23 @@ Eigen::MatrixXd familyMac(const cyclic::HarmonicModes& a, const cyclic::Harmonic
 std::vector<Branch> trackFamilies(const std::vector<cyclic::SpeedModes>& speeds) {
   std::vector<Branch> branches;
   if (speeds.empty()) return branches;
-  const auto& first = speeds.front().harmonics;
+  const auto& first = speeds.front().nodalDiameters;
   for (std::size_t h = 0; h < first.size(); ++h) {
     const auto& hm0 = first[h];
     const int families = int(hm0.frequenciesHz.size()) / hm0.copies;
     std::vector<Branch> nd(families);
     std::vector<int> current(families);  // family index at the previous speed for each branch
     for (int f = 0; f < families; ++f) {
-      nd[f].nd = hm0.harmonic;
+      nd[f].nd = hm0.nodalDiameter;
       nd[f].family = f + 1;
       nd[f].rpm.push_back(speeds.front().rpm);
       nd[f].freqHz.push_back(hm0.frequenciesHz[f * hm0.copies]);
       current[f] = f;
     }
     for (std::size_t s = 1; s < speeds.size(); ++s) {
-      const auto& prev = speeds[s - 1].harmonics.at(h);
-      const auto& next = speeds[s].harmonics.at(h);
-      if (next.harmonic != hm0.harmonic || next.frequenciesHz.size() != hm0.frequenciesHz.size())
+      const auto& prev = speeds[s - 1].nodalDiameters.at(h);
+      const auto& next = speeds[s].nodalDiameters.at(h);
+      if (next.nodalDiameter != hm0.nodalDiameter || next.frequenciesHz.size() != hm0.frequenciesHz.size())
         throw Error("Campbell tracking: speeds have different nodal diameters or mode counts");
       // Subspace MAC between every previous and next family; greedy best-first matching.
       Eigen::MatrixXd mac(families, families);

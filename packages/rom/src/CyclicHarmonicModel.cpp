@@ -18,7 +18,7 @@
 namespace cyclone::rom {
 
 struct CyclicHarmonicModel::Impl {
-  cyclic::HarmonicOperators op;
+  cyclic::NodalDiameterOperators op;
   RetainedDofSet dofs;
   double eta = 0;
   // Complex solves on the forward travelling wave (half the size) when the real form pairs.
@@ -52,8 +52,8 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
   if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
   I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections);
   Timer timer;
-  I.op = cyclic::assembleHarmonicOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
-                                           problem.prestress, comm);
+  I.op = cyclic::assembleNodalDiameterOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
+                                           problem.prestress.get(), comm);
   I.eta = problem.lossFactor;
   if (cyclic::travellingWavePaired(I.op.assembler->transform()))
     I.structure = solvers::ComplexDirectSolver::Structure::TravellingWavePairs;
@@ -101,14 +101,14 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
 
 CyclicHarmonicModel::~CyclicHarmonicModel() = default;
 
-int CyclicHarmonicModel::harmonic() const { return impl_->op.harmonic; }
+int CyclicHarmonicModel::harmonic() const { return impl_->op.nodalDiameter; }
 int CyclicHarmonicModel::copies() const { return impl_->op.copies; }
 long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
 double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
 const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->dofs.nodes; }
 const RetainedDofSet& CyclicHarmonicModel::retainedDofs() const { return impl_->dofs; }
 Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
-const cyclic::HarmonicOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
+const cyclic::NodalDiameterOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
 const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *impl_->G; }
 
 Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
@@ -199,7 +199,7 @@ RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
   const auto& I = *impl_;
   if (distinct < 1) throw InputError("modes", "must be at least 1");
   Timer timer;
-  const auto result = cyclic::solveHarmonicModes(I.op, distinct, shift);
+  const auto result = cyclic::solveNodalDiameterModes(I.op, distinct, shift);
   RetainedModes out;
   out.copies = I.op.copies;
   out.eigenvalues = result.eigenvalues;

@@ -20,7 +20,7 @@ struct StaticProblem {
   fe::IsotropicElastic material;
   std::vector<std::string> fixedNodeSets;
   double speedRpm = 0;  ///< centrifugal load (undeformed geometry, no spin softening: linear)
-  fe::Axis axis;
+  mesh::RotationAxis axis;
   Eigen::Vector3d bodyForce = Eigen::Vector3d::Zero();  ///< force per volume
   std::vector<NodalForce> nodalForces;
   solvers::LinearSolveOptions solver;

@@ -1,6 +1,5 @@
 #pragma once
-// Modes of a cyclic sector for each requested harmonic index (nodal
-// diameter). Shift-invert: the sector's element matrices once per speed
+// Modes of a cyclic sector for each requested nodal diameter. Shift-invert: the sector's element matrices once per speed
 // (SectorMatrices), each nodal diameter projected by its cyclic transform
 // (HarmonicForm, complex Hermitian for travelling-wave pairs), factored by CHOLMOD
 // and solved by Anasazi's block Krylov-Schur; on several MPI ranks the nodal
@@ -26,14 +25,14 @@ namespace cyclone::cyclic {
 struct CyclicModalProblem {
   fe::IsotropicElastic material;
   std::vector<std::string> fixedNodeSets;
-  std::vector<int> harmonics;     ///< empty: all of 0..N/2
-  int modesPerHarmonic = 6;       ///< distinct frequencies per k (a pair counts once)
+  std::vector<int> nodalDiameters;  ///< empty: all of 0..N/2
+  int modesPerNodalDiameter = 6;       ///< distinct frequencies per k (a pair counts once)
   double shift = 0.0;             ///< (rad/s)^2, below the lowest eigenvalue (shift-invert only)
   /// Shift-invert (CHOLMOD) or LOBPCG with MueLu preconditioned by the per-copy
   /// rigid-body near null space (constrained models only).
   solvers::EigenMethod method = solvers::EigenMethod::ShiftInvert;
   /// Prestressed tangent K + K_sigma - K_Omega at this state's speed; null: K alone.
-  const PrestressState* prestress = nullptr;
+  std::shared_ptr<const PrestressState> prestress;
   /// Each nodal diameter's modes are saved here when solved and read back instead of
   /// solved when they are there under the same inputs (mesh, sector, material, fixed
   /// sets, prestress state, modes, shift, method): a killed sweep resumes per nodal
@@ -41,8 +40,8 @@ struct CyclicModalProblem {
   std::shared_ptr<ResultCheckpoints> checkpoints;
 };
 
-struct HarmonicModes {
-  int harmonic = 0;
+struct NodalDiameterModes {
+  int nodalDiameter = 0;
   int copies = 1;
   long long equations = 0;
   double seconds = 0;
@@ -57,34 +56,34 @@ struct HarmonicModes {
   std::vector<std::vector<std::array<double, 3>>> shapeReal, shapeImag;
 };
 
-/// The real-form sector operators at one harmonic index k: the assembler of the
+/// The real-form sector operators at one nodal diameter k: the assembler of the
 /// cyclic transform (its unknowns), the tangent K (K + K_sigma - K_Omega when a
 /// prestress is given) and M. What solveCyclicModes and the reduced models share.
-struct HarmonicOperators {
-  int harmonic = 0;
+struct NodalDiameterOperators {
+  int nodalDiameter = 0;
   int copies = 1;
   std::unique_ptr<fe::Assembler> assembler;
   Teuchos::RCP<linalg::Matrix> K, M;
 };
 
 /// Checks k (InputError) and assembles K_k, M_k on the cyclic transform with `fixedNodeSets` held.
-HarmonicOperators assembleHarmonicOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
+NodalDiameterOperators assembleNodalDiameterOperators(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
                                             const fe::IsotropicElastic& material,
                                             const std::vector<std::string>& fixedNodeSets,
                                             const PrestressState* prestress, linalg::CommPtr comm);
 
 /// The lowest `distinctModes` x copies modes of K_k, M_k (a pair counts once) by
 /// shift-invert at `shift` (ModalOptions::automaticShift() allowed) or LOBPCG + MueLu.
-solvers::ModalResult solveHarmonicModes(const HarmonicOperators& operators, int distinctModes, double shift,
+solvers::ModalResult solveNodalDiameterModes(const NodalDiameterOperators& operators, int distinctModes, double shift,
                                         solvers::EigenMethod method = solvers::EigenMethod::ShiftInvert);
 
-std::vector<HarmonicModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
+std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm);
 
-/// The modes of every harmonic at one speed.
+/// The modes of every nodal diameter at one speed.
 struct SpeedModes {
   double rpm = 0;
-  std::vector<HarmonicModes> harmonics;
+  std::vector<NodalDiameterModes> nodalDiameters;
 };
 
 /// frequencies.csv: rpm,nd,mode,freq_hz (mode from 1 within each nd). Atomic.
@@ -92,6 +91,6 @@ void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>&
 /// Modes in Exodus: one step per mode (time = frequency in Hz), nodal ux,uy,uz (real
 /// part) and u_imag_x,u_imag_y,u_imag_z (ParaView: vectors u and u_imag), globals nd, mode, rpm. Atomic.
 void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rpm,
-                      const std::vector<HarmonicModes>& modes);
+                      const std::vector<NodalDiameterModes>& modes);
 
 }  // namespace cyclone::cyclic

@@ -20,7 +20,7 @@ struct CyclicSector {
 
   double sectorAngle() const;        ///< 2 pi / N
   Eigen::Matrix3d rotation() const;  ///< R(2 pi / N) about the axis
-  int maxHarmonicIndex() const { return sectors / 2; }
+  int maxNodalDiameter() const { return sectors / 2; }
 };
 
 /// Pairs the nodes of the named left and right face sets (each list's sets are
@@ -31,7 +31,7 @@ CyclicSector makeCyclicSector(const mesh::Mesh& mesh, int sectors, const mesh::R
                               const std::vector<std::string>& leftSets, const std::vector<std::string>& rightSets,
                               double tolerance = 0);
 
-/// Checks 0 <= k <= N/2; InputError naming the harmonic index otherwise.
-void checkHarmonicIndex(int sectors, int k);
+/// Checks 0 <= k <= N/2; InputError naming the nodal diameter otherwise.
+void checkNodalDiameter(int sectors, int k);
 
 }  // namespace cyclone::cyclic

@@ -1,5 +1,5 @@
 #pragma once
-// The cyclic constraint at harmonic index k (nodal diameter) in real form.
+// The cyclic constraint at nodal diameter k in real form.
 // With phase phi = k 2pi/N and Q the rotation of the left face onto the right:
 //   right face, real part:      u_R^a = Q (cos phi u_L^a - sin phi u_L^b)
 //   right face, imaginary part: u_R^b = Q (sin phi u_L^a + cos phi u_L^b)

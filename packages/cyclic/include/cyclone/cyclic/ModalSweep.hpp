@@ -15,7 +15,7 @@ struct ModalSweepProblem {
   CyclicModalProblem modes;  ///< its `prestress` is set per speed
   std::vector<double> speedsRpm{0.0};  ///< non-negative, increasing
   PrestressKind prestress = PrestressKind::Linear;  ///< None, or at 0 rpm: the unstressed K
-  fe::Axis axis;  ///< the rotation axis of the centrifugal load
+  mesh::RotationAxis axis;  ///< the rotation axis of the centrifugal load
 };
 
 /// Called after each speed with its prestress (null when none) and modes, e.g. to write

@@ -21,7 +21,7 @@ enum class PrestressKind { None, Linear, Nonlinear };
 struct PrestressState {
   double speedRpm = 0;
   double omega = 0;  ///< rad/s
-  fe::Axis axis;
+  mesh::RotationAxis axis;
   std::vector<std::array<double, 3>> displacement;                   ///< per node
   /// Per element at the stiffness-rule points: the small-strain stress (linear) or the
   /// Cauchy stress (nonlinear); what the output shows and the linear tangent uses.
@@ -41,14 +41,14 @@ struct NonlinearPrestressOptions {
 
 /// Linear centrifugal prestress on the unknowns of `transform` (k = 0 for a sector).
 PrestressState solveLinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
-                                    const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                    const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
                                     linalg::CommPtr comm);
 
 /// Geometrically nonlinear centrifugal prestress. Throws SolverError naming the
 /// highest speed reached when the full speed cannot be (e.g. buckling-like
 /// softening or a step that fails however small).
 PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
-                                       const fe::IsotropicElastic& material, double speedRpm, const fe::Axis& axis,
+                                       const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
                                        linalg::CommPtr comm, const NonlinearPrestressOptions& options = {});
 
 /// Exodus file of a prestress state: nodal ux uy uz von_mises, element s_xx..s_xy and

@@ -51,7 +51,7 @@ public:
   Teuchos::RCP<linalg::Matrix> mass(const IsotropicElastic& material) const;
   /// Centrifugal body load at angular speed omega (rad/s) about the axis, undeformed geometry.
   Teuchos::RCP<linalg::MultiVector> centrifugalLoad(const IsotropicElastic& material, double omega,
-                                                    const Axis& axis) const;
+                                                    const RotationAxis& axis) const;
   /// Uniform body force density b (force per volume), e.g. gravity rho*g.
   Teuchos::RCP<linalg::MultiVector> bodyLoad(const Eigen::Vector3d& b) const;
   /// Force on each listed node (components on constrained DOFs are dropped).

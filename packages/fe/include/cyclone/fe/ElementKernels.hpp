@@ -7,17 +7,14 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/mesh/ElementType.hpp"
+#include "cyclone/mesh/RotatedNodePairing.hpp"
 
 namespace cyclone::fe {
 
 using mesh::ElementType;
 using ElementCoords = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // n x 3
 
-/// Rotation axis: a point on it and a direction (normalised by the kernels).
-struct Axis {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
-};
+using mesh::RotationAxis;
 
 /// Thrown when det J <= 0 at an integration point; the assembler adds the element id.
 /// A det J below 1e-14 h^3 (h the element's bounding-box diagonal) counts as zero: that
@@ -36,7 +33,7 @@ Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho
 /// Consistent centrifugal body load  int N^T rho Omega^2 r_perp dV  (3n), r_perp the
 /// distance vector from the axis at the undeformed position; massRule.
 Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
-                                       const Axis& axis);
+                                       const RotationAxis& axis);
 /// Consistent load of a uniform body force density b (force/volume) (3n).
 Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b);
 /// Element volume.
@@ -54,7 +51,7 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
 ///   K_ab = rho Omega^2 (int N_a N_b dV) (I - a a^T)   (mass rule),
 /// subtracted from the tangent (the load follows the deformed position).
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
-                                     const Axis& axis);
+                                     const RotationAxis& axis);
 /// Geometrically nonlinear element (Total Lagrangian, St Venant-Kirchhoff) at the
 /// element displacement ue, stiffness rule: Green-Lagrange strain E = (F^T F - I)/2,
 /// second Piola-Kirchhoff stress S = D E,

@@ -18,6 +18,9 @@ public:
   bool usesVelocity() const override { return element_->usesVelocity(); }
   void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                      Eigen::MatrixXd* jacobian) const override;
+  /// The scalar law applied to the sampled motion (a Jenkins element's loop with sharp
+  /// stick-slip corners, not its truncated Fourier series).
+  Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const override;
   int stateSize() const override { return 1; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;

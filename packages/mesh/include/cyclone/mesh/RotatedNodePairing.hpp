@@ -2,15 +2,19 @@
 // Pairs the nodes of two faces related by a rotation about an axis (the left
 // and right side faces of a cyclic sector): right[i] sits at R(angle) left[i].
 #include <string>
+
+#include <Eigen/Core>
 #include <vector>
 
 #include "cyclone/mesh/Mesh.hpp"
 
 namespace cyclone::mesh {
 
+/// A rotation axis: a point on it and its direction (normalised where it is used). The
+/// one axis type of the library: cyclic symmetry's and the centrifugal load's.
 struct RotationAxis {
-  Point point{0, 0, 0};
-  Point direction{0, 0, 1};
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
 };
 
 /// Rotates p by `angle` (radians, right-handed) about the axis.

@@ -34,7 +34,7 @@ std::vector<Resonance> findResonances(const std::vector<Branch>& branches, int s
 
 /// Family-subspace MAC between the modes of one nodal diameter at two speeds
 /// (rows: families at `a`, columns: families at `b`); a pair counts as one family.
-Eigen::MatrixXd familyMac(const cyclic::HarmonicModes& a, const cyclic::HarmonicModes& b);
+Eigen::MatrixXd familyMac(const cyclic::NodalDiameterModes& a, const cyclic::NodalDiameterModes& b);
 
 void writeCampbellCsv(const std::string& path, const std::vector<Branch>& branches);
 void writeResonancesCsv(const std::string& path, const std::vector<Resonance>& resonances);

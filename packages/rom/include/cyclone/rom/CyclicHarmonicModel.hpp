@@ -3,7 +3,7 @@
 // retained DOFs (the nodes of some node sets, all 3 directions or chosen ones,
 // in the global frame or a given local one: RetainedDofs.hpp): the
 // real-form K_k (prestressed tangent when given) and M_k assembled as for the
-// modes (cyclic::assembleHarmonicOperators), and from them
+// modes (cyclic::assembleNodalDiameterOperators), and from them
 //   - the full-FE dynamic compliance G^T ((1 + i eta) K - w^2 M)^{-1} G by a
 //     sparse complex LU per frequency: the reference for every reduced model;
 //   - the modes at the retained DOFs (Anasazi shift-invert);
@@ -26,7 +26,7 @@
 #include "cyclone/rom/RetainedDofs.hpp"
 
 namespace cyclone::cyclic {
-struct HarmonicOperators;
+struct NodalDiameterOperators;
 }
 
 namespace cyclone::rom {
@@ -38,7 +38,7 @@ struct HarmonicModelProblem {
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
   std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
   std::vector<LoadPattern> loads;               ///< the excitation part: loads that need not act at retained DOFs
-  const cyclic::PrestressState* prestress = nullptr;  ///< tangent K + K_sigma - K_Omega; null: K
+  std::shared_ptr<const cyclic::PrestressState> prestress;  ///< tangent K + K_sigma - K_Omega; null: K
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
 };
 
@@ -92,7 +92,7 @@ public:
 
   /// The real-form K_k, M_k and their unknowns: what reductions onto the retained
   /// DOFs (Guyan, Craig-Bampton: BoundaryReduction) work on.
-  const cyclic::HarmonicOperators& operators() const;
+  const cyclic::NodalDiameterOperators& operators() const;
   /// G: unit loads at the retained DOFs as right-hand sides on the unknowns, one
   /// column per retained DOF (order as in ComplianceModel).
   const linalg::MultiVector& retainedLoads() const;
