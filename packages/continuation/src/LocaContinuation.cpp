@@ -364,6 +364,46 @@ bool bridgeKink(const ContinuationProblem& problem, const ContinuationOptions& o
 
 }  // namespace
 
+namespace {
+
+// LOCA ends a run at the range's bound by a last step that may overshoot it, and a
+// corrector that jumps branches can land far outside: such points are not solutions in
+// the range asked for.
+void dropPointsOutsideRange(Branch& branch, const ContinuationOptions& o) {
+  const double lo = std::min(o.from, o.to), hi = std::max(o.from, o.to), slack = 1e-9 * (hi - lo);
+  std::size_t kept = 0;
+  for (auto& pt : branch.points)
+    if (pt.parameter >= lo - slack && pt.parameter <= hi + slack) branch.points[kept++] = std::move(pt);
+  if (kept < branch.points.size()) {
+    std::ostringstream why;
+    why << branch.stopReason << "; " << branch.points.size() - kept << " point(s) outside the range dropped";
+    branch.points.resize(kept);
+    branch.stopReason = why.str();
+  }
+}
+
+// A branch that folds back and runs out at the bound it started from (LOCA calls that
+// the end of its range) has not traced the range beyond its turn.
+void markReturnToStart(Branch& branch, const ContinuationOptions& o) {
+  if (branch.finished && branch.points.size() >= 2) {
+    double reached = o.from;
+    for (const auto& pt : branch.points)
+      reached = o.to >= o.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+    const double end = branch.points.back().parameter;
+    if (std::abs(end - o.from) < std::abs(end - o.to)) {
+      branch.finished = false;
+      branch.returnedToStart = true;
+      branch.reached = reached;
+      std::ostringstream why;
+      why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << end
+          << "): " << reached << " .. " << o.to << " not traced (the branch so far is kept)";
+      branch.stopReason = why.str();
+    }
+  }
+}
+
+}  // namespace
+
 Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
                            const ContinuationOptions& o) {
   Branch branch;
@@ -415,36 +455,8 @@ Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::Vect
         << "stepped over by a secant or fixed-parameter step)";
     branch.stopReason = why.str();
   }
-  // LOCA ends a run at the range's bound by a last step that may overshoot it, and a
-  // corrector that jumps branches can land far outside: such points are not solutions
-  // in the range asked for.
-  const double lo = std::min(o.from, o.to), hi = std::max(o.from, o.to), slack = 1e-9 * (hi - lo);
-  std::size_t kept = 0;
-  for (auto& pt : branch.points)
-    if (pt.parameter >= lo - slack && pt.parameter <= hi + slack) branch.points[kept++] = std::move(pt);
-  if (kept < branch.points.size()) {
-    std::ostringstream why;
-    why << branch.stopReason << "; " << branch.points.size() - kept << " point(s) outside the range dropped";
-    branch.points.resize(kept);
-    branch.stopReason = why.str();
-  }
-  // A branch that folds back and runs out at the bound it started from (LOCA calls
-  // that the end of its range) has not traced the range beyond its turn.
-  if (branch.finished && branch.points.size() >= 2) {
-    double reached = o.from;
-    for (const auto& pt : branch.points)
-      reached = o.to >= o.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
-    const double end = branch.points.back().parameter;
-    if (std::abs(end - o.from) < std::abs(end - o.to)) {
-      branch.finished = false;
-      branch.returnedToStart = true;
-      branch.reached = reached;
-      std::ostringstream why;
-      why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << end
-          << "): " << reached << " .. " << o.to << " not traced (the branch so far is kept)";
-      branch.stopReason = why.str();
-    }
-  }
+  dropPointsOutsideRange(branch, o);
+  markReturnToStart(branch, o);
   return branch;
 }
 

@@ -221,6 +221,62 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
 
 }  // namespace
 
+namespace {
+
+// A nodal diameter saved by an earlier run under the same inputs (`key`: where its
+// result is saved when it is solved now).
+std::optional<NodalDiameterModes> readBackModes(const mesh::Mesh& mesh, const CyclicSector& sector,
+                                                const CyclicModalProblem& problem, int k, std::string& key, int rank) {
+  if (!problem.checkpoints) return std::nullopt;
+  key = harmonicModesKey(mesh, sector, problem, k);
+  const auto saved = problem.checkpoints->load(key);
+  if (!saved) return std::nullopt;
+  NodalDiameterModes hm;
+  try {
+    hm = unpack(*saved, mesh.numNodes());
+  } catch (const std::exception&) {  // too short: not this mesh's modes
+    return std::nullopt;
+  }
+  hm.rank = rank;
+  if (hm.nodalDiameter != k) return std::nullopt;
+  log::info("nodal diameter " + std::to_string(k) + ": " + std::to_string(hm.frequenciesHz.size()) +
+            " modes read back from the checkpoint of an earlier run (" + key.substr(0, 8) + ")");
+  return hm;
+}
+
+// Each nodal diameter's result broadcast by its owner (round robin over the ranks) to
+// every rank. A failure on one rank is carried to all of them with its message: the
+// others would otherwise wait in the broadcast for a result that never comes.
+std::vector<NodalDiameterModes> shareOwnersResults(std::vector<NodalDiameterModes>& mine,
+                                                   const std::vector<std::string>& failure,
+                                                   const std::vector<int>& nodalDiameters, const mesh::Mesh& mesh,
+                                                   solvers::EigenMethod method, linalg::CommPtr comm) {
+  const int ranks = comm->getSize(), rank = comm->getRank();
+  std::vector<NodalDiameterModes> out;
+  for (std::size_t i = 0; i < nodalDiameters.size(); ++i) {
+    const int owner = int(i % ranks);
+    std::string message = owner == rank ? failure[i] : std::string();
+    int length = int(message.size());
+    Teuchos::broadcast(*comm, owner, &length);
+    if (length > 0) {
+      message.resize(std::size_t(length));
+      Teuchos::broadcast(*comm, owner, length, message.data());
+      throw SolverError("nodal diameter " + std::to_string(nodalDiameters[i]) + " (rank " + std::to_string(owner) +
+                        "): " + message);
+    }
+    std::vector<double> buffer = owner == rank ? pack(mine[i]) : std::vector<double>();
+    long long size = (long long)buffer.size();
+    Teuchos::broadcast(*comm, owner, &size);
+    buffer.resize(std::size_t(size));
+    Teuchos::broadcast(*comm, owner, int(size), buffer.data());
+    out.push_back(owner == rank ? std::move(mine[i]) : unpack(buffer, mesh.numNodes()));
+    if (owner != 0) log::info(describe(out.back(), method));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
@@ -231,42 +287,24 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   if (problem.modesPerNodalDiameter < 1) throw InputError("modes_per_nd", "must be at least 1");
 
   std::vector<NodalDiameterModes> out;
-  // A nodal diameter saved by an earlier run under the same inputs.
-  auto readBack = [&](int k, std::string& key) -> std::optional<NodalDiameterModes> {
-    if (!problem.checkpoints) return std::nullopt;
-    key = harmonicModesKey(mesh, sector, problem, k);
-    const auto saved = problem.checkpoints->load(key);
-    if (!saved) return std::nullopt;
-    NodalDiameterModes hm;
-    try {
-      hm = unpack(*saved, mesh.numNodes());
-    } catch (const std::exception&) {  // too short: not this mesh's modes
-      return std::nullopt;
-    }
-    hm.rank = comm->getRank();
-    if (hm.nodalDiameter != k) return std::nullopt;
-    log::info("nodal diameter " + std::to_string(k) + ": " + std::to_string(hm.frequenciesHz.size()) +
-              " modes read back from the checkpoint of an earlier run (" + key.substr(0, 8) + ")");
-    return hm;
-  };
+  const int ranks = comm->getSize(), rank = comm->getRank();
   if (problem.method == solvers::EigenMethod::Lobpcg) {
     // Distributed operators and preconditioner: every rank works on every nodal diameter.
     for (int k : harmonics) {
       std::string key;
-      if (auto hm = readBack(k, key)) {
+      if (auto hm = readBackModes(mesh, sector, problem, k, key, rank)) {
         out.push_back(std::move(*hm));
         continue;
       }
       out.push_back(solveAssembled(mesh, sector, k, problem, comm));
       log::info(describe(out.back(), problem.method));
-      if (problem.checkpoints && comm->getRank() == 0) problem.checkpoints->save(key, pack(out.back()));
+      if (problem.checkpoints && rank == 0) problem.checkpoints->save(key, pack(out.back()));
     }
     return out;
   }
   // Shift-invert: the element matrices once per speed on every rank, then the nodal
   // diameters spread over the ranks (round robin), each solved on one process and
   // broadcast by its owner; the same answer on any number of ranks.
-  const int ranks = comm->getSize(), rank = comm->getRank();
   const auto matrices = assembleSectorMatrices(mesh, problem.material, problem.prestress.get());
   {
     std::ostringstream msg;
@@ -278,7 +316,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   FactorCache factors;
   auto solveOne = [&](std::size_t i) {
     std::string key;
-    if (auto saved = readBack(harmonics[i], key)) return std::move(*saved);
+    if (auto saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank)) return std::move(*saved);
     auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
     NodalDiameterModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
@@ -290,8 +328,6 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     for (std::size_t i = 0; i < harmonics.size(); ++i) out.push_back(solveOne(i));
     return out;
   }
-  // A failure on one rank is carried to all of them with its message: the others
-  // would otherwise wait in the broadcast for a result that never comes.
   std::vector<NodalDiameterModes> mine(harmonics.size());
   std::vector<std::string> failure(harmonics.size());
   for (std::size_t i = 0; i < harmonics.size(); ++i) {
@@ -302,26 +338,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
       failure[i] = e.what();
     }
   }
-  for (std::size_t i = 0; i < harmonics.size(); ++i) {
-    const int owner = int(i % ranks);
-    std::string message = owner == rank ? failure[i] : std::string();
-    int length = int(message.size());
-    Teuchos::broadcast(*comm, owner, &length);
-    if (length > 0) {
-      message.resize(std::size_t(length));
-      Teuchos::broadcast(*comm, owner, length, message.data());
-      throw SolverError("nodal diameter " + std::to_string(harmonics[i]) + " (rank " + std::to_string(owner) +
-                        "): " + message);
-    }
-    std::vector<double> buffer = owner == rank ? pack(mine[i]) : std::vector<double>();
-    long long size = (long long)buffer.size();
-    Teuchos::broadcast(*comm, owner, &size);
-    buffer.resize(std::size_t(size));
-    Teuchos::broadcast(*comm, owner, int(size), buffer.data());
-    out.push_back(owner == rank ? std::move(mine[i]) : unpack(buffer, mesh.numNodes()));
-    if (owner != 0) log::info(describe(out.back(), problem.method));
-  }
-  return out;
+  return shareOwnersResults(mine, failure, harmonics, mesh, problem.method, comm);
 }
 
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {

@@ -1,6 +1,7 @@
 #include "cyclone/cyclic/CyclicTransform.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 
@@ -66,6 +67,60 @@ bool travellingWavePaired(const fe::DofTransform& T) {
   return true;
 }
 
+namespace {
+
+// The unknowns of a node on the axis: v = [a; b] must satisfy v = (c + i s) Q v in real
+// form, and its fixed components vanish; the unknowns are coordinates in that null space.
+std::vector<Eigen::VectorXd> axisNodeBasis(const Eigen::Matrix3d& Q, double c, double s, int copies,
+                                           const char* fixed) {
+  const int m = 3 * copies;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(2 * m, m);
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  C.block(0, 0, 3, 3) = I - c * Q;
+  if (copies == 2) {
+    C.block(0, 3, 3, 3) = s * Q;
+    C.block(3, 0, 3, 3) = -s * Q;
+    C.block(3, 3, 3, 3) = I - c * Q;
+  }
+  int row = m;
+  for (int d = 0; d < 3; ++d)
+    if (fixed[d])
+      for (int copy = 0; copy < copies; ++copy) C(row++, 3 * copy + d) = 1.0;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
+  const auto& sv = svd.singularValues();
+  std::vector<Eigen::VectorXd> basis;
+  for (int j = 0; j < m; ++j)
+    if (!(j < sv.size() && sv(j) > 1e-10)) basis.push_back(svd.matrixV().col(j));
+  return copies == 2 ? travellingWavePairedBasis(basis) : basis;
+}
+
+// A right-face component of copy `copy` (direction d): the rotated, phase-shifted
+// combination of its left-face partner's terms (`left`: per copy, per direction),
+// repeated unknowns merged and exact zeros dropped.
+std::vector<Term> rightFaceTerms(const Eigen::Matrix3d& Q, double c, double s, int copies, int copy, int d,
+                                 const std::function<const std::vector<Term>&(int, int)>& left) {
+  std::vector<Term> out;
+  for (int e = 0; e < 3; ++e) {
+    if (Q(d, e) == 0.0) continue;
+    // copy a: c * a_L - s * b_L ; copy b: s * a_L + c * b_L
+    const double fromA = copy == 0 ? c : s, fromB = copy == 0 ? -s : c;
+    for (const auto& t : left(e, 0)) out.push_back({t.equation, Q(d, e) * fromA * t.coefficient});
+    if (copies == 2)
+      for (const auto& t : left(e, 1)) out.push_back({t.equation, Q(d, e) * fromB * t.coefficient});
+  }
+  std::vector<Term> merged;
+  for (const auto& t : out) {
+    auto it = std::find_if(merged.begin(), merged.end(), [&](const Term& m) { return m.equation == t.equation; });
+    if (it == merged.end()) merged.push_back(t);
+    else it->coefficient += t.coefficient;
+  }
+  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Term& t) { return t.coefficient == 0.0; }),
+               merged.end());
+  return merged;
+}
+
+}  // namespace
+
 fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int k, const std::vector<char>& fixed,
                                  const Eigen::Matrix3d& Q) {
   checkNodalDiameter(sector.sectors, k);
@@ -94,28 +149,7 @@ fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int
           for (int copy = 0; copy < copies; ++copy) at(n, d, copy) = {{next++, 1.0}};
       continue;
     }
-    // On the axis: v = [a; b] must satisfy v = (c + i s) Q v in real form, and its
-    // fixed components vanish; the unknowns are coordinates in that null space.
-    const int m = 3 * copies;
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(2 * m, m);
-    const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-    C.block(0, 0, 3, 3) = I - c * Q;
-    if (copies == 2) {
-      C.block(0, 3, 3, 3) = s * Q;
-      C.block(3, 0, 3, 3) = -s * Q;
-      C.block(3, 3, 3, 3) = I - c * Q;
-    }
-    int row = m;
-    for (int d = 0; d < 3; ++d)
-      if (fixed[3 * n + d])
-        for (int copy = 0; copy < copies; ++copy) C(row++, 3 * copy + d) = 1.0;
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
-    const auto& sv = svd.singularValues();
-    std::vector<Eigen::VectorXd> basis;
-    for (int j = 0; j < m; ++j)
-      if (!(j < sv.size() && sv(j) > 1e-10)) basis.push_back(svd.matrixV().col(j));
-    if (copies == 2) basis = travellingWavePairedBasis(basis);
-    for (const auto& v : basis) {
+    for (const auto& v : axisNodeBasis(Q, c, s, copies, &fixed[3 * n])) {
       const long long eq = next++;
       for (int copy = 0; copy < copies; ++copy)
         for (int d = 0; d < 3; ++d)
@@ -126,26 +160,10 @@ fe::DofTransform cyclicTransform(Index numNodes, const CyclicSector& sector, int
   for (Index n = 0; n < numNodes; ++n) {
     const Index L = masterOf[n];
     if (L < 0) continue;
+    const auto left = [&](int e, int copy) -> const std::vector<Term>& { return at(L, e, copy); };
     for (int copy = 0; copy < copies; ++copy)
       for (int d = 0; d < 3; ++d) {
-        std::vector<Term> out;
-        for (int e = 0; e < 3; ++e) {
-          if (Q(d, e) == 0.0) continue;
-          // copy a: c * a_L - s * b_L ; copy b: s * a_L + c * b_L
-          const double fromA = copy == 0 ? c : s, fromB = copy == 0 ? -s : c;
-          for (const auto& t : at(L, e, 0)) out.push_back({t.equation, Q(d, e) * fromA * t.coefficient});
-          if (copies == 2)
-            for (const auto& t : at(L, e, 1)) out.push_back({t.equation, Q(d, e) * fromB * t.coefficient});
-        }
-        // Merge repeated unknowns and drop exact zeros.
-        std::vector<Term> merged;
-        for (const auto& t : out) {
-          auto it = std::find_if(merged.begin(), merged.end(), [&](const Term& m) { return m.equation == t.equation; });
-          if (it == merged.end()) merged.push_back(t);
-          else it->coefficient += t.coefficient;
-        }
-        merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Term& t) { return t.coefficient == 0.0; }),
-                     merged.end());
+        auto merged = rightFaceTerms(Q, c, s, copies, copy, d, left);
         // A fixed component of a right-face node must follow from its partner's fixity.
         if (fixed[3 * n + d] && !merged.empty())
           throw InputError("cyclic constraint",

@@ -80,11 +80,11 @@ std::vector<std::pair<int, std::string>> volumesToConvert(const std::string& sou
 
 }  // namespace
 
-Mesh meshFromGmshModel(const std::string& source) {
-  Mesh mesh;
-  mesh.source = source;
+namespace {
 
-  // 3D elements, grouped by (physical group, type) in the order they are met.
+// The 3D elements, grouped by (physical group, type) in the order they are met, their
+// nodes in Exodus order (gmsh tags).
+std::vector<PendingBlock> readVolumeElements(const std::string& source) {
   std::vector<PendingBlock> pending;
   for (const auto& [volume, group] : volumesToConvert(source)) {
     std::vector<int> types;
@@ -112,10 +112,12 @@ Mesh meshFromGmshModel(const std::string& source) {
       }
     }
   }
-  if (pending.empty())
-    throw InputError(source, "the gmsh model has no 3D elements (tetrahedra or hexahedra) to analyse");
+  return pending;
+}
 
-  // Keep the nodes the 3D elements use, in increasing tag order.
+// The nodes the 3D elements use, in increasing tag order, into `mesh`; their indices by tag.
+std::unordered_map<Tag, Index> readUsedNodes(const std::vector<PendingBlock>& pending, const std::string& source,
+                                             Mesh& mesh) {
   std::vector<Tag> used;
   for (const auto& block : pending) used.insert(used.end(), block.nodeTags.begin(), block.nodeTags.end());
   std::sort(used.begin(), used.end());
@@ -144,20 +146,11 @@ Mesh meshFromGmshModel(const std::string& source) {
     }
   }
 
-  int id = 1;
-  for (auto& p : pending) {
-    const bool mixed = std::count_if(pending.begin(), pending.end(),
-                                     [&](const PendingBlock& b) { return b.group == p.group; }) > 1;
-    ElementBlock block;
-    block.id = id++;
-    block.type = p.type;
-    block.name = p.group.empty() ? exodusName(p.type) : mixed ? p.group + "_" + exodusName(p.type) : p.group;
-    block.connectivity.reserve(p.nodeTags.size());
-    for (Tag tag : p.nodeTags) block.connectivity.push_back(indexOf.at(tag));
-    block.elementIds = std::move(p.elementIds);
-    mesh.blocks.push_back(std::move(block));
-  }
+  return indexOf;
+}
 
+// Node sets from lower-dimensional physical groups (the nodes on the 3D mesh).
+void readNodeSets(const std::unordered_map<Tag, Index>& indexOf, const std::string& source, Mesh& mesh) {
   // Node sets from lower-dimensional physical groups.
   for (int dim = 0; dim <= 2; ++dim) {
     gmsh::vectorpair groups;
@@ -184,6 +177,32 @@ Mesh meshFromGmshModel(const std::string& source) {
       set.erase(std::unique(set.begin(), set.end()), set.end());
     }
   }
+}
+
+}  // namespace
+
+Mesh meshFromGmshModel(const std::string& source) {
+  Mesh mesh;
+  mesh.source = source;
+  auto pending = readVolumeElements(source);
+  if (pending.empty())
+    throw InputError(source, "the gmsh model has no 3D elements (tetrahedra or hexahedra) to analyse");
+  const auto indexOf = readUsedNodes(pending, source, mesh);
+  int id = 1;
+  for (auto& p : pending) {
+    const bool mixed = std::count_if(pending.begin(), pending.end(),
+                                     [&](const PendingBlock& b) { return b.group == p.group; }) > 1;
+    ElementBlock block;
+    block.id = id++;
+    block.type = p.type;
+    block.name = p.group.empty() ? exodusName(p.type) : mixed ? p.group + "_" + exodusName(p.type) : p.group;
+    block.connectivity.reserve(p.nodeTags.size());
+    for (Tag tag : p.nodeTags) block.connectivity.push_back(indexOf.at(tag));
+    block.elementIds = std::move(p.elementIds);
+    mesh.blocks.push_back(std::move(block));
+  }
+
+  readNodeSets(indexOf, source, mesh);
   return mesh;
 }
 

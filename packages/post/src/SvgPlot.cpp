@@ -70,8 +70,8 @@ std::string SvgPlot::palette(int i) {
   return colors[((i % 10) + 10) % 10];
 }
 
-std::string SvgPlot::render() const {
-  double x0 = x0_, x1 = x1_, y0 = y0_, y1 = y1_;
+void SvgPlot::ranges(double& x0, double& x1, double& y0, double& y1) const {
+  x0 = x0_, x1 = x1_, y0 = y0_, y1 = y1_;
   if (!xFixed_ || !yFixed_) {
     double ax = std::numeric_limits<double>::max(), bx = -ax, ay = ax, by = -ax;
     for (const auto& s : series_)
@@ -89,6 +89,27 @@ std::string SvgPlot::render() const {
       y1 = span > 0 ? std::max(by, 0.0) + 0.05 * span : y0 + 1;
     }
   }
+}
+
+void SvgPlot::legend(std::ostream& o, double pw, double ph) const {
+  double ly = kTop + 10;
+  for (const auto& s : series_) {
+    if (s.label.empty()) continue;
+    const double lx = kLeft + pw + 15;
+    if (s.markers)
+      o << "<circle cx=\"" << lx + 10 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"" << s.color << "\"/>\n";
+    else
+      o << "<line x1=\"" << lx << "\" y1=\"" << ly << "\" x2=\"" << lx + 20 << "\" y2=\"" << ly << "\" stroke=\""
+        << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6,4\"" : "") << "/>\n";
+    o << "<text x=\"" << lx + 26 << "\" y=\"" << ly + 4 << "\">" << escape(s.label) << "</text>\n";
+    ly += 18;
+    if (ly > kTop + ph) break;
+  }
+}
+
+std::string SvgPlot::render() const {
+  double x0, x1, y0, y1;
+  ranges(x0, x1, y0, y1);
   const double pw = kWidth - kLeft - kRight, ph = kHeight - kTop - kBottom;
   auto X = [&](double x) { return kLeft + (x - x0) / (x1 - x0) * pw; };
   auto Y = [&](double y) { return kTop + ph - (y - y0) / (y1 - y0) * ph; };
@@ -134,20 +155,7 @@ std::string SvgPlot::render() const {
     o << "<text x=\"" << X(t.x) + 4 << "\" y=\"" << Y(t.y) - 4 << "\" fill=\"" << t.color << "\" font-size=\"10\">"
       << escape(t.text) << "</text>\n";
   o << "</g>\n";
-  // Legend.
-  double ly = kTop + 10;
-  for (const auto& s : series_) {
-    if (s.label.empty()) continue;
-    const double lx = kLeft + pw + 15;
-    if (s.markers)
-      o << "<circle cx=\"" << lx + 10 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"" << s.color << "\"/>\n";
-    else
-      o << "<line x1=\"" << lx << "\" y1=\"" << ly << "\" x2=\"" << lx + 20 << "\" y2=\"" << ly << "\" stroke=\""
-        << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6,4\"" : "") << "/>\n";
-    o << "<text x=\"" << lx + 26 << "\" y=\"" << ly + 4 << "\">" << escape(s.label) << "</text>\n";
-    ly += 18;
-    if (ly > kTop + ph) break;
-  }
+  legend(o, pw, ph);
   o << "</svg>\n";
   return o.str();
 }

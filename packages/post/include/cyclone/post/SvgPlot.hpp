@@ -2,6 +2,7 @@
 // A small x-y line and marker plot written as SVG: enough for Campbell and
 // SAFE diagrams and convergence plots, readable in any browser, no plotting
 // library or interpreter needed at run time.
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ public:
   static std::string palette(int i);
 
 private:
+  /// The axes' ranges: the fixed ones, else from the data (frames nothing is drawn on).
+  void ranges(double& x0, double& x1, double& y0, double& y1) const;
+  /// The labelled series' legend right of the plot area (pw x ph).
+  void legend(std::ostream& o, double pw, double ph) const;
   struct Series {
     std::vector<double> x, y;
     std::string color, label;
