@@ -417,7 +417,7 @@ void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, c
                       disc::DiscForcedResponse& solved, const std::vector<int>& hysteresisContacts,
                       const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
   auto& setup = solved.setup;
-  const PeakPoint point = referencePeakPoint(setup, solved.curve);
+  const PeakPoint point = disc::referencePeakPoint(setup, solved.curve);
   if (comm->getRank() == 0) {
     const auto states = hbm::elementStates(*point.system, point.x, point.omega);
     const auto energies =
@@ -430,7 +430,7 @@ void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, c
   }
   const auto& ps = plan.peakStress;
   if (ps.atHz > 0)
-    writePeakStress(ps, mesh, models, plan.modelSpec, referencePointAt(setup, solved.curve, ps.atHz),
+    writePeakStress(ps, mesh, models, plan.modelSpec, disc::referencePointAt(setup, solved.curve, ps.atHz),
                     setup.excitationScale, outDir, comm, summary);
   else
     writePeakStress(ps, mesh, models, plan.modelSpec, point, setup.excitationScale, outDir, comm, summary);

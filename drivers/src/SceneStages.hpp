@@ -13,6 +13,7 @@
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscPeakVibration.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/response/ForcedResponse.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
@@ -30,6 +31,7 @@ using response::ForcedResponseSetup;
 using disc::DiscModelSpec;
 using disc::DiscReducedModels;
 using disc::DiscResponseSpec;
+using disc::PeakPoint;
 
 /// The most time samples per period a scene may ask for: every residual's cost grows in
 /// proportion (a friction contact's march too), and 2e6 ran for minutes without a point
@@ -90,25 +92,6 @@ int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic);
 /// report.md in the output directory: the run's summary, its figures (the SVGs the
 /// stages wrote), the studies' tables and the stages' error against run time.
 void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary);
-
-/// The point of a reference curve its peak outputs are written at: the harmonics check's
-/// highest level found (its system raised to those harmonics), else the traced point
-/// nearest the located peak with the curve's own system.
-struct PeakPoint {
-  std::unique_ptr<hbm::HarmonicBalanceSystem> raised;  ///< owns `system` when raised
-  const hbm::HarmonicBalanceSystem* system = nullptr;
-  Eigen::VectorXd x;
-  double omega = 0;
-  std::string what;  ///< "the peak with harmonics 0..4 at 1397.8 Hz", for titles and the summary
-  /// Empty when the point is converged in the harmonics to 1 %; else why it is an estimate,
-  /// for every number computed at it.
-  std::string caveat;
-};
-PeakPoint referencePeakPoint(ForcedResponseSetup& setup, const ForcedResponseResult& reference);
-/// The reference curve's solution at `hz` (its harmonics): Newton at that frequency from the
-/// traced point nearest it (on a fold, the branch that point is on); SolverError when
-/// Newton does not converge, InputError when hz lies outside the traced points.
-PeakPoint referencePointAt(ForcedResponseSetup& setup, const ForcedResponseResult& reference, double hz);
 
 /// What `disc_response/peak_stress` asks for: the sector's whole vibration at the
 /// friction-damped peak, its stresses and (margin) the Goodman-Haigh safety factor.
