@@ -82,7 +82,7 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
                                      std::to_string(n));
   }
   cyclic_ = std::move(coupling);
-  cachedOmega_ = -1;  // the phases changed
+  blocks_ = HarmonicBlocks{};  // the phases changed
   if (receptance_ && mean_.size() == 0) kappa_ = 0;
   Cnext0_ = cyclic_.Cnext;
   cyclic_.Cnext *= dampingScale_;
@@ -226,37 +226,83 @@ void HarmonicBalanceSystem::useDynamicStiffness(bool on) {
     meanStiffness_ = lu.inverse();
   }
   stiffnessForm_ = on;
-  cachedOmega_ = -1;
+  blocks_ = HarmonicBlocks{};
 }
 
-Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inverse) const {
-  if (omega == cachedOmega_ && inverse == cachedInverse_) return cachedOperator_;
-  const int n = numDofs(), nc = numCoefficients();
+const HarmonicBalanceSystem::HarmonicBlocks& HarmonicBalanceSystem::harmonicBlocks(double omega, bool inverse) const {
+  if (omega == blocks_.omega && inverse == blocks_.inverse) return blocks_;
+  const int n = numDofs();
   const auto& H = aft_->harmonics();
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n * nc, n * nc);
+  HarmonicBlocks b;
   for (int h : H.harmonics()) {
     if (h == 0) {
-      const int i = H.cosIndex(0);
-      const Eigen::MatrixXd& A0 = inverse ? meanStiffness_ : mean_;
-      for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) B(a * nc + i, b * nc + i) = A0(a, b);
+      b.re.push_back(inverse ? meanStiffness_ : mean_);
+      b.im.emplace_back();
       continue;
     }
-    // X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s (the same for Z = A^-1).
     const Eigen::MatrixXcd A = inverse ? receptance_->dynamicStiffness(h * omega, phaseIndex(h))
                                        : receptance_->compliance(h * omega, phaseIndex(h));
     if (A.rows() != n || A.cols() != n || !A.allFinite())
       throw Error(std::string("receptance model: ") + (inverse ? "dynamic stiffness" : "compliance") +
                   " at harmonic " + std::to_string(h) + " is not a finite " + std::to_string(n) + " square matrix");
-    const int c = H.cosIndex(h), s = H.sinIndex(h);
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b) {
-        const double re = A(a, b).real(), im = A(a, b).imag();
+    b.re.push_back(A.real());
+    b.im.push_back(A.imag());
+  }
+  b.omega = omega, b.inverse = inverse;
+  blocks_ = std::move(b);
+  return blocks_;
+}
+
+// X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s (the same for Z = A^-1).
+void HarmonicBalanceSystem::applyHarmonicOperator(double omega, bool inverse, const Eigen::VectorXd& X,
+                                                  Eigen::VectorXd& Y) const {
+  const int n = numDofs(), nc = numCoefficients();
+  const auto& H = aft_->harmonics();
+  const HarmonicBlocks& b = harmonicBlocks(omega, inverse);
+  Y.setZero(n * nc);
+  using Strided = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>;
+  using StridedOut = Eigen::Map<Eigen::VectorXd, 0, Eigen::InnerStride<>>;
+  for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
+    const int h = H.harmonics()[i];
+    const int c = H.cosIndex(h);
+    const Strided xc(X.data() + c, n, Eigen::InnerStride<>(nc));
+    StridedOut yc(Y.data() + c, n, Eigen::InnerStride<>(nc));
+    if (h == 0) {
+      yc.noalias() = b.re[i] * xc;
+      continue;
+    }
+    const int s = H.sinIndex(h);
+    const Strided xs(X.data() + s, n, Eigen::InnerStride<>(nc));
+    StridedOut ys(Y.data() + s, n, Eigen::InnerStride<>(nc));
+    const Eigen::VectorXd vc = xc, vs = xs;  // contiguous copies for the products
+    Eigen::VectorXd uc = b.re[i] * vc, us = b.re[i] * vs;
+    uc.noalias() += b.im[i] * vs;
+    us.noalias() -= b.im[i] * vc;
+    yc = uc, ys = us;
+  }
+}
+
+Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inverse) const {
+  const int n = numDofs(), nc = numCoefficients();
+  const auto& H = aft_->harmonics();
+  const HarmonicBlocks& bl = harmonicBlocks(omega, inverse);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n * nc, n * nc);
+  for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
+    const int h = H.harmonics()[i];
+    const int c = H.cosIndex(h);
+    if (h == 0) {
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) B(a * nc + c, b * nc + c) = bl.re[i](a, b);
+      continue;
+    }
+    const int s = H.sinIndex(h);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        const double re = bl.re[i](a, b), im = bl.im[i](a, b);
         B(a * nc + c, b * nc + c) = re, B(a * nc + c, b * nc + s) = im;
         B(a * nc + s, b * nc + c) = -im, B(a * nc + s, b * nc + s) = re;
       }
   }
-  cachedOmega_ = omega, cachedInverse_ = inverse, cachedOperator_ = B;
   return B;
 }
 
@@ -292,17 +338,39 @@ Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
   return Z;
 }
 
+// Z X without Z: with X as the nc x n matrix Xm of the DOFs' coefficients, block (a, b)
+// of linearOperator summed over b is, term by term,
+//   Xm K^T + D Xm C^T + D^2 Xm M^T + S Xm Kn^T + S^T Xm Kn + S D Xm Cn^T + S^T D Xm Cn
+//   + S D^2 Xm Mn^T + S^T D^2 Xm Mn:
+// products of nc x n by n x n, where forming Z costs (n nc)^2.
+void HarmonicBalanceSystem::applyLinearOperator(double omega, const Eigen::VectorXd& X, Eigen::VectorXd& R) const {
+  const int n = numDofs(), nc = numCoefficients();
+  const Eigen::MatrixXd D = omega * aft_->derivativeMatrix(), D2 = D * D;
+  const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, n);
+  R.resize(n * nc);
+  Eigen::Map<Eigen::MatrixXd> Rm(R.data(), nc, n);
+  Rm.noalias() = Xm * K_.transpose();
+  Rm.noalias() += D * (Xm * C_.transpose());
+  Rm.noalias() += D2 * (Xm * M_.transpose());
+  if (!isCyclic()) return;
+  const Eigen::MatrixXd& S = next_;
+  const auto& c = cyclic_;
+  Eigen::MatrixXd toNext = Xm * c.Knext.transpose(), toPrevious = Xm * c.Knext;  // S and S^T terms
+  toNext.noalias() += D * (Xm * c.Cnext.transpose());
+  toPrevious.noalias() += D * (Xm * c.Cnext);
+  toNext.noalias() += D2 * (Xm * c.Mnext.transpose());
+  toPrevious.noalias() += D2 * (Xm * c.Mnext);
+  Rm.noalias() += S * toNext;
+  Rm.noalias() += S.transpose() * toPrevious;
+}
+
 void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                                      Eigen::MatrixXd* jacobian, double excitationScale) const {
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
   if (receptance_ && stiffnessForm_) {
-    if (jacobian) {
-      *jacobian = dynamicStiffnessOperator(omega);
-      R.noalias() = *jacobian * X;
-    } else {
-      R.noalias() = dynamicStiffnessOperator(omega) * X;
-    }
+    if (jacobian) *jacobian = dynamicStiffnessOperator(omega);
+    applyHarmonicOperator(omega, true, X, R);
     R -= excitationScale * excitation_ + static_;
     addElementForces(X, omega, R, jacobian);
     return;
@@ -312,24 +380,20 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
     R = Eigen::VectorXd::Zero(n * nc);
     if (jacobian) jacobian->setZero(n * nc, n * nc);
     addElementForces(X, omega, R, jacobian);
-    const Eigen::MatrixXd B = complianceOperator(omega);
     const Eigen::VectorXd load = excitationScale * excitation_ + static_ - R;
     const double kappa = receptanceStiffness();
-    R.noalias() = kappa * X;
-    R.noalias() -= kappa * (B * load);
+    Eigen::VectorXd Bload;
+    applyHarmonicOperator(omega, false, load, Bload);
+    R.noalias() = kappa * (X - Bload);
     if (jacobian) {
-      Eigen::MatrixXd BJ = B * *jacobian;
+      Eigen::MatrixXd BJ = complianceOperator(omega) * *jacobian;
       *jacobian = kappa * BJ;
       jacobian->diagonal().array() += kappa;
     }
     return;
   }
-  if (jacobian) {  // the linear operator straight into the Jacobian: no copy of the dense matrix
-    *jacobian = linearOperator(omega);
-    R.noalias() = *jacobian * X;
-  } else {
-    R.noalias() = linearOperator(omega) * X;
-  }
+  if (jacobian) *jacobian = linearOperator(omega);
+  applyLinearOperator(omega, X, R);
   R -= excitationScale * excitation_ + static_;
   addElementForces(X, omega, R, jacobian);
 }
@@ -393,7 +457,11 @@ void HarmonicBalanceSystem::addElementForces(const Eigen::VectorXd& X, double om
 }
 
 Eigen::VectorXd HarmonicBalanceSystem::linearSolution(double omega, double excitationScale) const {
-  if (receptance_) return complianceOperator(omega) * (excitationScale * excitation_ + static_);
+  if (receptance_) {
+    Eigen::VectorXd X;
+    applyHarmonicOperator(omega, false, Eigen::VectorXd(excitationScale * excitation_ + static_), X);
+    return X;
+  }
   return linearOperator(omega).partialPivLu().solve(Eigen::VectorXd(excitationScale * excitation_ + static_));
 }
 

@@ -150,11 +150,21 @@ private:
   mutable double kappa_ = 1.0;
   bool stiffnessForm_ = false;
   Eigen::MatrixXd meanStiffness_;
-  // The last frequency's operator: residual and Jacobian come at the same frequency.
-  mutable double cachedOmega_ = -1;
-  mutable bool cachedInverse_ = false;
-  mutable Eigen::MatrixXd cachedOperator_;
-  /// The per-harmonic operator from complex n x n blocks (mean block real).
+  // The last frequency's per-harmonic blocks (residual and Jacobian come at the same
+  // frequency): for harmonic index i of the harmonic set, the real and imaginary parts
+  // of A(h w) or its inverse (the mean block real, imaginary part empty).
+  struct HarmonicBlocks {
+    double omega = -1;
+    bool inverse = false;
+    std::vector<Eigen::MatrixXd> re, im;
+  };
+  mutable HarmonicBlocks blocks_;
+  const HarmonicBlocks& harmonicBlocks(double omega, bool inverse) const;
+  /// Y = B X with B the per-harmonic operator, applied block by block (never formed).
+  void applyHarmonicOperator(double omega, bool inverse, const Eigen::VectorXd& X, Eigen::VectorXd& Y) const;
+  /// R = Z(omega) X of the matrix form, applied DOF block by DOF block (never formed).
+  void applyLinearOperator(double omega, const Eigen::VectorXd& X, Eigen::VectorXd& R) const;
+  /// The per-harmonic operator as a dense numUnknowns square matrix.
   Eigen::MatrixXd harmonicOperator(double omega, bool inverse) const;
   Eigen::MatrixXd M_, C_, K_;
   Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale

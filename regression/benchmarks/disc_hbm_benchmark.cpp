@@ -1,0 +1,84 @@
+// Benchmark (a program, not a test): the default disc's friction forced response
+// (the demo's sector, reduced models and contacts: EO 3, 43 shroud pairs, 5 N
+// preload, 20 N at mid-blade) by harmonic balance with harmonics 0..H. Prints the
+// unknowns, the time of one residual, one residual + Jacobian and one dense LU of
+// the bordered Jacobian at the band's start, then the band traced with the disc's
+// continuation defaults: points, Newton iterations, and the time split into
+// residuals, Jacobians and factorisations.
+//   build/regression/disc_hbm_benchmark [H (5)] [from Hz (1300)] [to Hz (1330)]
+//                                       [mesh size (6)] [cache dir (disc_benchmark_models)]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cyclone/continuation/DenseLu.hpp"
+#include "cyclone/core/Timer.hpp"
+#include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/fe/Environment.hpp"
+#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+
+using namespace cyclone;
+
+int main(int argc, char** argv) {
+  Environment env(argc, argv);
+  const int H = argc > 1 ? std::atoi(argv[1]) : 5;
+  const double fromHz = argc > 2 ? std::atof(argv[2]) : 1300.0, toHz = argc > 3 ? std::atof(argv[3]) : 1330.0;
+  const double meshSize = argc > 4 ? std::atof(argv[4]) : 6.0;
+  const std::string cache = argc > 5 ? argv[5] : "disc_benchmark_models";
+
+  mesh::ShroudedSectorParameters p;
+  p.meshSize = meshSize;
+  const auto mesh = mesh::generateShroudedSector(p);
+  disc::DiscModelSpec models;
+  models.sectors = p.sectors;
+  models.rpm = 10000;
+  disc::DiscResponseSpec spec;
+  spec.engineOrder = 3;
+  spec.harmonics.clear();
+  for (int h = 0; h <= H; ++h) spec.harmonics.push_back(h);
+  spec.contact.preload = 5.0;
+  spec.excitation.amplitude = 20.0;
+  std::vector<int> levels(spec.harmonics);
+  const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, levels),
+                                                    cache, env.comm());
+  auto setup = disc::makeDiscForcedResponse(mesh, reduced, spec, fromHz);
+  const auto problem = response::continuationProblem(setup);
+  const int n = problem.size;
+
+  // One evaluation of each kind at the band's start, from the linearised solution.
+  const Eigen::VectorXd x = setup.system->linearizedSolution(2 * M_PI * fromHz) / setup.unknownScale;
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  const int reps = 5;
+  Timer t;
+  for (int r = 0; r < reps; ++r) problem.residual(x, 1.0 + 1e-9 * r, R);
+  const double residual = t.seconds() / reps;
+  t.restart();
+  for (int r = 0; r < reps; ++r) problem.jacobian(x, 1.0 + 1e-9 * r, J);
+  const double jacobian = t.seconds() / reps;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n + 1, n + 1);
+  A.topLeftCorner(n, n) = J;
+  t.restart();
+  const continuation::DenseLu lu(A);
+  const double factor = t.seconds();
+  std::printf("default disc, EO 3, harmonics 0..%d: %d unknowns; residual %.4f s, Jacobian %.4f s, LU %.4f s\n", H, n,
+              residual, jacobian, factor);
+
+  disc::DiscSweepOptions sweep;
+  sweep.harmonicsCheckTo = -1;
+  sweep.stability = response::ForcedResponseSetup::Stability::Never;
+  sweep.fallback.reset();
+  std::vector<std::string> warnings;
+  t.restart();
+  const auto curve = disc::sweepDisc(setup, fromHz, toHz, sweep, warnings);
+  const double secs = t.seconds();
+  const auto& b = curve.branch;
+  const auto& s = b.statistics;
+  std::printf("%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; residuals "
+              "%.2f s (%d), Jacobians %.2f s (%d), factorisations %.2f s (%d); peak %.6g mm at %.3f Hz; %s\n",
+              fromHz, toHz, b.points.size(), secs, secs / std::max<std::size_t>(1, b.points.size()), s.newtonIterations,
+              s.rejectedSteps, s.residualSeconds, s.residuals, s.jacobianSeconds, s.jacobians, s.factorSeconds,
+              s.factorizations, curve.peak, curve.peakOmega / (2 * M_PI), b.stopReason.c_str());
+  return 0;
+}
