@@ -53,7 +53,9 @@ class Tracer {
 public:
   Tracer(const ContinuationProblem& problem, const ContinuationOptions& o, Branch& branch,
          const TraceCheckpointing* checkpointing)
-      : problem_(problem), o_(o), branch_(branch), n_(problem.size), checkpointing_(checkpointing) {}
+      : problem_(problem), o_(o), branch_(branch), n_(problem.size), checkpointing_(checkpointing) {
+    cornerStep_ = std::max(16 * o.minStep, 1e-3);
+  }
 
   void run(const Eigen::VectorXd& guess);
 
@@ -153,6 +155,14 @@ private:
   bool endAt(double p, const Point& inside, const Point& outside);
   void progress();
   bool start(const Eigen::VectorXd& guess, Point& z, Point& t);
+  enum class StepOutcome { Taken, Retract, Cut, CutHard };
+  StepOutcome correctStep(const Point& z, const Point& t, double ds, Correction& c, Point& t1, double& cosTurn);
+  void retract(Point& z, Point& t, double& ds);
+  bool passWall(Point& z, Point& t, double& ds);
+  double nextStep(int iterations, double cosTurn, double ds) const;
+  bool leftTheRange(const Point& previous, const Point& z, const Point& t);
+  bool atTheEnd(const Point& z, const Point& t, double ds);
+  void logSummary() const;
   // The state between two steps (z is the last point): saved every intervalSeconds of
   // work, and restored to continue a saved trace exactly.
   void save(const Point& t, double ds);
@@ -167,6 +177,7 @@ private:
   std::vector<double> measures_;  // problem_.measure at each point
   static constexpr int kMaxRetractions = 200;  // a bound on retaken steps (each shortens the step)
   int retractions_ = 0;
+  double cornerStep_ = 1e-3;  // a corner's step, max(16 minStep, 1e-3): where the turn stops cutting
   // The last point a retraction may not drop: one a fixed-parameter step reached (from
   // where the arclength steps had all failed, to which dropping it would return).
   std::size_t anchor_ = 0;
@@ -530,6 +541,134 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   return true;
 }
 
+// Plane, then sphere. A converged point is taken unless it lies back on the path or
+// too far away; a tangent turned by more than 60 degrees refuses it unless the step is
+// already down to a corner's size. On Taken, c holds the point, t1 its tangent and
+// cosTurn the turn from t.
+Tracer::StepOutcome Tracer::correctStep(const Point& z, const Point& t, double ds, Correction& c, Point& t1,
+                                        double& cosTurn) {
+  for (Constraint kind : {Constraint::Plane, Constraint::Sphere}) {
+    c = correct(kind, z, t, ds);
+    if (!c.converged) continue;
+    const Point chord = metric_.difference(c.z, z);
+    const double length = metric_.norm(chord);
+    if (length > 3 * ds || onTracedPath(c.z, ds)) continue;
+    if (!(c.factored && tangentFrom(c.lu, chord, t1)) && !freshTangent(c.z, chord, t1)) continue;
+    // The turn in the metric of the step (the scale is updated after it).
+    cosTurn = std::clamp(metric_.dot(t, t1), -1.0, 1.0);
+    // A point behind the last one (a sphere's) or whose tangent reverses is a
+    // hairpin's far side only if the path just traced is resolved at this step's
+    // scale; after a long last step (which may have crossed a stretch of stick-slip
+    // kinks) it can be that step's own path, and the step is retaken shorter instead.
+    if ((metric_.dot(chord, t) < 0 || cosTurn < 0) && lastSegmentLength() > ds &&
+        branch_.points.size() > anchor_ + 1 && retractions_ < kMaxRetractions)
+      return StepOutcome::Retract;
+    if (cosTurn < 0.5 && ds > cornerStep_) return StepOutcome::CutHard;
+    if (kind == Constraint::Sphere) ++stats().sphericalSteps;
+    return StepOutcome::Taken;
+  }
+  return StepOutcome::Cut;
+}
+
+// The last point dropped and the step retaken from the one before, a quarter as long
+// as the dropped segment.
+void Tracer::retract(Point& z, Point& t, double& ds) {
+  ++stats().rejectedSteps, ++retractions_;
+  ds = lastSegmentLength() / 4;
+  dropLast();
+  z = {branch_.points.back().x, branch_.points.back().parameter};
+  rescale(z);
+  const Point& tz = tangents_.back();
+  const double norm = tz.x.size() == n_ ? metric_.norm(tz) : 0.0;
+  if (norm > 0) t = {tz.x / norm, tz.p / norm};
+  ds = std::max(ds, o_.minStep);
+}
+
+// No arclength step passes z down to the smallest step: a fixed-parameter step, or
+// the trace stops (false, with the reason).
+bool Tracer::passWall(Point& z, Point& t, double& ds) {
+  Point z1, t1;
+  if (fixedParameterStep(z, t, z1) && freshTangent(z1, metric_.difference(z1, z), t1)) {
+    log::info("continuation: no arclength step passes p = " + std::to_string(z.p) +
+              "; stepped over at a fixed parameter to p = " + std::to_string(z1.p));
+    append(z1, t1);
+    anchor_ = branch_.points.size() - 1;
+    z = std::move(z1);
+    rescale(z);
+    const double norm = metric_.norm(t1);  // unit in the updated metric
+    t = {t1.x / norm, t1.p / norm};
+    ds = cornerStep_;
+    return true;
+  }
+  std::ostringstream why;
+  why << "no step passes p = " << z.p << ": the arclength correctors (plane and sphere) failed down to the "
+      << "smallest step " << o_.minStep << ", and so did Newton at a fixed parameter beyond it (the branch so "
+      << "far is kept)";
+  branch_.stopReason = why.str();
+  return false;
+}
+
+// The next step from the corrector's effort and the turn. Below a corner's size the
+// turn no longer shortens the step: a tangent that keeps turning as the step shrinks
+// is a kink of the nonsmooth residual (a contact's stick-slip instant crossing a time
+// sample), not a curvature to resolve, and a friction peak crosses thousands of them.
+double Tracer::nextStep(int iterations, double cosTurn, double ds) const {
+  const double turn = std::acos(cosTurn);
+  const double byNewton = std::clamp(4.0 / std::max(iterations, 1), 0.5, 2.0);
+  const double byTurn = std::clamp(o_.turnAngle / std::max(turn, 1e-12), 0.25, 2.0);
+  double next = ds * std::min(byNewton, byTurn);
+  if (byTurn < byNewton) next = std::max(next, std::min(ds * byNewton, cornerStep_));
+  return std::clamp(next, o_.minStep, o_.maxStep);
+}
+
+// After a taken step from `previous` to z: true (the trace ends) when z left the range,
+// at its end (the end itself by Newton there; where that does not converge, the
+// converged point just past it stays, and the reason says so) or back past its start.
+bool Tracer::leftTheRange(const Point& previous, const Point& z, const Point& t) {
+  const double dir = o_.to >= o_.from ? 1.0 : -1.0;
+  if ((z.p - o_.to) * dir >= 0) {
+    dropLast();
+    branch_.finished = true;
+    branch_.stopReason = "end of the parameter range reached";
+    if (!endAt(o_.to, previous, z)) {
+      append(z, t);
+      branch_.stopReason += " (the last point lies just past it, at p = " + std::to_string(z.p) +
+                            ": Newton at the end itself did not converge)";
+    }
+    return true;
+  }
+  if ((z.p - o_.from) * dir >= 0) return false;
+  dropLast();
+  if (!endAt(o_.from, previous, z)) append(z, t);
+  double reached = o_.from;
+  for (const auto& pt : branch_.points) reached = dir > 0 ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
+  branch_.returnedToStart = true;
+  branch_.reached = reached;
+  std::ostringstream why;
+  why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << o_.from
+      << "): " << reached << " .. " << o_.to << " not traced (the branch so far is kept)";
+  branch_.stopReason = why.str();
+  return true;
+}
+
+// True (the trace ends) when the point budget is spent or the next predictor passes
+// the range's end and Newton there converges (the end reached).
+bool Tracer::atTheEnd(const Point& z, const Point& t, double ds) {
+  if (int(branch_.points.size()) >= o_.maxSteps) {
+    branch_.stopReason = "the largest number of points (max_points " + std::to_string(o_.maxSteps) +
+                         ") was reached at p = " + std::to_string(z.p) + " (the branch so far is kept)";
+    return true;
+  }
+  const double dir = o_.to >= o_.from ? 1.0 : -1.0;
+  const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
+  if ((predictor.p - o_.to) * dir > 0 && endAt(o_.to, z, predictor)) {
+    branch_.finished = true;
+    branch_.stopReason = "end of the parameter range reached";
+    return true;
+  }
+  return false;
+}
+
 void Tracer::run(const Eigen::VectorXd& guess) {
   const double dir = o_.to >= o_.from ? 1.0 : -1.0;
   Point z, t;
@@ -540,150 +679,46 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     if (!start(guess, z, t)) return;
     ds = std::clamp(o_.initialStep, o_.minStep, o_.maxStep);
   }
-  const double cornerStep = std::max(16 * o_.minStep, 1e-3);
   while (true) {
-    if (int(branch_.points.size()) >= o_.maxSteps) {
-      branch_.stopReason = "the largest number of points (max_points " + std::to_string(o_.maxSteps) +
-                           ") was reached at p = " + std::to_string(z.p) + " (the branch so far is kept)";
-      break;
-    }
-    progress();
-    save(t, ds);
-    if (passCreep(z, t, dir)) {
-      ds = cornerStep;
-      continue;
-    }
-    // A step whose predictor passes the range's end: the end itself, by Newton there.
-    const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
-    if ((predictor.p - o_.to) * dir > 0) {
-      if (endAt(o_.to, z, predictor)) {
-        branch_.finished = true;
-        branch_.stopReason = "end of the parameter range reached";
-        break;
+    if (int(branch_.points.size()) < o_.maxSteps) {
+      progress();
+      save(t, ds);
+      if (passCreep(z, t, dir)) {
+        ds = cornerStep_;
+        continue;
       }
     }
-    // Plane, then sphere. A converged point is taken unless it lies back on the path
-    // or too far away; a tangent turned by more than 60 degrees refuses it unless the
-    // step is already down to a corner's size.
-    bool taken = false, cutHard = false, retract = false;
+    if (atTheEnd(z, t, ds)) break;
     Correction c;
     Point t1;
     double cosTurn = 1;
-    for (Constraint kind : {Constraint::Plane, Constraint::Sphere}) {
-      c = correct(kind, z, t, ds);
-      if (!c.converged) continue;
-      const Point chord = metric_.difference(c.z, z);
-      const double length = metric_.norm(chord);
-      if (length > 3 * ds || onTracedPath(c.z, ds)) continue;
-      if (!(c.factored && tangentFrom(c.lu, chord, t1)) && !freshTangent(c.z, chord, t1)) continue;
-      // The turn in the metric of the step (the scale is updated after it).
-      cosTurn = std::clamp(metric_.dot(t, t1), -1.0, 1.0);
-      // A point behind the last one (a sphere's) or whose tangent reverses is a
-      // hairpin's far side only if the path just traced is resolved at this step's
-      // scale; after a long last step (which may have crossed a stretch of stick-slip
-      // kinks) it can be that step's own path, and the step is retaken shorter instead.
-      if ((metric_.dot(chord, t) < 0 || cosTurn < 0) && lastSegmentLength() > ds &&
-          branch_.points.size() > anchor_ + 1 &&
-          retractions_ < kMaxRetractions) {
-        retract = true;
-        break;
-      }
-      if (cosTurn < 0.5 && ds > cornerStep) {
-        cutHard = true;
-        break;
-      }
-      taken = true;
-      if (kind == Constraint::Sphere) ++stats().sphericalSteps;
-      break;
-    }
-    if (retract) {
-      ++stats().rejectedSteps, ++retractions_;
-      ds = lastSegmentLength() / 4;
-      dropLast();
-      z = {branch_.points.back().x, branch_.points.back().parameter};
-      rescale(z);
-      const Point& tz = tangents_.back();
-      const double norm = tz.x.size() == n_ ? metric_.norm(tz) : 0.0;
-      if (norm > 0) t = {tz.x / norm, tz.p / norm};
-      ds = std::max(ds, o_.minStep);
+    const StepOutcome outcome = correctStep(z, t, ds, c, t1, cosTurn);
+    if (outcome == StepOutcome::Retract) {
+      retract(z, t, ds);
       continue;
     }
-    if (!taken) {
+    if (outcome != StepOutcome::Taken) {
       ++stats().rejectedSteps;
-      ds /= cutHard ? 4 : 2;
-      if (ds >= o_.minStep) continue;
-      Point z1;
-      if (fixedParameterStep(z, t, z1)) {
-        const Point chord = metric_.difference(z1, z);
-        if (freshTangent(z1, chord, t1)) {
-          log::info("continuation: no arclength step passes p = " + std::to_string(z.p) +
-                    "; stepped over at a fixed parameter to p = " + std::to_string(z1.p));
-          append(z1, t1);
-          anchor_ = branch_.points.size() - 1;
-          z = std::move(z1);
-          rescale(z);
-          const double norm = metric_.norm(t1);  // unit in the updated metric
-          t = {t1.x / norm, t1.p / norm};
-          ds = cornerStep;
-          continue;
-        }
-      }
-      std::ostringstream why;
-      why << "no step passes p = " << z.p << ": the arclength correctors (plane and sphere) failed down to the "
-          << "smallest step " << o_.minStep << ", and so did Newton at a fixed parameter beyond it (the branch so "
-          << "far is kept)";
-      branch_.stopReason = why.str();
+      ds /= outcome == StepOutcome::CutHard ? 4 : 2;
+      if (ds >= o_.minStep || passWall(z, t, ds)) continue;
       break;
     }
-    // Taken: the next step from the corrector's effort and the turn.
     const Point previous = z;
     z = std::move(c.z);
     append(z, t1);
     refinePeak(t);  // a maximum of the measure at the point before, whose tangent t is
     rescale(z);
     const double tnorm = metric_.norm(t1);
-    t1.x /= tnorm, t1.p /= tnorm;
-    t = std::move(t1);
-    const double turn = std::acos(cosTurn);
-    const double byNewton = std::clamp(4.0 / std::max(c.iterations, 1), 0.5, 2.0);
-    const double byTurn = std::clamp(o_.turnAngle / std::max(turn, 1e-12), 0.25, 2.0);
-    // Below a corner's size the turn no longer shortens the step: a tangent that keeps
-    // turning as the step shrinks is a kink of the nonsmooth residual (a contact's
-    // stick-slip instant crossing a time sample), not a curvature to resolve, and a
-    // friction peak crosses thousands of them.
-    double next = ds * std::min(byNewton, byTurn);
-    if (byTurn < byNewton) next = std::max(next, std::min(ds * byNewton, cornerStep));
-    ds = std::clamp(next, o_.minStep, o_.maxStep);
-    // Out of the range: the end reached, or the start passed on the way back.
-    // Where Newton at the end itself does not converge, the converged point just past
-    // it stays, and the reason says so.
-    if ((z.p - o_.to) * dir >= 0) {
-      dropLast();
-      branch_.finished = true;
-      branch_.stopReason = "end of the parameter range reached";
-      if (!endAt(o_.to, previous, z)) {
-        append(z, t);
-        branch_.stopReason += " (the last point lies just past it, at p = " + std::to_string(z.p) +
-                              ": Newton at the end itself did not converge)";
-      }
-      break;
-    }
-    if ((z.p - o_.from) * dir < 0) {
-      dropLast();
-      if (!endAt(o_.from, previous, z)) append(z, t);
-      double reached = o_.from;
-      for (const auto& pt : branch_.points) reached = dir > 0 ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
-      branch_.returnedToStart = true;
-      branch_.reached = reached;
-      std::ostringstream why;
-      why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << o_.from
-          << "): " << reached << " .. " << o_.to << " not traced (the branch so far is kept)";
-      branch_.stopReason = why.str();
-      break;
-    }
+    t = {t1.x / tnorm, t1.p / tnorm};
+    ds = nextStep(c.iterations, cosTurn, ds);
+    if (leftTheRange(previous, z, t)) break;
   }
   stats().seconds = secondsBefore_ + total_.seconds();
-  const auto& s = stats();
+  logSummary();
+}
+
+void Tracer::logSummary() const {
+  const auto& s = branch_.statistics;
   std::ostringstream msg;
   msg << "continuation: " << branch_.points.size() << " points, " << s.newtonIterations << " Newton iterations ("
       << s.rejectedSteps << " steps cut, " << s.sphericalSteps << " spherical), " << s.seconds << " s: residuals "

@@ -100,122 +100,156 @@ Eigen::VectorXd elementDisplacement(const mesh::Mesh& mesh, mesh::Index e,
 
 }  // namespace
 
-PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
-                                       const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
-                                       linalg::CommPtr comm, const NonlinearPrestressOptions& opt) {
-  Timer timer;
-  PrestressState state;
-  state.speedRpm = speedRpm;
-  state.omega = speedRpm * 2 * M_PI / 60;
-  state.axis = axis;
-  state.nonlinear = true;
-  fe::Assembler A(mesh, transform, comm);
-  // The load on the deformed position is affine in u: f(u) = f1 + K1 u at full speed, scaled by lambda.
-  const auto f1 = A.centrifugalLoad(material, state.omega, axis);
-  const auto K1 = A.assemble([&](mesh::Index, fe::ElementType t, const fe::ElementCoords& X) {
-    return fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
-  });
-  const double loadNorm = f1->getVector(0)->norm2();
-  auto residual = [&](const linalg::MultiVector& u, double lambda, linalg::MultiVector& R) -> void {
-    const auto field = A.nodalField(u);
-    auto fint = A.assembleVector([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
-      return fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), false).internalForce;
-    });
-    K1->apply(u, R);                      // K1 u
-    R.update(1.0, *f1, 1.0);              // f1 + K1 u
-    R.update(1.0, *fint, -lambda);        // fint - lambda (f1 + K1 u)
-  };
+namespace {
 
-  linalg::MultiVector u(A.map(), 1), trial(A.map(), 1);
-  Teuchos::RCP<linalg::Matrix> K0;
-  std::shared_ptr<const solvers::DirectSolver> K0factor;
-  double lambda = 0, step = std::min(1.0, opt.initialLoadStep);
-  bool broyden = true;
-  while (lambda < 1.0) {
-    const double target = std::min(1.0, lambda + step);
-    // Predictor: at u = 0 the tangent has the full spin softening but no stress
-    // stiffening yet, so Newton from zero overshoots; start instead from the linear
-    // solution (stiffening and softening then balance from the first iteration),
-    // and later steps from the load-proportional extrapolation of the last state.
-    if (lambda == 0) {
-      if (!K0) {
-        K0 = A.stiffness(material);
-        K0factor = std::make_shared<const solvers::DirectSolver>(*K0);
-      }
-      linalg::MultiVector load(A.map(), 1);
-      load.update(target, *f1, 0.0);
-      K0factor->solve(load, trial);
-    } else {
+// The geometrically nonlinear centrifugal state by load steps in Omega^2 (lambda from
+// 0 to 1), each solved by Newton through NOX. The load on the deformed position is
+// affine in u: f(u) = f1 + K1 u at full speed, scaled by lambda.
+class NonlinearPrestressSolver {
+public:
+  NonlinearPrestressSolver(const mesh::Mesh& mesh, const fe::DofTransform& transform,
+                           const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
+                           linalg::CommPtr comm)
+      : mesh_(mesh), material_(material), A_(mesh, transform, comm), speedRpm_(speedRpm),
+        omega_(speedRpm * 2 * M_PI / 60), axis_(axis) {
+    f1_ = A_.centrifugalLoad(material, omega_, axis);
+    K1_ = A_.assemble([&](mesh::Index, fe::ElementType t, const fe::ElementCoords& X) {
+      return fe::elementSpinSoftening(t, X, material.rho, omega_, axis);
+    });
+  }
+  PrestressState solve(const NonlinearPrestressOptions& opt);
+
+private:
+  // R(u) = f_int(u) - lambda (f1 + K1 u).
+  void residual(const linalg::MultiVector& u, double lambda, linalg::MultiVector& R) const {
+    const auto field = A_.nodalField(u);
+    auto fint = A_.assembleVector([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
+      return fe::elementTotalLagrangian(t, X, material_, elementDisplacement(mesh_, e, field), false).internalForce;
+    });
+    K1_->apply(u, R);                // K1 u
+    R.update(1.0, *f1_, 1.0);        // f1 + K1 u
+    R.update(1.0, *fint, -lambda);   // fint - lambda (f1 + K1 u)
+  }
+  // Its Jacobian K_T(u) - lambda K1.
+  Teuchos::RCP<linalg::Matrix> tangent(const linalg::MultiVector& u, double lambda) const {
+    const auto field = A_.nodalField(u);
+    return A_.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
+      Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material_, elementDisplacement(mesh_, e, field), true).tangent;
+      Ke -= lambda * fe::elementSpinSoftening(t, X, material_.rho, omega_, axis_);
+      return Ke;
+    });
+  }
+  // The start of the step to `target`. At u = 0 the tangent has the full spin softening
+  // but no stress stiffening yet, so Newton from zero overshoots; start instead from the
+  // linear solution (stiffening and softening then balance from the first iteration),
+  // and later steps from the load-proportional extrapolation of the last state.
+  void predict(double lambda, double target, const linalg::MultiVector& u, linalg::MultiVector& trial) {
+    if (lambda > 0) {
       trial.assign(u);
       trial.scale(target / lambda);
+      return;
     }
-    // Newton through NOX on R(u) = f_int(u) - target (f1 + K1 u), Jacobian K_T(u) - target K1.
-    // First by Broyden updates of K0's factor (the predictor's): where the stress
-    // stiffening and spin softening K0 lacks are small (a disc: 6 iterations, no tangent
-    // factored, against 2 Newton iterations with 2 factorizations) the whole prestress
-    // costs one factorization. When they stall (a cantilever sector, whose free blades
-    // soften strongly), this and every later step is solved by Newton.
+    if (!K0_) {
+      K0_ = A_.stiffness(material_);
+      K0factor_ = std::make_shared<const solvers::DirectSolver>(*K0_);
+    }
+    linalg::MultiVector load(A_.map(), 1);
+    load.update(target, *f1_, 0.0);
+    K0factor_->solve(load, trial);
+  }
+  // Newton on the step to `target` from trial. With `broyden`, by Broyden updates of
+  // K0's factor (the predictor's): where the stress stiffening and spin softening K0
+  // lacks are small (a disc: 6 iterations, no tangent factored, against 2 Newton
+  // iterations with 2 factorizations) the whole prestress costs one factorization.
+  solvers::NewtonReport solveStep(double target, bool broyden, double tolerance, int maxIterations,
+                                  linalg::MultiVector& trial) const {
     solvers::NewtonProblem problem;
-    if (broyden && K0factor) {
-      problem.approximateJacobian = K0;
-      problem.approximateFactor = K0factor;
+    if (broyden && K0factor_) {
+      problem.approximateJacobian = K0_;
+      problem.approximateFactor = K0factor_;
     }
     problem.residual = [&](const linalg::MultiVector& x, linalg::MultiVector& Rx) { residual(x, target, Rx); };
-    problem.jacobian = [&](const linalg::MultiVector& x) {
-      const auto field = A.nodalField(x);
-      return A.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
-        Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material, elementDisplacement(mesh, e, field), true).tangent;
-        Ke -= target * fe::elementSpinSoftening(t, X, material.rho, state.omega, axis);
-        return Ke;
-      });
-    };
+    problem.jacobian = [&](const linalg::MultiVector& x) { return tangent(x, target); };
     solvers::NewtonOptions newton;
-    newton.absoluteTolerance = opt.tolerance * target * loadNorm;
-    newton.maxIterations = opt.maxNewtonIterations;
-    const auto report = solvers::solveNewton(problem, trial, newton);
-    const bool converged = report.converged;
-    const int iterations = report.iterations;
-    if (!converged && problem.approximateFactor) {
-      state.newtonIterations += iterations;
+    newton.absoluteTolerance = tolerance;
+    newton.maxIterations = maxIterations;
+    return solvers::solveNewton(problem, trial, newton);
+  }
+  void finish(const linalg::MultiVector& u, PrestressState& state) const {
+    state.displacement = A_.nodalField(u);
+    state.stress.resize(mesh_.numElements());
+    for (mesh::Index e = 0; e < mesh_.numElements(); ++e) {
+      auto [b, le] = mesh_.locateElement(e);
+      state.stress[e] = fe::elementTotalLagrangian(mesh_.blocks[b].type, A_.elementCoords(e), material_,
+                                                   elementDisplacement(mesh_, e, state.displacement), false)
+                            .cauchy;
+    }
+  }
+
+  const mesh::Mesh& mesh_;
+  const fe::IsotropicElastic& material_;
+  fe::Assembler A_;
+  const double speedRpm_, omega_;
+  const mesh::RotationAxis axis_;
+  Teuchos::RCP<linalg::MultiVector> f1_;
+  Teuchos::RCP<linalg::Matrix> K1_, K0_;
+  std::shared_ptr<const solvers::DirectSolver> K0factor_;
+};
+
+PrestressState NonlinearPrestressSolver::solve(const NonlinearPrestressOptions& opt) {
+  Timer timer;
+  PrestressState state;
+  state.speedRpm = speedRpm_, state.omega = omega_, state.axis = axis_, state.nonlinear = true;
+  const double loadNorm = f1_->getVector(0)->norm2();
+  linalg::MultiVector u(A_.map(), 1), trial(A_.map(), 1);
+  double lambda = 0, step = std::min(1.0, opt.initialLoadStep);
+  bool broyden = true;  // until Broyden stalls (a cantilever sector's free blades soften strongly): then Newton
+  while (lambda < 1.0) {
+    const double target = std::min(1.0, lambda + step);
+    predict(lambda, target, u, trial);
+    const bool byBroyden = broyden && K0factor_;
+    const auto report = solveStep(target, broyden, opt.tolerance * target * loadNorm, opt.maxNewtonIterations, trial);
+    state.newtonIterations += report.iterations;
+    if (!report.converged && byBroyden) {
       broyden = false;  // the same step again, by Newton
       continue;
     }
-    state.newtonIterations += iterations;
     state.tangentFactorizations += report.jacobians;
-    if (converged) {
+    if (report.converged) {
       u.assign(trial);
       lambda = target;
       ++state.loadSteps;
       step = std::min(2 * step, 1.0);
       std::ostringstream msg;
-      msg << "nonlinear prestress: " << speedRpm * std::sqrt(lambda) << " rpm reached (" << iterations
+      msg << "nonlinear prestress: " << speedRpm_ * std::sqrt(lambda) << " rpm reached (" << report.iterations
           << " iterations, " << report.jacobians << " tangents factored)";
       log::info(msg.str());
-    } else {
-      step *= 0.5;
-      if (step < opt.minLoadStep) {
-        std::ostringstream msg;
-        msg << "nonlinear prestress: " << speedRpm << " rpm cannot be reached; Newton failed even with load step "
-            << step * 2 << " of Omega^2; the last converged state is at " << speedRpm * std::sqrt(lambda) << " rpm";
-        throw SolverError(msg.str());
-      }
+      continue;
+    }
+    step *= 0.5;
+    if (step < opt.minLoadStep) {
+      std::ostringstream msg;
+      msg << "nonlinear prestress: " << speedRpm_ << " rpm cannot be reached; Newton failed even with load step "
+          << step * 2 << " of Omega^2; the last converged state is at " << speedRpm_ * std::sqrt(lambda) << " rpm";
+      throw SolverError(msg.str());
     }
   }
-  state.displacement = A.nodalField(u);
-  state.stress.resize(mesh.numElements());
-  for (mesh::Index e = 0; e < mesh.numElements(); ++e) {
-    auto [b, le] = mesh.locateElement(e);
-    state.stress[e] = fe::elementTotalLagrangian(mesh.blocks[b].type, A.elementCoords(e), material,
-                                                 elementDisplacement(mesh, e, state.displacement), false)
-                          .cauchy;
-  }
+  finish(u, state);
   state.solveSeconds = timer.seconds();
   std::ostringstream msg;
-  msg << "nonlinear prestress at " << speedRpm << " rpm: " << state.loadSteps << " load steps, "
+  msg << "nonlinear prestress at " << speedRpm_ << " rpm: " << state.loadSteps << " load steps, "
       << state.newtonIterations << " iterations (" << (broyden ? "Broyden from the linear stiffness, " : "")
       << state.tangentFactorizations << " tangents factored), " << state.solveSeconds << " s";
   log::info(msg.str());
   return state;
+}
+
+}  // namespace
+
+PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTransform& transform,
+                                       const fe::IsotropicElastic& material, double speedRpm, const mesh::RotationAxis& axis,
+                                       linalg::CommPtr comm, const NonlinearPrestressOptions& opt) {
+  return NonlinearPrestressSolver(mesh, transform, material, speedRpm, axis, comm).solve(opt);
 }
 
 Eigen::MatrixXd tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,

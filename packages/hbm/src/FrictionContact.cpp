@@ -150,6 +150,100 @@ Eigen::MatrixXd FrictionContact::forceSamples(const Aft& aft, const Eigen::Matri
   return f;
 }
 
+namespace {
+
+// One contact's slider marched through periods of the motion w (N x d samples), with
+// its sensitivities: d/dvec(W) of the coefficients (m = nc d columns) and d/d(the
+// period's starting slider state); when recording, the force samples and the
+// coefficient Jacobian.
+class PeriodMarch {
+public:
+  PeriodMarch(const FrictionContactParameters& p, const Aft& aft, const Eigen::MatrixXd& w, Eigen::MatrixXd& f,
+              Eigen::MatrixXd* jacobian)
+      : p_(p), E_(aft.timeFromCoefficients()), P_(aft.coefficientsFromTime()), w_(w), f_(f), jacobian_(jacobian),
+        N_(aft.numSamples()), nc_(aft.numCoefficients()), d_(int(w.cols())), dt_(p.tangentialDirections) {}
+  int m() const { return nc_ * d_; }
+
+  // One period from the slider state z (updated). With dz, the sensitivities are
+  // carried through it: its first wCols columns d/dvec(W) (0 or m), the others
+  // d/d(the period's starting slider).
+  void period(Eigen::VectorXd& z, Eigen::MatrixXd* dz, int wCols, bool record) {
+    StepSensitivity sens{&dwt_, &dn_, dz, &df_};
+    if (dz) dwt_.setZero(dt_, dz->cols()), dn_.setZero(dz->cols()), df_.setZero(d_, dz->cols());
+    Eigen::VectorXd fi(d_), wt(dt_);
+    for (int i = 0; i < N_; ++i) {
+      wt = w_.row(i).head(dt_).transpose();
+      if (dz && wCols > 0) {
+        for (int c = 0; c < dt_; ++c) dwt_.block(c, c * nc_, 1, nc_) = E_.row(i);
+        dn_.segment(dt_ * nc_, nc_) = E_.row(i);
+      }
+      contactStep(p_, wt, w_(i, dt_), z, fi, dz ? &sens : nullptr);
+      if (!record) continue;
+      f_.row(i) = fi.transpose();
+      if (jacobian_)
+        for (int c = 0; c < d_; ++c) jacobian_->middleRows(c * nc_, nc_).noalias() += P_.col(i) * df_.row(c).head(m());
+    }
+  }
+
+  // The fixed point of the period map z -> Phi(z) from y, by Newton on its dt
+  // unknowns: each step halved until it lowers the mismatch (the period map is only
+  // piecewise smooth: a full step can cross a slip instant's switch and cycle), else
+  // the march's own step. False after 50 steps.
+  bool settle(Eigen::VectorXd& y, double settled) {
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dt_, dt_);
+    Eigen::MatrixXd dPhi(dt_, dt_);
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      Eigen::VectorXd image = y;
+      dPhi.setIdentity();
+      period(image, &dPhi, 0, false);
+      const Eigen::VectorXd r = image - y;
+      if (r.norm() <= settled) {
+        y = image;
+        return true;
+      }
+      const Eigen::VectorXd step = (I - dPhi).fullPivLu().solve(r);
+      bool lowered = false;
+      for (double t = 1; t > 1e-3 && !lowered && step.allFinite(); t *= 0.5) {
+        const Eigen::VectorXd trial = y + t * step;
+        Eigen::VectorXd trialImage = trial;
+        period(trialImage, nullptr, 0, false);
+        if ((trialImage - trial).norm() < r.norm()) y = trial, lowered = true;
+      }
+      if (!lowered) y = image;
+    }
+    return false;
+  }
+
+  // The periodic slider's sensitivity by the implicit-function theorem,
+  // dz*/dW = (I - dPhi/dz)^-1 dPhi/dW; where I - dPhi/dz is singular (a neutral
+  // direction), the sensitivity marched over 200 periods instead.
+  Eigen::MatrixXd sliderSensitivity(const Eigen::VectorXd& z) {
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dt_, dt_);
+    Eigen::MatrixXd sensitivity = Eigen::MatrixXd::Zero(dt_, m() + dt_);
+    sensitivity.rightCols(dt_).setIdentity();
+    Eigen::VectorXd image = z;
+    period(image, &sensitivity, m(), false);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - sensitivity.rightCols(dt_));
+    Eigen::MatrixXd dz = lu.solve(sensitivity.leftCols(m()));
+    if (!lu.isInvertible() || !dz.allFinite()) {
+      dz.setZero(dt_, m());
+      for (int k = 0; k < 200; ++k) period(image = z, &dz, m(), false);
+    }
+    return dz;
+  }
+
+private:
+  const FrictionContactParameters& p_;
+  const Eigen::MatrixXd &E_, &P_, &w_;
+  Eigen::MatrixXd& f_;
+  Eigen::MatrixXd* jacobian_;
+  const int N_, nc_, d_, dt_;
+  Eigen::MatrixXd dwt_, df_;  // work: the step's sensitivities
+  Eigen::RowVectorXd dn_;
+};
+
+}  // namespace
+
 void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eigen::MatrixXd& w, Eigen::MatrixXd& f,
                                    Eigen::MatrixXd* jacobian) const {
   const int N = aft.numSamples(), nc = aft.numCoefficients(), d = dimension(), dt = p_.tangentialDirections;
@@ -160,31 +254,8 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   w.resize(N, d), f.resize(N, d);
   for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
   if (stuckThroughout(aft, w, f, jacobian)) return;
-  const Eigen::MatrixXd& E = aft.timeFromCoefficients();
-  const Eigen::MatrixXd& P = aft.coefficientsFromTime();
-  const int m = nc * d;  // sensitivities with respect to vec(W)
-  Eigen::MatrixXd dwt, df;
-  Eigen::RowVectorXd dn;
-  // One period from the slider state z (updated). With dz, the sensitivities are
-  // carried through it: its first wCols columns d/dvec(W) (0 or m), the others
-  // d/d(the period's starting slider).
-  auto period = [&](Eigen::VectorXd& z, Eigen::MatrixXd* dz, int wCols, bool record) {
-    StepSensitivity sens{&dwt, &dn, dz, &df};
-    if (dz) dwt.setZero(dt, dz->cols()), dn.setZero(dz->cols()), df.setZero(d, dz->cols());
-    Eigen::VectorXd fi(d), wt(dt);
-    for (int i = 0; i < N; ++i) {
-      wt = w.row(i).head(dt).transpose();
-      if (dz && wCols > 0) {
-        for (int c = 0; c < dt; ++c) dwt.block(c, c * nc, 1, nc) = E.row(i);
-        dn.segment(dt * nc, nc) = E.row(i);
-      }
-      contactStep(p_, wt, w(i, dt), z, fi, dz ? &sens : nullptr);
-      if (!record) continue;
-      f.row(i) = fi.transpose();
-      if (jacobian)
-        for (int c = 0; c < d; ++c) jacobian->middleRows(c * nc, nc).noalias() += P.col(i) * df.row(c).head(m);
-    }
-  };
+  PeriodMarch march(p_, aft, w, f, jacobian);
+  const int m = march.m();
   double scale = p_.mu * std::abs(p_.preload) / p_.kt;
   for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
   const double settled = 1e-14 * std::max(scale, 1e-300);
@@ -193,10 +264,8 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   // or an opening contact; circular slip in 3D contracts only geometrically, and
   // near the onset of slip by a factor close to one per period, so a march of a
   // bounded count would leave a state off the periodic one, a residual that jumps
-  // from point to point and Newton that cannot converge. There the fixed point
-  // of the period map z -> Phi(z) is found by Newton on its two unknowns, and the
-  // Jacobian's slider sensitivity by the implicit-function theorem:
-  // dz*/dW = (I - dPhi/dz)^-1 dPhi/dW.
+  // from point to point and Newton that cannot converge. There the fixed point of
+  // the period map is found by Newton (PeriodMarch::settle).
   Eigen::VectorXd z = Eigen::VectorXd::Zero(dt);
   Eigen::MatrixXd dz;
   if (jacobian) dz.setZero(dt, m), jacobian->setZero(m, m);
@@ -204,37 +273,10 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   bool periodic = false;
   for (int k = 0; k < marchedPeriods && !periodic; ++k) {
     const Eigen::VectorXd start = z;
-    period(z, jacobian ? &dz : nullptr, m, false);
+    march.period(z, jacobian ? &dz : nullptr, m, false);
     periodic = (z - start).norm() <= settled;
   }
   if (!periodic) {
-    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dt, dt);
-    Eigen::MatrixXd dPhi(dt, dt);
-    auto settle = [&](Eigen::VectorXd& y) {
-      for (int iteration = 0; iteration < 50; ++iteration) {
-        Eigen::VectorXd image = y;
-        dPhi.setIdentity();
-        period(image, &dPhi, 0, false);
-        const Eigen::VectorXd r = image - y;
-        if (r.norm() <= settled) {
-          y = image;
-          return true;
-        }
-        // Newton's step, halved until it lowers the mismatch (the period map is only
-        // piecewise smooth: a full step can cross a slip instant's switch and cycle),
-        // else the march's own step.
-        const Eigen::VectorXd step = (I - dPhi).fullPivLu().solve(r);
-        bool lowered = false;
-        for (double t = 1; t > 1e-3 && !lowered && step.allFinite(); t *= 0.5) {
-          const Eigen::VectorXd trial = y + t * step;
-          Eigen::VectorXd trialImage = trial;
-          period(trialImage, nullptr, 0, false);
-          if ((trialImage - trial).norm() < r.norm()) y = trial, lowered = true;
-        }
-        if (!lowered) y = image;
-      }
-      return false;
-    };
     // Just past the onset of circular slip the march from the relaxed state creeps
     // (the slip per period vanishes there) and can end far from the periodic state,
     // which lies near the least violating slider position: a force that jumps
@@ -243,25 +285,14 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
       const Eigen::VectorXd normal = (p_.preload + p_.kn * w.col(2).array()).matrix();
       if (normal.minCoeff() > 0) {
         Eigen::VectorXd y = detail::leastViolatingState(w.leftCols(2).transpose(), p_.mu / p_.kt * normal);
-        if (settle(y)) z = y, periodic = true;
+        if (march.settle(y, settled)) z = y, periodic = true;
       }
     }
-    if (!periodic) periodic = settle(z);
+    if (!periodic) periodic = march.settle(z, settled);
     if (!periodic) ++unsettled;
-    if (jacobian) {
-      Eigen::MatrixXd sensitivity = Eigen::MatrixXd::Zero(dt, m + dt);
-      sensitivity.rightCols(dt).setIdentity();
-      Eigen::VectorXd image = z;
-      period(image, &sensitivity, m, false);
-      const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - sensitivity.rightCols(dt));
-      dz = lu.solve(sensitivity.leftCols(m));
-      if (!lu.isInvertible() || !dz.allFinite()) {  // a neutral direction: march the sensitivity
-        dz.setZero(dt, m);
-        for (int k = 0; k < 200; ++k) period(image = z, &dz, m, false);
-      }
-    }
+    if (jacobian) dz = march.sliderSensitivity(z);
   }
-  period(z, jacobian ? &dz : nullptr, m, true);
+  march.period(z, jacobian ? &dz : nullptr, m, true);
 }
 
 Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,

@@ -49,17 +49,13 @@ struct Block {
   int h = 0, sign = 1;      // exponent k = sign h
   int first = 0, size = 0;  // its modal coordinates
 };
-}  // namespace
 
-FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
-  if (!(omega > 0)) throw InputError("stability", "Hill's method needs a frequency > 0");
-  const auto& H = sys.aft().harmonics();
-  const int n = sys.numDofs(), nc = sys.numCoefficients(), m = n * nc;
-  const ReceptanceModel& model = *sys.receptance();
-
-  // Per DOF, exponent-block values from real coefficients: y = t x, x = ti y.
+// The exponent blocks of the harmonic set (h = 0 once, then +h and -h) and, per DOF,
+// the map y = t x from real coefficients to exponent-block values, x = ti y.
+std::vector<Block> exponentBlocks(const HarmonicSet& H, Eigen::MatrixXcd& t, Eigen::MatrixXcd& ti) {
+  const int nc = H.numCoefficients();
   std::vector<Block> blocks;
-  Eigen::MatrixXcd t = Eigen::MatrixXcd::Zero(nc, nc), ti = Eigen::MatrixXcd::Zero(nc, nc);
+  t = Eigen::MatrixXcd::Zero(nc, nc), ti = Eigen::MatrixXcd::Zero(nc, nc);
   for (int h : H.harmonics()) {
     const int b = int(blocks.size());
     if (h == 0) {
@@ -74,25 +70,33 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
     t(b, c) = 0.5, t(b, s) = cd(0, -0.5), t(b + 1, c) = 0.5, t(b + 1, s) = cd(0, 0.5);
     ti(c, b) = 1, ti(c, b + 1) = 1, ti(s, b) = cd(0, 1), ti(s, b + 1) = cd(0, -1);
   }
-  const int nb = int(blocks.size());  // == nc
+  return blocks;
+}
 
+// The element Jacobian, sparse (an element couples only its own DOFs).
+Eigen::SparseMatrix<double> elementJacobian(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+  const int m = sys.numUnknowns();
   Eigen::VectorXd F;
   Eigen::MatrixXd Jr;
   sys.nonlinearForces(X, omega, F, &Jr);
-  // The element Jacobian is sparse (an element couples only its own DOFs); everything
-  // that meets it is formed in the real coefficients, where the one large LU is real.
   std::vector<Eigen::Triplet<double>> entries;
   for (int r = 0; r < m; ++r)
     for (int c = 0; c < m; ++c)
       if (Jr(r, c) != 0) entries.emplace_back(r, c, Jr(r, c));
   Eigen::SparseMatrix<double> J(m, m);
   J.setFromTriplets(entries.begin(), entries.end());
+  return J;
+}
 
-  // The realization of every block (time scaled by w: lambda = w mu, l -> l / w^2, c -> c / w).
+// The realization of every block (conjugated for k < 0: the system is real); sets the
+// blocks' modal coordinates and returns their count.
+int blockRealizations(const HarmonicBalanceSystem& sys, std::vector<Block>& blocks, std::vector<ModalRealization>& real) {
+  const int n = sys.numDofs();
+  const ReceptanceModel& model = *sys.receptance();
   std::map<long, ModalRealization> byPhase;
   int mt = 0;
-  std::vector<ModalRealization> real(nb);
-  for (int b = 0; b < nb; ++b) {
+  real.assign(blocks.size(), {});
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
     const long p = sys.phaseIndex(blocks[b].h);
     auto it = byPhase.find(p);
     if (it == byPhase.end()) {
@@ -115,62 +119,82 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
     mt += blocks[b].size;
   }
   if (mt == 0) throw InputError("stability", "the reduced model has no modes: no Floquet exponents");
+  return mt;
+}
 
-  Eigen::MatrixXcd U = Eigen::MatrixXcd::Zero(m, mt), V = Eigen::MatrixXcd::Zero(m, mt);
-  std::vector<Eigen::MatrixXcd> R(nb);  // the diagonal blocks of the constant part
-  Eigen::VectorXcd d0(mt), d1(mt);
+// The modal parts in time scaled by w (lambda = w mu, l -> l / w^2, c -> c / w): the
+// stacked U and V (block b's rows at b n), the constant parts R per block, and the
+// quadratic's coefficients per modal coordinate, d0 = l + i c k - k^2 and d1 = c + 2 i k.
+struct ModalTerms {
+  Eigen::MatrixXcd U, V;
+  std::vector<Eigen::MatrixXcd> R;
+  Eigen::VectorXcd d0, d1;
+};
+ModalTerms modalTerms(const std::vector<Block>& blocks, const std::vector<ModalRealization>& real, int n, int mt,
+                      double omega) {
+  const int nb = int(blocks.size());
+  ModalTerms out{Eigen::MatrixXcd::Zero(nb * n, mt), Eigen::MatrixXcd::Zero(nb * n, mt), std::vector<Eigen::MatrixXcd>(nb),
+                 Eigen::VectorXcd(mt), Eigen::VectorXcd(mt)};
   for (int b = 0; b < nb; ++b) {
     const auto& r = real[b];
     const auto& blk = blocks[b];
     const double eta = r.lossFactor;
     const cd rfac = blk.h == 0 ? cd(1) : 1.0 / cd(1, blk.sign * eta);
-    R[b] = rfac * r.R;
-    U.block(b * n, blk.first, n, blk.size) = r.U;
-    V.block(b * n, blk.first, n, blk.size) = r.V;
+    out.R[b] = rfac * r.R;
+    out.U.block(b * n, blk.first, n, blk.size) = r.U;
+    out.V.block(b * n, blk.first, n, blk.size) = r.V;
     const double k = blk.sign * blk.h;  // in units of w
     for (int j = 0; j < blk.size; ++j) {
       const double l = r.eigenvalues(j) / (omega * omega);
       double c = r.viscous.size() ? r.viscous(j) / omega : 0.0;
       c += blk.h > 0 ? eta * l / blk.h : eta * std::sqrt(std::max(l, 0.0));
-      d0(blk.first + j) = cd(l - k * k, c * k);
-      d1(blk.first + j) = cd(c, 2 * k);
+      out.d0(blk.first + j) = cd(l - k * k, c * k);
+      out.d1(blk.first + j) = cd(c, 2 * k);
     }
   }
-  // With T the per-DOF map y = t x to the exponent basis, R_exp = T R T^-1 is real (the
-  // blocks +h and -h are conjugate), and V^T J_exp (I + R_exp J_exp)^{-1} U
-  //   = (V^T T) J (I + R J)^{-1} (T^{-1} U):
-  // U and V enter in the real coefficients (Ui = T^-1 U, Vi = T^T V), the LU is real.
+  return out;
+}
+
+// V^T J_exp (I + R_exp J_exp)^{-1} U in scaled time. With T the per-DOF map y = t x to
+// the exponent basis, R_exp = T R T^-1 is real (the blocks +h and -h are conjugate),
+// and the product equals (V^T T) J (I + R J)^{-1} (T^{-1} U): U and V enter in the
+// real coefficients (Ui = T^-1 U, Vi = T^T V), and the one large LU is real.
+Eigen::MatrixXcd elementTerm(const ModalTerms& mt, const Eigen::SparseMatrix<double>& J, const Eigen::MatrixXcd& t,
+                             const Eigen::MatrixXcd& ti, int n, double omega) {
+  const int nb = int(mt.R.size()), nc = nb, m = n * nc, cols = int(mt.U.cols());
   Eigen::MatrixXd Rreal(m, m);  // interleaved like X: DOF a, slot i at a nc + i
   Eigen::VectorXcd d(nb);
   for (int a = 0; a < n; ++a)
     for (int c = 0; c < n; ++c) {
-      for (int b = 0; b < nb; ++b) d(b) = R[b](a, c);
+      for (int b = 0; b < nb; ++b) d(b) = mt.R[b](a, c);
       Rreal.block(a * nc, c * nc, nc, nc) = (ti * d.asDiagonal() * t).real();
     }
   Eigen::MatrixXd IRJ = Rreal * J;
   IRJ.diagonal().array() += 1.0;
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(IRJ);
-  Eigen::MatrixXcd Ui(m, mt), Vi(m, mt), rows(nb, mt);
+  Eigen::MatrixXcd Ui(m, cols), Vi(m, cols), rows(nb, cols);
   for (int a = 0; a < n; ++a) {
-    for (int b = 0; b < nb; ++b) rows.row(b) = U.row(b * n + a);
+    for (int b = 0; b < nb; ++b) rows.row(b) = mt.U.row(b * n + a);
     Ui.middleRows(a * nc, nc) = ti * rows;
-    for (int b = 0; b < nb; ++b) rows.row(b) = V.row(b * n + a);
+    for (int b = 0; b < nb; ++b) rows.row(b) = mt.V.row(b * n + a);
     Vi.middleRows(a * nc, nc) = t.transpose() * rows;
   }
-  Eigen::MatrixXcd S(m, mt);  // (I + R J)^{-1} Ui
+  Eigen::MatrixXcd S(m, cols);  // (I + R J)^{-1} Ui
   S.real() = lu.solve(Eigen::MatrixXd(Ui.real()));
   S.imag() = lu.solve(Eigen::MatrixXd(Ui.imag()));
-  // In scaled time J is divided by w^2, like l.
-  Eigen::MatrixXcd D0 = Vi.transpose() * (J * S) / (omega * omega);
-  D0.diagonal() += d0;
+  return Vi.transpose() * (J * S) / (omega * omega);  // in scaled time J is divided by w^2, like l
+}
 
+// The quadratic eigenproblem [mu^2 + mu diag(d1) + D0] q = 0 linearised, its eigenvalues
+// (times w) and the Floquet exponents among them: those in the strip |Im| <= w / 2.
+FloquetExponents exponentsOf(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd& d1, double omega) {
+  const int mt = int(D0.rows());
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(2 * mt, 2 * mt);
   A.block(0, mt, mt, mt).setIdentity();
   A.block(mt, 0, mt, mt) = -D0;
   A.block(mt, mt, mt, mt).diagonal() = -d1;
   const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(A, false);
   if (es.info() != Eigen::Success) throw Error("Hill's method: the eigen-solution did not converge");
-
   FloquetExponents out;
   out.all = es.eigenvalues() * omega;
   std::vector<cd> kept;
@@ -181,6 +205,21 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
   out.maxRealPart = kept.empty() ? -std::numeric_limits<double>::infinity() : kept.front().real();
   out.stable = out.maxRealPart < 1e-8 * std::max(1.0, omega);
   return out;
+}
+
+}  // namespace
+
+FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+  if (!(omega > 0)) throw InputError("stability", "Hill's method needs a frequency > 0");
+  Eigen::MatrixXcd t, ti;
+  std::vector<Block> blocks = exponentBlocks(sys.aft().harmonics(), t, ti);
+  const Eigen::SparseMatrix<double> J = elementJacobian(sys, X, omega);
+  std::vector<ModalRealization> real;
+  const int mt = blockRealizations(sys, blocks, real);
+  const ModalTerms terms = modalTerms(blocks, real, sys.numDofs(), mt, omega);
+  Eigen::MatrixXcd D0 = elementTerm(terms, J, t, ti, sys.numDofs(), omega);
+  D0.diagonal() += terms.d0;
+  return exponentsOf(D0, terms.d1, omega);
 }
 
 }  // namespace cyclone::hbm
