@@ -1,9 +1,5 @@
-// disc_response/peak_studies: the disc's largest resonance peak followed over a contact
-// parameter (the preload or the friction coefficient) by a peak search at each value
-// (continuation::followPeak), from the reference curve's peak, instead of a frequency
-// curve per value. The shroud contacts' Jacobian jumps where a stick-slip instant
-// crosses a time sample, and the peak condition's arclength tracking creeps there
-// (docs/decisions.md): a fixed-frequency Newton passes those corners.
+// disc_response/peak_studies: the scene's keys onto disc::followDiscPeak (the library
+// follows the peak) and its outputs: peak_<name>.csv/.svg/.h5 and the summary's line.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -12,7 +8,7 @@
 #include <Teuchos_Comm.hpp>
 
 #include "SceneStages.hpp"
-#include "cyclone/continuation/PeakFollowing.hpp"
+#include "cyclone/disc/DiscPeakFollowing.hpp"
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -24,19 +20,6 @@
 namespace cyclone::scenes {
 
 namespace {
-
-// The grid: n values evenly in log over the range, with the reference value and the
-// value-list study's values (so the two can be compared), sorted, without repeats.
-std::vector<double> followedValues(double from, double to, int n, double reference, const std::vector<double>& listed) {
-  auto v = continuation::logarithmicValues(from, to, n);
-  v.push_back(reference);
-  for (double x : listed)
-    if (x >= from && x <= to) v.push_back(x);
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end(), [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }),
-          v.end());
-  return v;
-}
 
 void writePeakStudy(const std::string& name, const std::string& unit, const continuation::FollowedPeakCurve& curve,
                     const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed,
@@ -95,46 +78,14 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
   summary.written.push_back(outDir + "/peak_" + name + ".svg");
 }
 
-// From the reference value down and up the grid, joined in parameter order; the
-// optimum by `merit` over the whole.
-template <class Merit>
-continuation::FollowedPeakCurve followBothWays(const continuation::PeakTrackingProblem& problem,
-                                               const std::vector<continuation::PeakStart>& starts,
-                                               continuation::PeakFollowingOptions o,
-                                               const std::vector<double>& grid, double refValue, Merit merit) {
-  Timer timer;
-  continuation::FollowedPeakCurve whole;
-  std::vector<double> up, down;
-  for (double v : grid) (v >= refValue ? up : down).push_back(v);
-  std::reverse(down.begin(), down.end());
-  if (up.front() != refValue) up.insert(up.begin(), refValue);
-  down.insert(down.begin(), refValue);
-  for (const auto* part : {&down, &up}) {
-    if (part->size() < 2) continue;
-    o.parameters = *part;
-    const auto c = continuation::followPeaks(problem, starts, o);
-    whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
-    if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
-    auto points = c.points;
-    if (part == &down) std::reverse(points.begin(), points.end());
-    if (part == &up && !whole.points.empty()) points.erase(points.begin());  // the reference, already there
-    whole.points.insert(whole.points.end(), points.begin(), points.end());
-    if (c.optimumLocated) whole.optimumLocated = true;
-  }
-  whole.seconds = timer.seconds();
-  whole.complete = whole.stopReason.empty();
-  for (std::size_t i = 0; i < whole.points.size(); ++i)
-    if (whole.optimum < 0 || merit(whole.points[i]) < merit(whole.points[std::size_t(whole.optimum)]))
-      whole.optimum = int(i);
-  return whole;
-}
-
 // The summary's line: the work, the optimum and where it lies, the difference from the
 // value-list study's frequency curves at shared values.
-template <class Merit>
-std::string peakStudyLine(const std::string& name, const std::vector<double>& range,
-                          const continuation::FollowedPeakCurve& whole, const std::vector<double>& grid, bool byForce,
-                          Merit merit, const std::map<std::string, std::vector<StudyPeak>>& listed) {
+std::string peakStudyLine(const std::string& name, const std::vector<double>& range, const disc::DiscPeakFollowing& f,
+                          const std::map<std::string, std::vector<StudyPeak>>& listed) {
+  const auto& whole = f.curve;
+  const auto& grid = f.grid;
+  const bool byForce = f.byForce;
+  const auto merit = [&f](const continuation::FollowedPeak& p) { return f.merit(p); };
   const auto& best = whole.points[std::size_t(whole.optimum)];
   int jumps = 0;
   for (const auto& p : whole.points) jumps += p.jump;
@@ -195,55 +146,19 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
                      linalg::CommPtr comm, SceneSummary& summary) {
   for (const auto& study : studies) {
     const std::string& name = study.name;
-    const std::vector<double> range{study.from, study.to};
-    const int values = study.values;
-    if (referenceResult.branch.points.empty())
-      throw SolverError("disc_response/peak_studies/" + name + ": the reference curve has no point to start from");
-    const double refValue = name == "preload" ? spec.contact.preload : name == "mu" ? spec.contact.mu : 1.0;
-
-    ForcedResponseSetup setup = makeDiscForcedResponse(mesh, models, spec);
-    setup.outputDofs = reference.outputDofs;
-    if (name == "force")
-      setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
-    else
-      selectElementParameter(setup, "contact", name, refValue);
-    const auto problem = peakFollowingProblem(setup);
-    // Every peak of the reference curve that stands out (5 %), so one that overtakes the
-    // largest is seen; its frequencies from the curve's parameter (omega / omegaUnit).
-    auto starts = continuation::prominentPeaks(referenceResult.branch, problem.measure);
-    if (starts.empty()) throw SolverError("disc_response/peak_studies/" + name + ": the reference curve has no peak");
-    for (auto& st : starts) st.frequency *= reference.omegaUnit;
-    const double w0 = starts.front().frequency;
-    continuation::PeakFollowingOptions o;
-    o.search.step = 5e-4 * w0, o.search.maxStep = 5e-3 * w0, o.search.window = 0.15 * w0;
-    o.search.parameterTolerance = 1e-7 * w0, o.search.tolerance = reference.continuation.tolerance;
-    o.bandFrom = 2 * M_PI * bandFromHz, o.bandTo = 2 * M_PI * bandToHz;
-    o.sweep = reference.continuation;
-    o.sweep.checkpoints = nullptr;
-    // Over the force the peak grows with it: the optimum is the smallest peak per unit
-    // force (the most friction damping), on the grid.
-    const bool byForce = name == "force";
-    o.locateOptimum = !byForce;
-    auto merit = [byForce](const continuation::FollowedPeak& p) { return byForce ? p.measure / p.parameter : p.measure; };
-
-    std::vector<double> studyValues;
-    if (const auto it = listed.find(name); it != listed.end())
-      for (const auto& p : it->second) studyValues.push_back(p.value);
-    const auto grid = followedValues(range[0], range[1], values, refValue, studyValues);
-    log::info("peak following over the " + name + ": " + std::to_string(grid.size()) + " values, from the reference "
-              "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
-              " Hz");
-    continuation::FollowedPeakCurve whole = followBothWays(problem, starts, o, grid, refValue, merit);
-    if (whole.points.empty()) throw SolverError("disc_response/peak_studies/" + name + ": " + whole.stopReason);
-
+    disc::DiscPeakFollowingSpec following;
+    following.parameter = *disc::discStudyParameterFromName(name);
+    following.from = study.from, following.to = study.to, following.values = study.values;
+    const auto listedHere = listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{};
+    for (const auto& p : listedHere) following.extraValues.push_back(p.value);
+    const disc::DiscPeakFollowing f =
+        followDiscPeak(mesh, models, spec, reference, referenceResult, bandFromHz, bandToHz, following);
     const std::string unit = name == "preload" ? " / N" : "";
-    if (comm->getRank() == 0)
-      writePeakStudy(name, unit, whole, *setup.system, listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{},
-                     outDir, summary);
-    const std::string line = peakStudyLine(name, range, whole, grid, byForce, merit, listed);
+    if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
+    const std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     summary.computed.push_back(line);
     log::info(line);
-    summary.stages.push_back({"peak following (" + name + ")", whole.seconds,
+    summary.stages.push_back({"peak following (" + name + ")", f.curve.seconds,
                               "each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's"});
   }
 }

@@ -21,7 +21,7 @@
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/rom/BoundaryReduction.hpp"
 #include "cyclone/rom/CraigBamptonModel.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/GuyanModel.hpp"
 
 using namespace cyclone;
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   p.meshSize = meshSize;
   const auto mesh = mesh::generateShroudedSector(p);
   const auto sector = cyclic::makeCyclicSector(mesh, p.sectors, {}, {"disc_left"}, {"disc_right"});
-  rom::HarmonicModelProblem problem;
+  rom::NodalDiameterModelProblem problem;
   problem.fixedNodeSets = {"bore"};
   problem.retainedNodeSets = {"shroud_contact_left", "shroud_contact_right", "mid_blade"};
   problem.lossFactor = kEta;
@@ -84,9 +84,9 @@ int main(int argc, char** argv) {
   std::printf("%4s %10s %9s %-14s %12s %12s %12s\n", "ND", "equations", "retained", "kind", "build [s]", "eval [s]",
               "error");
   for (int k : diameters) {
-    problem.harmonic = k;
+    problem.nodalDiameter = k;
     timer.restart();
-    const rom::CyclicHarmonicModel full(mesh, sector, problem, comm);
+    const rom::NodalDiameterModel full(mesh, sector, problem, comm);
     const double assembly = timer.seconds();
     const auto retainedModes = full.modes(modes);
     const auto A0 = full.staticCompliance(0.0, retainedModes);

@@ -14,7 +14,7 @@
 
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 
 namespace cyclone::regression {
 
@@ -23,7 +23,7 @@ struct ShroudedSectorCase {
   mesh::Mesh mesh;
   cyclic::CyclicSector sector;
   cyclic::PrestressState prestress;
-  rom::HarmonicModelProblem problem;
+  rom::NodalDiameterModelProblem problem;
 
   ShroudedSectorCase(std::vector<std::string> fixedSets, int harmonic, double lossFactor) {
     mesh::ShroudedSectorParameters p;
@@ -37,7 +37,7 @@ struct ShroudedSectorCase {
     const auto& right = mesh.nodeSet("shroud_contact_right");
     mesh.nodeSets["rom_contact"] = {left.front(), left[left.size() / 2], right.front(), right[right.size() / 2]};
     sector = cyclic::makeCyclicSector(mesh, p.sectors, {}, {"disc_left"}, {"disc_right"});  // cantilever
-    problem.harmonic = harmonic;
+    problem.nodalDiameter = harmonic;
     problem.fixedNodeSets = fixedSets;
     problem.retainedNodeSets = {"rom_contact", "mid_blade"};
     problem.lossFactor = lossFactor;

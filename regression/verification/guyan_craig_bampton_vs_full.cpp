@@ -27,7 +27,7 @@
 #include "cyclone/post/Mac.hpp"
 #include "cyclone/rom/BoundaryReduction.hpp"
 #include "cyclone/rom/CraigBamptonModel.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/GuyanModel.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
@@ -46,14 +46,14 @@ constexpr int kPeakFamilies = 3;  // the peak check costs 2 or 3 full solves per
 // The full model, its modes and its compliance over the band: built once, shared by the tests.
 struct Reference {
   regression::ShroudedSectorCase sector{{"bore"}, kHarmonic, kEta};
-  std::unique_ptr<rom::CyclicHarmonicModel> full;
+  std::unique_ptr<rom::NodalDiameterModel> full;
   rom::RetainedModes modes;
   std::vector<double> band;
   std::vector<Eigen::MatrixXcd> compliance;
   double fullSecondsPerFrequency = 0;
 
   Reference() {
-    full = std::make_unique<rom::CyclicHarmonicModel>(sector.mesh, sector.sector, sector.problem,
+    full = std::make_unique<rom::NodalDiameterModel>(sector.mesh, sector.sector, sector.problem,
                                                       Tpetra::getDefaultComm());
     modes = full->modes(kFullModes);
     band = regression::frequencyBand(modes, kFamilies);
@@ -270,7 +270,7 @@ TEST(GuyanCraigBampton, FreeSectorRigidBodyModes) {
   // held by the retained DOFs, so the reductions exist and work away from w = 0;
   // at w = 0 there is no compliance, for any kind.
   const regression::ShroudedSectorCase s({}, 0, kEta);
-  const rom::CyclicHarmonicModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
+  const rom::NodalDiameterModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
   const auto modes = full.modes(12, solvers::ModalOptions::automaticShift());
   ASSERT_EQ(modes.numRigidBodyModes(), 2);
   const auto reduction = rom::reduceOntoRetainedDofs(full, 40);
@@ -313,19 +313,19 @@ TEST(GuyanCraigBampton, BadInput) {
   };
   // A nodal diameter below 0 (above N/2 is in hybrid_frf_vs_full).
   auto problem = s.problem;
-  problem.harmonic = -1;
-  EXPECT_THROW(rom::CyclicHarmonicModel(s.mesh, s.sector, problem, comm), InputError);
+  problem.nodalDiameter = -1;
+  EXPECT_THROW(rom::NodalDiameterModel(s.mesh, s.sector, problem, comm), InputError);
   // An empty retained set.
   s.mesh.nodeSets["empty"] = {};
   problem = s.problem;
   problem.retainedNodeSets = {"empty"};
-  EXPECT_THROW(rom::CyclicHarmonicModel(s.mesh, s.sector, problem, comm), InputError);
+  EXPECT_THROW(rom::NodalDiameterModel(s.mesh, s.sector, problem, comm), InputError);
 
   // Retained DOFs that cannot be boundary coordinates.
   s.mesh.nodeSets["bore_node"] = {s.mesh.nodeSet("bore").front()};
   problem = s.problem;
   problem.retainedNodeSets = {"mid_blade", "bore_node"};
-  const rom::CyclicHarmonicModel heldAtRetained(s.mesh, s.sector, problem, comm);
+  const rom::NodalDiameterModel heldAtRetained(s.mesh, s.sector, problem, comm);
   expectInputError([&] { rom::reduceOntoRetainedDofs(heldAtRetained, 0); }, "retained", "is fixed");
   // A right disc face node: a combination of left-face unknowns (the full model takes it).
   mesh::Index rightNode = -1;
@@ -335,12 +335,12 @@ TEST(GuyanCraigBampton, BadInput) {
   ASSERT_GE(rightNode, 0);
   s.mesh.nodeSets["right_face_node"] = {rightNode};
   problem.retainedNodeSets = {"mid_blade", "right_face_node"};
-  const rom::CyclicHarmonicModel onRightFace(s.mesh, s.sector, problem, comm);
+  const rom::NodalDiameterModel onRightFace(s.mesh, s.sector, problem, comm);
   EXPECT_GT(onRightFace.zeroFrequencyCompliance().norm(), 0);
   expectInputError([&] { rom::reduceOntoRetainedDofs(onRightFace, 0); }, "retained", "combination of unknowns");
 
   // Fixed-interface mode counts.
-  const rom::CyclicHarmonicModel model(s.mesh, s.sector, s.problem, comm);
+  const rom::NodalDiameterModel model(s.mesh, s.sector, s.problem, comm);
   expectInputError([&] { rom::reduceOntoRetainedDofs(model, -1); }, "fixed_interface_modes", "must be >= 0");
   expectInputError([&] { rom::reduceOntoRetainedDofs(model, int(model.equations())); }, "fixed_interface_modes",
                    "the interior has");

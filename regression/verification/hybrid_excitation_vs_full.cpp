@@ -19,7 +19,7 @@
 #include "ShroudedSectorCase.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 
 using namespace cyclone;
@@ -35,7 +35,7 @@ struct Reference {
   regression::ShroudedSectorCase sector{{"bore"}, kHarmonic, kEta};
   mesh::Index tipNode = -1;
   Eigen::Index retainedDof = -1;  // the retained DOF the third pattern loads
-  std::unique_ptr<rom::CyclicHarmonicModel> full;
+  std::unique_ptr<rom::NodalDiameterModel> full;
   rom::RetainedModes modes;
   std::vector<double> band;
   std::vector<Eigen::MatrixXcd> response;  // full FE x_r per band frequency, one column per pattern
@@ -67,7 +67,7 @@ struct Reference {
     rom::LoadPattern unit{"unit_at_retained", {{mid, 1, Eigen::Vector3d(0, 1, 0)}}};
     auto problem = sector.problem;
     problem.loads = {tip, face, unit};
-    full = std::make_unique<rom::CyclicHarmonicModel>(mesh, sector.sector, problem, Tpetra::getDefaultComm());
+    full = std::make_unique<rom::NodalDiameterModel>(mesh, sector.sector, problem, Tpetra::getDefaultComm());
     modes = full->modes(40);
     band = regression::frequencyBand(modes, kFamilies);
     Timer timer;
@@ -143,7 +143,7 @@ TEST(HybridExcitation, BadLoadsAreNamed) {
     auto problem = s.problem;
     problem.loads = {load};
     try {
-      rom::CyclicHarmonicModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm());
+      rom::NodalDiameterModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm());
       ADD_FAILURE() << "accepted: expected an InputError at " << where;
     } catch (const InputError& e) {
       EXPECT_EQ(e.where(), where) << e.what();
@@ -153,7 +153,7 @@ TEST(HybridExcitation, BadLoadsAreNamed) {
   expectInputError({"far", {{s.mesh.numNodes(), 0, Eigen::Vector3d(1, 0, 0)}}}, "loads/far");
   expectInputError({"copy", {{0, 2, Eigen::Vector3d(1, 0, 0)}}}, "loads/copy");
   // A model without load patterns has no excitation part.
-  const rom::CyclicHarmonicModel plain(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
+  const rom::NodalDiameterModel plain(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
   EXPECT_EQ(plain.numLoads(), 0);
   EXPECT_THROW(plain.loadResponse(100.0), InputError);
 }

@@ -15,7 +15,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "ShroudedSectorCase.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 
 using namespace cyclone;
@@ -41,7 +41,7 @@ std::vector<double> band(const rom::RetainedModes& modes, int families) {
 TEST(HybridFrf, ConvergesToFullFeCompliance) {
   Timer timer;
   const SectorCase s({"bore"});
-  const rom::CyclicHarmonicModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
+  const rom::NodalDiameterModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
   ASSERT_EQ(full.copies(), 2);
   const double setupSeconds = timer.seconds();
 
@@ -136,8 +136,8 @@ TEST(HybridFrf, ConvergesToFullFeCompliance) {
 TEST(HybridFrf, RigidBodyModesShiftW0) {
   // A free sector (no fixed nodes) at k = 0: rotation about and translation along the axis.
   SectorCase s({});
-  s.problem.harmonic = 0;
-  const rom::CyclicHarmonicModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
+  s.problem.nodalDiameter = 0;
+  const rom::NodalDiameterModel full(s.mesh, s.sector, s.problem, Tpetra::getDefaultComm());
   const auto modes = full.modes(40, solvers::ModalOptions::automaticShift());
   ASSERT_EQ(modes.numRigidBodyModes(), 2);
   const auto A0 = full.staticCompliance(0.0, modes);
@@ -154,11 +154,11 @@ TEST(HybridFrf, RigidBodyModesShiftW0) {
 TEST(HybridFrf, BadInput) {
   SectorCase s({"bore"});
   auto problem = s.problem;
-  problem.harmonic = 5;  // N = 8: 0..4
-  EXPECT_THROW(rom::CyclicHarmonicModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
+  problem.nodalDiameter = 5;  // N = 8: 0..4
+  EXPECT_THROW(rom::NodalDiameterModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
   problem = s.problem;
   problem.retainedNodeSets = {"no_such_set"};
-  EXPECT_THROW(rom::CyclicHarmonicModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
+  EXPECT_THROW(rom::NodalDiameterModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
   problem.retainedNodeSets = {};
-  EXPECT_THROW(rom::CyclicHarmonicModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
+  EXPECT_THROW(rom::NodalDiameterModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm()), InputError);
 }

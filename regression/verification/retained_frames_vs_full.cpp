@@ -25,7 +25,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/rom/BoundaryReduction.hpp"
 #include "cyclone/rom/CraigBamptonModel.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/GuyanModel.hpp"
 
 using namespace cyclone;
@@ -51,13 +51,13 @@ rom::RetainedDirections contactDirections(std::vector<int> directions) {
 
 struct Reference {
   regression::ShroudedSectorCase sector{{"bore"}, kHarmonic, kEta};
-  std::unique_ptr<rom::CyclicHarmonicModel> xyz;  // all 3 global directions: the reference
+  std::unique_ptr<rom::NodalDiameterModel> xyz;  // all 3 global directions: the reference
   rom::RetainedModes modes;
   std::vector<double> band;
   std::vector<Eigen::MatrixXcd> compliance;  // A_xyz over the band
 
   Reference() {
-    xyz = std::make_unique<rom::CyclicHarmonicModel>(sector.mesh, sector.sector, sector.problem,
+    xyz = std::make_unique<rom::NodalDiameterModel>(sector.mesh, sector.sector, sector.problem,
                                                      Tpetra::getDefaultComm());
     modes = xyz->modes(20);
     band = regression::frequencyBand(modes, kFamilies);
@@ -66,7 +66,7 @@ struct Reference {
 
   // The problem with the contact nodes in the oblique frame (`contact` directions) and
   // mid_blade in `midBlade` global directions.
-  rom::HarmonicModelProblem framed(std::vector<int> contact, std::vector<int> midBlade) const {
+  rom::NodalDiameterModelProblem framed(std::vector<int> contact, std::vector<int> midBlade) const {
     auto p = sector.problem;
     p.retainedDirections["rom_contact"] = contactDirections(std::move(contact));
     rom::RetainedDirections mid;
@@ -121,7 +121,7 @@ TEST(RetainedFrames, FullModelInFrameIsTheRotatedCompliance) {
   Timer timer;
   const auto& ref = reference();
   const auto& s = ref.sector;
-  const rom::CyclicHarmonicModel framed(s.mesh, s.sector, ref.framed(kContact, kMidBlade), Tpetra::getDefaultComm());
+  const rom::NodalDiameterModel framed(s.mesh, s.sector, ref.framed(kContact, kMidBlade), Tpetra::getDefaultComm());
   const Eigen::MatrixXd T = ref.transform(kContact, kMidBlade);
   ASSERT_EQ(framed.size(), T.cols());
   ASSERT_EQ(framed.size(), 2 * (4 * 2 + 1));  // 4 contact nodes x 2 directions + mid-blade y, 2 copies
@@ -138,7 +138,7 @@ TEST(RetainedFrames, ReducedModelsInFrameAgainstFull) {
   const auto& ref = reference();
   const auto& s = ref.sector;
   const auto comm = Tpetra::getDefaultComm();
-  const rom::CyclicHarmonicModel framed(s.mesh, s.sector, ref.framed(kContact, kMidBlade), comm);
+  const rom::NodalDiameterModel framed(s.mesh, s.sector, ref.framed(kContact, kMidBlade), comm);
   const Eigen::MatrixXd T = ref.transform(kContact, kMidBlade);
   const Eigen::MatrixXd Az = T.transpose() * ref.xyz->zeroFrequencyCompliance() * T;
 
@@ -196,7 +196,7 @@ TEST(RetainedFrames, GuyanWithAllFrameDirectionsIsTheRotatedGuyan) {
   const auto& ref = reference();
   const auto& s = ref.sector;
   const std::vector<int> all{0, 1, 2};
-  const rom::CyclicHarmonicModel framed(s.mesh, s.sector, ref.framed(all, all), Tpetra::getDefaultComm());
+  const rom::NodalDiameterModel framed(s.mesh, s.sector, ref.framed(all, all), Tpetra::getDefaultComm());
   const Eigen::MatrixXd T = ref.transform(all, all);
   const rom::GuyanModel guyan(rom::reduceOntoRetainedDofs(framed, 0), kEta);
   const rom::GuyanModel guyanXyz(rom::reduceOntoRetainedDofs(*ref.xyz, 0), kEta);
@@ -214,9 +214,9 @@ TEST(RetainedFrames, GuyanWithAllFrameDirectionsIsTheRotatedGuyan) {
 
 TEST(RetainedFrames, BadFramesAndDirectionsAreNamed) {
   const auto& s = reference().sector;
-  const auto expectInputError = [&](rom::HarmonicModelProblem problem, const std::string& where) {
+  const auto expectInputError = [&](rom::NodalDiameterModelProblem problem, const std::string& where) {
     try {
-      rom::CyclicHarmonicModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm());
+      rom::NodalDiameterModel(s.mesh, s.sector, problem, Tpetra::getDefaultComm());
       ADD_FAILURE() << "accepted: expected an InputError at " << where;
     } catch (const InputError& e) {
       EXPECT_EQ(e.where(), where) << e.what();
@@ -247,7 +247,7 @@ TEST(RetainedFrames, BadFramesAndDirectionsAreNamed) {
   problem.retainedNodeSets.push_back("contact_again");
   problem.retainedDirections["contact_again"] = contactDirections({1});
   try {
-    rom::CyclicHarmonicModel(mesh, s.sector, problem, Tpetra::getDefaultComm());
+    rom::NodalDiameterModel(mesh, s.sector, problem, Tpetra::getDefaultComm());
     ADD_FAILURE() << "a node retained with two frames was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "retained/contact_again") << e.what();

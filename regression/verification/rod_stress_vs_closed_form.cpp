@@ -66,7 +66,7 @@ TEST(RodStress, AlternatingStressAtTheRootAgainstTheClosedForm) {
   for (int elements : {10, 20, 40}) {
     Timer timer;
     const auto m = rod(elements);
-    rom::HarmonicModelProblem problem;
+    rom::NodalDiameterModelProblem problem;
     problem.material = steel;
     problem.fixedNodeSets = {"root"};
     problem.retainedNodeSets = {"tip"};

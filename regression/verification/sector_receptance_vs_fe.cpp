@@ -1,6 +1,6 @@
 // Verification: the receptance the harmonic balance gets from a cyclic
 // sector's per-nodal-diameter models (rom::SectorReceptance over the full FE
-// compliance of CyclicHarmonicModel, real form) against the sector equations
+// compliance of NodalDiameterModel, real form) against the sector equations
 // the harmonic balance's matrix form states: the sector's own physical K and M,
 // split into x_j (every free DOF but the disc's right face) and the neighbour's
 // left face, A x_j + A_next x_{j+1} + A_next^T x_{j-1}, with x_{j+1} = e^{-i 2 pi p/N} x_j
@@ -22,7 +22,7 @@
 #include "cyclone/fe/Assembler.hpp"
 #include "cyclone/fe/DofMap.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 #include "cyclone/rom/SectorReceptance.hpp"
 
@@ -67,7 +67,7 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
   dofs.constrain(mesh.nodeSet("bore"));
   dofs.finalize();
   const fe::Assembler assembler(mesh, dofs, comm);
-  rom::HarmonicModelProblem problem;
+  rom::NodalDiameterModelProblem problem;
   const Sparse K = toSparse(*assembler.stiffness(problem.material)), M = toSparse(*assembler.mass(problem.material));
 
   // x_j: every free DOF of the nodes off the disc's right face; the right face is the
@@ -101,11 +101,11 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
   problem.fixedNodeSets = {"bore"};
   std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;
   for (int k = 0; 2 * k <= N; ++k) {
-    problem.harmonic = k;
-    models[k] = std::make_shared<rom::CyclicHarmonicModel>(mesh, sector, problem, comm);
+    problem.nodalDiameter = k;
+    models[k] = std::make_shared<rom::NodalDiameterModel>(mesh, sector, problem, comm);
   }
   const rom::SectorReceptance receptance(N, models);
-  const auto& nodes = static_cast<const rom::CyclicHarmonicModel&>(*models[0]).retainedNodes();
+  const auto& nodes = static_cast<const rom::NodalDiameterModel&>(*models[0]).retainedNodes();
   ASSERT_EQ(receptance.numDofs(), int(3 * nodes.size()));
   std::vector<long> retained;
   for (auto n : nodes)
@@ -138,7 +138,7 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
       Eigen::VectorXcd rhsF = Eigen::VectorXcd::Zero(nx);
       for (int j = 0; j < n; ++j) rhsF(retained[j]) += F(j);
       const Eigen::VectorXcd xf = lu.solve(rhsF);
-      const auto u = static_cast<const rom::CyclicHarmonicModel&>(*models[kf]).fieldResponse(omega, F, sf);
+      const auto u = static_cast<const rom::NodalDiameterModel&>(*models[kf]).fieldResponse(omega, F, sf);
       double diff = 0;
       for (mesh::Index node = 0; node < mesh.numNodes(); ++node)
         for (int c = 0; c < 3; ++c)
@@ -177,7 +177,7 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
     Eigen::VectorXd rhsF = Eigen::VectorXd::Zero(nx);
     for (std::size_t j = 0; j < retained.size(); ++j) rhsF(retained[j]) += F(long(j));
     const Eigen::VectorXd x0 = lu0.solve(rhsF);
-    const auto u = static_cast<const rom::CyclicHarmonicModel&>(*models[0]).fieldResponse(0.0, F.cast<std::complex<double>>(), 1);
+    const auto u = static_cast<const rom::NodalDiameterModel&>(*models[0]).fieldResponse(0.0, F.cast<std::complex<double>>(), 1);
     double diff = 0;
     for (mesh::Index node = 0; node < mesh.numNodes(); ++node)
       for (int c = 0; c < 3; ++c)
@@ -192,7 +192,7 @@ TEST(SectorReceptance, MatchesTheSectorEquationsForEveryPhase) {
   // of their compliance, for every phase, near and away from a resonance.
   std::map<int, std::shared_ptr<const rom::ComplianceModel>> hybrids;
   for (const auto& [k, m] : models) {
-    const auto& full = static_cast<const rom::CyclicHarmonicModel&>(*m);
+    const auto& full = static_cast<const rom::NodalDiameterModel&>(*m);
     const auto modes = full.modes(12);
     hybrids[k] = std::make_shared<rom::HybridFrfModel>(modes, full.staticCompliance(0.0, modes), 0.01);
   }

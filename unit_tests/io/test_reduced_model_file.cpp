@@ -92,7 +92,7 @@ TEST(ReducedModelFile, RoundTripIsBitIdenticalAndH5dumpReadsIt) {
     const auto path = (dir / (hybrid ? "hybrid.h5" : "truncated.h5")).string();
     io::writeReducedModelHdf5(path, rec);
     const auto back = io::readReducedModelHdf5(path);
-    EXPECT_EQ(back.harmonic, 3);
+    EXPECT_EQ(back.nodalDiameter, 3);
     EXPECT_EQ(back.sectors, 24);
     EXPECT_EQ(back.rpm, 9500.0);
     EXPECT_EQ(back.retainedNodes, rec.retainedNodes);
@@ -141,7 +141,7 @@ TEST(ReducedModelFile, GuyanAndCraigBamptonRoundTripBitIdentical) {
     io::writeReducedModelHdf5(path, rec);
     const auto back = io::readReducedModelHdf5(path);
     EXPECT_EQ(back.kind, kind);
-    EXPECT_EQ(back.harmonic, 3);
+    EXPECT_EQ(back.nodalDiameter, 3);
     EXPECT_EQ(back.sectors, 24);
     EXPECT_EQ(back.rpm, 9500.0);
     EXPECT_EQ(back.lossFactor, 0.004);

@@ -90,7 +90,7 @@ DiscPeakVibration solveDiscPeakVibration(const mesh::Mesh& mesh, const DiscReduc
   const hbm::ReceptanceModel& base = projected ? projected->base() : *point.system->receptance();
   const auto solution = hbm::harmonicResponse(base, loads, point.omega);
   const auto prestress = discPrestress(mesh, models.sector, modelSpec, comm);
-  rom::HarmonicModelProblem problem;
+  rom::NodalDiameterModelProblem problem;
   problem.material = modelSpec.material;
   problem.fixedNodeSets = modelSpec.fixedNodeSets;
   problem.retainedNodeSets = modelSpec.retainedNodeSets;

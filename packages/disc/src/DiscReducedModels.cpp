@@ -20,7 +20,7 @@
 #include "cyclone/io/ReducedModelFile.hpp"
 #include "cyclone/rom/BoundaryReduction.hpp"
 #include "cyclone/rom/CraigBamptonModel.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/rom/GuyanModel.hpp"
 
 namespace cyclone::disc {
@@ -172,7 +172,7 @@ struct BuiltModel {
   std::optional<io::ReducedModelRecord> record;
 };
 
-BuiltModel reduceModel(const std::shared_ptr<rom::CyclicHarmonicModel>& full, const rom::RetainedModes& modes, int k,
+BuiltModel reduceModel(const std::shared_ptr<rom::NodalDiameterModel>& full, const rom::RetainedModes& modes, int k,
                        const DiscModelSpec& spec, const std::vector<mesh::Index>& retainedNodes) {
   std::vector<int> nodes, directions, copies;
   for (int c = 0; c < full->copies(); ++c)
@@ -245,7 +245,7 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
       if (std::find(out.retainedNodes.begin(), out.retainedNodes.end(), n) == out.retainedNodes.end())
         out.retainedNodes.push_back(n);
 
-  rom::HarmonicModelProblem problem;
+  rom::NodalDiameterModelProblem problem;
   problem.material = spec.material;
   problem.fixedNodeSets = spec.fixedNodeSets;
   problem.retainedNodeSets = spec.retainedNodeSets;
@@ -265,9 +265,9 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
       prestressed = true;
       if (prestress) problem.prestress = std::make_shared<const cyclic::PrestressState>(std::move(*prestress));
     }
-    problem.harmonic = k;
+    problem.nodalDiameter = k;
     Timer build;
-    auto full = std::make_shared<rom::CyclicHarmonicModel>(mesh, out.sector, problem, comm);
+    auto full = std::make_shared<rom::NodalDiameterModel>(mesh, out.sector, problem, comm);
     const auto modes = full->modes(spec.modes);
     if (modes.numRigidBodyModes() > 0)
       throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +

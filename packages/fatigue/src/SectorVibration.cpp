@@ -49,18 +49,18 @@ std::vector<HarmonicStress> SectorVibration::alternatingStress(std::size_t node)
 }
 
 SectorVibration recoverSectorVibration(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
-                                       rom::HarmonicModelProblem problem, const std::vector<hbm::HarmonicLoad>& loads,
+                                       rom::NodalDiameterModelProblem problem, const std::vector<hbm::HarmonicLoad>& loads,
                                        double omega, linalg::CommPtr comm) {
   Timer timer;
   SectorVibration out;
   out.omega = omega;
-  std::map<int, std::unique_ptr<rom::CyclicHarmonicModel>> models;  // one per nodal diameter
+  std::map<int, std::unique_ptr<rom::NodalDiameterModel>> models;  // one per nodal diameter
   for (const auto& load : loads) {
     const auto [k, sign] = rom::SectorReceptance::nodalDiameter(sector.sectors, load.phaseIndex);
     auto& model = models[k];
     if (!model) {
-      problem.harmonic = k;
-      model = std::make_unique<rom::CyclicHarmonicModel>(mesh, sector, problem, comm);
+      problem.nodalDiameter = k;
+      model = std::make_unique<rom::NodalDiameterModel>(mesh, sector, problem, comm);
     }
     const auto u = model->fieldResponse(load.harmonic * omega, load.force, sign);
     // The field at the retained DOFs, in the loads' order (copy a's DOFs).

@@ -37,13 +37,13 @@ Eigen::MatrixXd readMatrix(H5::H5File& file, const char* name) {
 bool modal(const std::string& kind) { return kind == "hybrid" || kind == "truncation"; }
 bool boundary(const std::string& kind) { return kind == "guyan" || kind == "craig_bampton"; }
 
-ReducedModelRecord labelled(std::size_t r, int harmonic, int sectors, double rpm, std::vector<int> nodes,
+ReducedModelRecord labelled(std::size_t r, int nodalDiameter, int sectors, double rpm, std::vector<int> nodes,
                             std::vector<int> directions, std::vector<int> copies) {
   if (nodes.size() != r || directions.size() != r || copies.size() != r)
     throw InputError("reduced model", "one node, direction and copy per retained DOF (" + std::to_string(r) +
                                           ") are needed");
   ReducedModelRecord rec;
-  rec.harmonic = harmonic, rec.sectors = sectors, rec.rpm = rpm;
+  rec.nodalDiameter = nodalDiameter, rec.sectors = sectors, rec.rpm = rpm;
   rec.retainedNodes = std::move(nodes), rec.retainedDirections = std::move(directions);
   rec.retainedCopies = std::move(copies);
   return rec;
@@ -71,10 +71,10 @@ rom::HybridFrfModel ReducedModelRecord::hybridModel() const {
                           : rom::HybridFrfModel::modalTruncation(modes, lossFactor);
 }
 
-ReducedModelRecord makeReducedModelRecord(const rom::HybridFrfModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::HybridFrfModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies) {
-  auto rec = labelled(std::size_t(model.size()), harmonic, sectors, rpm, std::move(nodes), std::move(directions),
+  auto rec = labelled(std::size_t(model.size()), nodalDiameter, sectors, rpm, std::move(nodes), std::move(directions),
                       std::move(copies));
   rec.kind = model.hasStaticCorrection() ? "hybrid" : "truncation";
   rec.modes = model.modes();
@@ -84,10 +84,10 @@ ReducedModelRecord makeReducedModelRecord(const rom::HybridFrfModel& model, int 
   return rec;
 }
 
-ReducedModelRecord makeReducedModelRecord(const rom::GuyanModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::GuyanModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies) {
-  auto rec = labelled(std::size_t(model.size()), harmonic, sectors, rpm, std::move(nodes), std::move(directions),
+  auto rec = labelled(std::size_t(model.size()), nodalDiameter, sectors, rpm, std::move(nodes), std::move(directions),
                       std::move(copies));
   rec.kind = "guyan";
   rec.reduction.copies = model.modes().copies;
@@ -98,10 +98,10 @@ ReducedModelRecord makeReducedModelRecord(const rom::GuyanModel& model, int harm
   return rec;
 }
 
-ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies) {
-  auto rec = labelled(std::size_t(model.size()), harmonic, sectors, rpm, std::move(nodes), std::move(directions),
+  auto rec = labelled(std::size_t(model.size()), nodalDiameter, sectors, rpm, std::move(nodes), std::move(directions),
                       std::move(copies));
   rec.kind = "craig_bampton";
   rec.reduction.copies = model.modes().copies;
@@ -157,7 +157,7 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
     if (rec.retainedAxes.size()) writeMatrix(h5, "retained_axes", rec.retainedAxes);
     writeIntAttribute(h5, "format_version", kFormatVersion);
     writeStringAttribute(h5, "kind", rec.kind);
-    writeIntAttribute(h5, "harmonic", rec.harmonic);
+    writeIntAttribute(h5, "harmonic", rec.nodalDiameter);  // the file's name for it (caches stay readable)
     writeIntAttribute(h5, "sectors", rec.sectors);
     writeIntAttribute(h5, "copies", modal(rec.kind) ? rec.modes.copies : rec.reduction.copies);
     writeIntAttribute(h5, "static_correction", rec.staticCorrection ? 1 : 0);
@@ -212,7 +212,7 @@ ReducedModelRecord readReducedModelHdf5(const std::string& path) {
     rec.retainedDirections = readVector<int>(h5, "retained_directions", H5::PredType::NATIVE_INT);
     rec.retainedCopies = readVector<int>(h5, "retained_copies", H5::PredType::NATIVE_INT);
     if (h5.nameExists("retained_axes")) rec.retainedAxes = readMatrix(h5, "retained_axes");
-    rec.harmonic = readIntAttribute(h5, "harmonic");
+    rec.nodalDiameter = readIntAttribute(h5, "harmonic");
     rec.sectors = readIntAttribute(h5, "sectors");
     rec.lossFactor = readDoubleAttribute(h5, "loss_factor");
     rec.rpm = readDoubleAttribute(h5, "rpm");

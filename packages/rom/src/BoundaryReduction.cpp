@@ -13,7 +13,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
 #include "TransposeProduct.hpp"
@@ -45,7 +45,7 @@ std::string dofName(const mesh::Mesh& mesh, mesh::Index node, int d, int c) {
   return s.str();
 }
 
-Partition partition(const CyclicHarmonicModel& model, const linalg::Map& fullMap) {
+Partition partition(const NodalDiameterModel& model, const linalg::Map& fullMap) {
   const auto& T = model.operators().assembler->transform();
   const auto& mesh = model.operators().assembler->mesh();
   const auto& retained = model.retainedDofs();
@@ -233,7 +233,7 @@ Teuchos::RCP<linalg::Matrix> rotated(const linalg::Matrix& A, const linalg::Matr
 
 }  // namespace
 
-BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int fixedInterfaceModes) {
+BoundaryReduction reduceOntoRetainedDofs(const NodalDiameterModel& model, int fixedInterfaceModes) {
   if (fixedInterfaceModes < 0) throw InputError("fixed_interface_modes", "must be >= 0");
   const auto& op = model.operators();
   const auto fullMap = op.K->getRowMap();
@@ -290,7 +290,7 @@ BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int f
   }
   out.modesSeconds = timer.seconds();
   std::ostringstream msg;
-  msg << "boundary reduction k = " << model.harmonic() << ": " << nb << " boundary DOFs, " << interiorEquations
+  msg << "boundary reduction k = " << model.nodalDiameter() << ": " << nb << " boundary DOFs, " << interiorEquations
       << " interior unknowns; constraint modes " << out.staticSeconds << " s (K_ii and its factorization "
       << factorSeconds << " s, solves " << solveSeconds << " s, K_g and M_g " << out.staticSeconds - factorSeconds - solveSeconds
       << " s), " << out.numInterfaceModes()

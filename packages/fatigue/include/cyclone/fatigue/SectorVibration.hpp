@@ -6,7 +6,7 @@
 // with the phase index p_h = h EO mod N; the forces it puts on the reduced
 // model's retained DOFs (hbm::harmonicLoads: excitation, contact forces) drive
 // the full FE sector of that nodal diameter in one complex solve
-// (rom::CyclicHarmonicModel::fieldResponse), harmonic 0 the undamped static one.
+// (rom::NodalDiameterModel::fieldResponse), harmonic 0 the undamped static one.
 // That is the exact field under those forces, not a modal expansion: its value
 // at the retained DOFs differs from the harmonic balance solution only by the
 // reduced model's error, which `retainedResponse` lets the caller report.
@@ -20,7 +20,7 @@
 #include "cyclone/fatigue/GoodmanHaigh.hpp"
 #include "cyclone/fatigue/StressCycle.hpp"
 #include "cyclone/hbm/HarmonicLoads.hpp"
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 
 namespace cyclone::fatigue {
 
@@ -46,7 +46,7 @@ struct SectorVibration {
 /// prestress; its harmonic is set per load). `loads`: on the retained DOFs of one copy, in
 /// the order of problem.retainedNodeSets' DOFs.
 SectorVibration recoverSectorVibration(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
-                                       rom::HarmonicModelProblem problem, const std::vector<hbm::HarmonicLoad>& loads,
+                                       rom::NodalDiameterModelProblem problem, const std::vector<hbm::HarmonicLoad>& loads,
                                        double omega, linalg::CommPtr comm);
 
 /// Per node: the cycle's measures and the Goodman-Haigh safety factor (alternating

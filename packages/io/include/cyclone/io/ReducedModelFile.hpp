@@ -1,5 +1,5 @@
 #pragma once
-// The HDF5 form of a reduced model of one harmonic index (hybrid FRF, modal
+// The HDF5 form of a reduced model of one nodal diameter (hybrid FRF, modal
 // truncation, Guyan or Craig-Bampton), so a forced-response run can reuse it
 // without the FE model. Schema (docs/reduced_models.md):
 //   hybrid, truncation:
@@ -37,7 +37,7 @@ namespace cyclone::io {
 
 struct ReducedModelRecord {
   std::string kind = "hybrid";  ///< hybrid | truncation | guyan | craig_bampton
-  int harmonic = 0;             ///< nodal diameter k
+  int nodalDiameter = 0;        ///< k
   int sectors = 0;              ///< N of the disc
   double rpm = 0;               ///< speed of the prestress the model was built at
   std::vector<int> retainedNodes, retainedDirections, retainedCopies;  ///< one entry per retained DOF
@@ -58,13 +58,13 @@ struct ReducedModelRecord {
 };
 
 /// From a model and where it came from (InputError if the DOF labels do not match its size).
-ReducedModelRecord makeReducedModelRecord(const rom::HybridFrfModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::HybridFrfModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies);
-ReducedModelRecord makeReducedModelRecord(const rom::GuyanModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::GuyanModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies);
-ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, int harmonic, int sectors, double rpm,
+ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, int nodalDiameter, int sectors, double rpm,
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies);
 

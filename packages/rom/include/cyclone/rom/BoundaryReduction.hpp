@@ -1,5 +1,5 @@
 #pragma once
-// The sector's K_k, M_k at one harmonic index reduced onto the retained DOFs
+// The sector's K_k, M_k at one nodal diameter reduced onto the retained DOFs
 // taken as a boundary b (the rest is the interior i), what Guyan and
 // Craig-Bampton models are made of:
 //   constraint modes  Psi = [I; -K_ii^{-1} K_ib]  (one factorization of K_ii,
@@ -18,10 +18,10 @@
 
 namespace cyclone::rom {
 
-class CyclicHarmonicModel;
+class NodalDiameterModel;
 
 struct BoundaryReduction {
-  int copies = 1;                          ///< real-form copies of the harmonic index
+  int copies = 1;                          ///< real-form copies of the nodal diameter
   Eigen::MatrixXd stiffness;               ///< K_g (retained x retained)
   Eigen::MatrixXd mass;                    ///< M_g (retained x retained)
   std::vector<double> interfaceEigenvalues;///< lambda_j of (K_ii, M_ii), ascending; pairs listed twice
@@ -39,6 +39,6 @@ struct BoundaryReduction {
 /// unknown, or when K_ii does not factor (the retained DOFs do not hold the
 /// interior); naming "fixed_interface_modes" for a negative count or more than the
 /// interior has.
-BoundaryReduction reduceOntoRetainedDofs(const CyclicHarmonicModel& model, int fixedInterfaceModes);
+BoundaryReduction reduceOntoRetainedDofs(const NodalDiameterModel& model, int fixedInterfaceModes);
 
 }  // namespace cyclone::rom

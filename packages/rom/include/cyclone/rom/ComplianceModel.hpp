@@ -4,7 +4,7 @@
 // FE reference, the hybrid FRF model, modal truncation). Eigen only.
 //
 // Retained DOF order: index = copy * (DOFs per copy) + DOF, copy 0 and 1 being
-// the real and imaginary parts of the cyclic real form at harmonic index k (one
+// the real and imaginary parts of the cyclic real form at nodal diameter k (one
 // copy for k = 0 and N/2), the DOFs of a copy node by node, each node's chosen
 // directions in order (RetainedDofs.hpp); with all 3 global directions, index =
 // (copy * retainedNodes + node) * 3 + direction. The complex entries are the

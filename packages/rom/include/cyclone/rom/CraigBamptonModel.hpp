@@ -1,5 +1,5 @@
 #pragma once
-// The Craig-Bampton model of one harmonic index: the retained DOFs as the
+// The Craig-Bampton model of one nodal diameter: the retained DOFs as the
 // boundary and m fixed-interface modes (lowest m distinct natural frequencies
 // of the sector with the retained DOFs held; the two real-form copies of a pair
 // stay together). On [boundary u_b; modal coordinates q]

@@ -1,5 +1,5 @@
 #pragma once
-// Guyan's model (static condensation) of one harmonic index at the retained
+// Guyan's model (static condensation) of one nodal diameter at the retained
 // DOFs: K_g = K_bb - K_bi K_ii^{-1} K_ib and M_g = Psi^T M Psi from a
 // BoundaryReduction, and
 //   A(w) = ((1 + i eta) K_g - w^2 M_g)^{-1},

@@ -1,6 +1,6 @@
 #pragma once
 // The hybrid FRF model (Petrov, "A high-accuracy model reduction for analysis of nonlinear vibrations in structures with contact interfaces", J. Eng. Gas Turbines Power 2011; Scalvini 2021, eqs. 5.27-5.35) and plain modal
-// truncation at the retained DOFs of one harmonic index, with structural
+// truncation at the retained DOFs of one nodal diameter, with structural
 // damping (1 + i eta) K on every mode:
 //   truncation: A(w) = sum_j phi_j phi_j^T / ((1 + i eta) l_j - w^2)
 //   hybrid:     A(w) = A0 / (1 + i eta)

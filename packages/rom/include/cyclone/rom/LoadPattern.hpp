@@ -1,7 +1,7 @@
 #pragma once
 // A load on the sector that need not act at the retained DOFs (a distributed
 // load, a force at a node that is not retained): nodal forces in x, y, z per
-// real-form copy of the harmonic index. A reduced model carries the response
+// real-form copy of the nodal diameter. A reduced model carries the response
 // at its retained DOFs to such loads, x_r(w) = A_rf(w) f, as the excitation
 // part of Scalvini 2021, eqs. 5.27-5.35.
 #include <string>

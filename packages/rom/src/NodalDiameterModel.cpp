@@ -1,4 +1,4 @@
-#include "cyclone/rom/CyclicHarmonicModel.hpp"
+#include "cyclone/rom/NodalDiameterModel.hpp"
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -17,7 +17,7 @@
 
 namespace cyclone::rom {
 
-struct CyclicHarmonicModel::Impl {
+struct NodalDiameterModel::Impl {
   cyclic::NodalDiameterOperators op;
   RetainedDofSet dofs;
   double eta = 0;
@@ -44,15 +44,15 @@ struct CyclicHarmonicModel::Impl {
   }
 };
 
-CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
-                                         const HarmonicModelProblem& problem, linalg::CommPtr comm)
+NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
+                                         const NodalDiameterModelProblem& problem, linalg::CommPtr comm)
     : impl_(std::make_unique<Impl>()) {
   auto& I = *impl_;
   problem.material.validate("material");
   if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
   I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections);
   Timer timer;
-  I.op = cyclic::assembleNodalDiameterOperators(mesh, sector, problem.harmonic, problem.material, problem.fixedNodeSets,
+  I.op = cyclic::assembleNodalDiameterOperators(mesh, sector, problem.nodalDiameter, problem.material, problem.fixedNodeSets,
                                            problem.prestress.get(), comm);
   I.eta = problem.lossFactor;
   if (cyclic::travellingWavePaired(I.op.assembler->transform()))
@@ -81,8 +81,8 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
         if (f.node < 0 || f.node >= mesh.numNodes())
           throw InputError(where, "node index " + std::to_string(f.node) + " is not in the mesh");
         if (f.copy < 0 || f.copy >= I.op.copies)
-          throw InputError(where, "copy " + std::to_string(f.copy) + " at harmonic index " +
-                                      std::to_string(problem.harmonic) + " (it has " + std::to_string(I.op.copies) +
+          throw InputError(where, "copy " + std::to_string(f.copy) + " at nodal diameter " +
+                                      std::to_string(problem.nodalDiameter) + " (it has " + std::to_string(I.op.copies) +
                                       " real-form copies)");
         if (!f.force.allFinite()) throw InputError(where, "a force that is not a finite number");
         for (int d = 0; d < 3; ++d)
@@ -93,25 +93,25 @@ CyclicHarmonicModel::CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::C
     }
   }
   std::ostringstream msg;
-  msg << "harmonic model k = " << problem.harmonic << ": " << T.numEquations() << " equations, " << I.size()
+  msg << "nodal diameter model k = " << problem.nodalDiameter << ": " << T.numEquations() << " equations, " << I.size()
       << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes, " << I.op.copies
       << " copies), assembled in " << timer.seconds() << " s";
   log::info(msg.str());
 }
 
-CyclicHarmonicModel::~CyclicHarmonicModel() = default;
+NodalDiameterModel::~NodalDiameterModel() = default;
 
-int CyclicHarmonicModel::harmonic() const { return impl_->op.nodalDiameter; }
-int CyclicHarmonicModel::copies() const { return impl_->op.copies; }
-long long CyclicHarmonicModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
-double CyclicHarmonicModel::lossFactor() const { return impl_->eta; }
-const std::vector<mesh::Index>& CyclicHarmonicModel::retainedNodes() const { return impl_->dofs.nodes; }
-const RetainedDofSet& CyclicHarmonicModel::retainedDofs() const { return impl_->dofs; }
-Eigen::Index CyclicHarmonicModel::size() const { return impl_->size(); }
-const cyclic::NodalDiameterOperators& CyclicHarmonicModel::operators() const { return impl_->op; }
-const linalg::MultiVector& CyclicHarmonicModel::retainedLoads() const { return *impl_->G; }
+int NodalDiameterModel::nodalDiameter() const { return impl_->op.nodalDiameter; }
+int NodalDiameterModel::copies() const { return impl_->op.copies; }
+long long NodalDiameterModel::equations() const { return impl_->op.assembler->transform().numEquations(); }
+double NodalDiameterModel::lossFactor() const { return impl_->eta; }
+const std::vector<mesh::Index>& NodalDiameterModel::retainedNodes() const { return impl_->dofs.nodes; }
+const RetainedDofSet& NodalDiameterModel::retainedDofs() const { return impl_->dofs; }
+Eigen::Index NodalDiameterModel::size() const { return impl_->size(); }
+const cyclic::NodalDiameterOperators& NodalDiameterModel::operators() const { return impl_->op; }
+const linalg::MultiVector& NodalDiameterModel::retainedLoads() const { return *impl_->G; }
 
-Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
+Eigen::MatrixXcd NodalDiameterModel::compliance(double omega) const {
   const auto& I = *impl_;
   const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
   // Only copy a's loads are solved for. Copy b's are i times them, and i commutes with
@@ -130,7 +130,7 @@ Eigen::MatrixXcd CyclicHarmonicModel::compliance(double omega) const {
   return A;
 }
 
-std::vector<Eigen::Vector3cd> CyclicHarmonicModel::fieldResponse(double omega, const Eigen::VectorXcd& forces,
+std::vector<Eigen::Vector3cd> NodalDiameterModel::fieldResponse(double omega, const Eigen::VectorXcd& forces,
                                                                  int sign) const {
   const auto& I = *impl_;
   const auto nd = I.dofs.size();
@@ -164,11 +164,11 @@ std::vector<Eigen::Vector3cd> CyclicHarmonicModel::fieldResponse(double omega, c
   return u;
 }
 
-Eigen::Index CyclicHarmonicModel::numLoads() const {
+Eigen::Index NodalDiameterModel::numLoads() const {
   return impl_->F.is_null() ? 0 : Eigen::Index(impl_->F->getNumVectors());
 }
 
-Eigen::MatrixXcd CyclicHarmonicModel::loadResponse(double omega) const {
+Eigen::MatrixXcd NodalDiameterModel::loadResponse(double omega) const {
   const auto& I = *impl_;
   if (I.F.is_null()) return ComplianceModel::loadResponse(omega);  // the InputError
   const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
@@ -180,7 +180,7 @@ Eigen::MatrixXcd CyclicHarmonicModel::loadResponse(double omega) const {
   return X;
 }
 
-Eigen::MatrixXd CyclicHarmonicModel::zeroFrequencyCompliance() const {
+Eigen::MatrixXd NodalDiameterModel::zeroFrequencyCompliance() const {
   const auto& I = *impl_;
   std::unique_ptr<solvers::DirectSolver> solver;
   try {
@@ -195,7 +195,7 @@ Eigen::MatrixXd CyclicHarmonicModel::zeroFrequencyCompliance() const {
   return 0.5 * (A + A.transpose());
 }
 
-RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
+RetainedModes NodalDiameterModel::modes(int distinct, double shift) const {
   const auto& I = *impl_;
   if (distinct < 1) throw InputError("modes", "must be at least 1");
   Timer timer;
@@ -209,7 +209,7 @@ RetainedModes CyclicHarmonicModel::modes(int distinct, double shift) const {
   return out;
 }
 
-StaticCompliance CyclicHarmonicModel::staticCompliance(double omega0, const RetainedModes& modes) const {
+StaticCompliance NodalDiameterModel::staticCompliance(double omega0, const RetainedModes& modes) const {
   const auto& I = *impl_;
   if (modes.shapes.rows() != I.size() || modes.numModes() == 0)
     throw InputError("modes", "not computed with this model (" + std::to_string(modes.shapes.rows()) +

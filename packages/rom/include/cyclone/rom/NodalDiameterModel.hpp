@@ -1,5 +1,5 @@
 #pragma once
-// The full FE model of a cyclic sector at one harmonic index k, seen at
+// The full FE model of a cyclic sector at one nodal diameter k, seen at
 // retained DOFs (the nodes of some node sets, all 3 directions or chosen ones,
 // in the global frame or a given local one: RetainedDofs.hpp): the
 // real-form K_k (prestressed tangent when given) and M_k assembled as for the
@@ -31,9 +31,9 @@ struct NodalDiameterOperators;
 
 namespace cyclone::rom {
 
-struct HarmonicModelProblem {
+struct NodalDiameterModelProblem {
   fe::IsotropicElastic material;
-  int harmonic = 0;                             ///< k in 0..N/2
+  int nodalDiameter = 0;                        ///< k in 0..N/2
   std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
   std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
@@ -42,16 +42,16 @@ struct HarmonicModelProblem {
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
 };
 
-class CyclicHarmonicModel final : public ComplianceModel {
+class NodalDiameterModel final : public ComplianceModel {
 public:
   /// Assembles K_k, M_k. InputError for k outside 0..N/2, missing or empty retained sets.
-  CyclicHarmonicModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const HarmonicModelProblem& problem,
+  NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const NodalDiameterModelProblem& problem,
                       linalg::CommPtr comm);
-  ~CyclicHarmonicModel() override;
-  CyclicHarmonicModel(const CyclicHarmonicModel&) = delete;
-  CyclicHarmonicModel& operator=(const CyclicHarmonicModel&) = delete;
+  ~NodalDiameterModel() override;
+  NodalDiameterModel(const NodalDiameterModel&) = delete;
+  NodalDiameterModel& operator=(const NodalDiameterModel&) = delete;
 
-  int harmonic() const;
+  int nodalDiameter() const;
   int copies() const;
   long long equations() const;
   double lossFactor() const;

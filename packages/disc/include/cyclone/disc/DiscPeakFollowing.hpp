@@ -1,0 +1,49 @@
+#pragma once
+// The disc's resonance peak followed over a contact or excitation parameter: a peak
+// search per value (continuation::followPeaks) from the reference curve's prominent
+// peaks, down and up a grid from the reference value, instead of a frequency curve per
+// value. The shroud contacts' Jacobian jumps where a stick-slip instant crosses a time
+// sample, and the peak condition's arclength tracking creeps there (docs/decisions.md):
+// a fixed-frequency Newton passes those corners.
+#include <vector>
+
+#include "cyclone/continuation/PeakFollowing.hpp"
+#include "cyclone/disc/DiscParameterStudy.hpp"
+
+namespace cyclone::disc {
+
+struct DiscPeakFollowingSpec {
+  /// Preload, FrictionCoefficient or Force (InputError for another).
+  DiscStudyParameter parameter = DiscStudyParameter::Preload;
+  double from = 0, to = 0;  ///< 0 < from < to, containing the spec's value (1 for Force)
+  int values = 24;          ///< evenly in log over the range (3..400)
+  /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
+  std::vector<double> extraValues;
+};
+
+struct DiscPeakFollowing {
+  continuation::FollowedPeakCurve curve;  ///< in parameter order; the optimum by merit()
+  std::vector<double> grid;               ///< the values followed
+  double referenceValue = 0;              ///< the spec's value, where the following starts
+  std::size_t startingPeaks = 0;          ///< the reference curve's prominent peaks followed
+  response::ForcedResponseSetup setup;    ///< the system followed (at the last value followed)
+  /// Over the force the peak grows with it: the optimum is the smallest peak per unit
+  /// force (the most friction damping); otherwise the smallest peak.
+  bool byForce = false;
+  double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
+};
+
+/// The spec's value of `parameter` (preload, mu; 1 for Force: a scale of the excitation).
+double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter parameter);
+
+/// The reference curve's peak followed over `following`: the system is spec's over
+/// `models`, with reference's outputs and continuation tolerance; each peak searched to
+/// 1e-7 of its frequency, a band sweep over bandFromHz..bandToHz where a followed peak
+/// vanishes. InputError for a range or value count out of bounds; SolverError when the
+/// reference curve has no peak or nothing could be followed.
+DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscResponseSpec& spec,
+                                 const response::ForcedResponseSetup& reference,
+                                 const response::ForcedResponseResult& referenceCurve, double bandFromHz,
+                                 double bandToHz, const DiscPeakFollowingSpec& following);
+
+}  // namespace cyclone::disc

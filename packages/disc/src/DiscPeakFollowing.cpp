@@ -1,0 +1,120 @@
+#include "cyclone/disc/DiscPeakFollowing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/core/Log.hpp"
+#include "cyclone/core/Timer.hpp"
+
+namespace cyclone::disc {
+
+namespace {
+
+// The grid: n values evenly in log over the range, with the reference value and the
+// extra values inside it, sorted, without repeats.
+std::vector<double> followedValues(double from, double to, int n, double reference, const std::vector<double>& extra) {
+  auto v = continuation::logarithmicValues(from, to, n);
+  v.push_back(reference);
+  for (double x : extra)
+    if (x >= from && x <= to) v.push_back(x);
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end(), [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }),
+          v.end());
+  return v;
+}
+
+// From the reference value down and up the grid, joined in parameter order; the
+// optimum by the result's merit over the whole.
+void followBothWays(const continuation::PeakTrackingProblem& problem,
+                    const std::vector<continuation::PeakStart>& starts, continuation::PeakFollowingOptions o,
+                    DiscPeakFollowing& out) {
+  Timer timer;
+  continuation::FollowedPeakCurve& whole = out.curve;
+  std::vector<double> up, down;
+  for (double v : out.grid) (v >= out.referenceValue ? up : down).push_back(v);
+  std::reverse(down.begin(), down.end());
+  if (up.front() != out.referenceValue) up.insert(up.begin(), out.referenceValue);
+  down.insert(down.begin(), out.referenceValue);
+  for (const auto* part : {&down, &up}) {
+    if (part->size() < 2) continue;
+    o.parameters = *part;
+    const auto c = continuation::followPeaks(problem, starts, o);
+    whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
+    if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
+    auto points = c.points;
+    if (part == &down) std::reverse(points.begin(), points.end());
+    if (part == &up && !whole.points.empty()) points.erase(points.begin());  // the reference, already there
+    whole.points.insert(whole.points.end(), points.begin(), points.end());
+    if (c.optimumLocated) whole.optimumLocated = true;
+  }
+  whole.seconds = timer.seconds();
+  whole.complete = whole.stopReason.empty();
+  for (std::size_t i = 0; i < whole.points.size(); ++i)
+    if (whole.optimum < 0 || out.merit(whole.points[i]) < out.merit(whole.points[std::size_t(whole.optimum)]))
+      whole.optimum = int(i);
+}
+
+}  // namespace
+
+double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter parameter) {
+  switch (parameter) {
+    case DiscStudyParameter::Preload: return spec.contact.preload;
+    case DiscStudyParameter::FrictionCoefficient: return spec.contact.mu;
+    case DiscStudyParameter::Force: return 1.0;
+    default:
+      throw InputError("peak following", "follows the preload, mu or force, not " + discStudyParameterName(parameter));
+  }
+}
+
+DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscResponseSpec& spec,
+                                 const response::ForcedResponseSetup& reference,
+                                 const response::ForcedResponseResult& referenceCurve, double bandFromHz,
+                                 double bandToHz, const DiscPeakFollowingSpec& following) {
+  const std::string name = discStudyParameterName(following.parameter);
+  DiscPeakFollowing out;
+  out.referenceValue = discReferenceValue(spec, following.parameter);
+  if (!(following.from > 0 && following.to > following.from))
+    throw InputError("peak following/" + name, "needs a range 0 < from < to");
+  if (!(out.referenceValue >= following.from && out.referenceValue <= following.to))
+    throw InputError("peak following/" + name, "the range must contain the scene's value " +
+                                                   std::to_string(out.referenceValue));
+  if (following.values < 3 || following.values > 400)
+    throw InputError("peak following/" + name, "values must lie in 3..400");
+  if (referenceCurve.branch.points.empty())
+    throw SolverError("peak following/" + name + ": the reference curve has no point to start from");
+
+  out.setup = makeDiscForcedResponse(mesh, models, spec);
+  auto& setup = out.setup;
+  setup.outputDofs = reference.outputDofs;
+  out.byForce = following.parameter == DiscStudyParameter::Force;
+  if (out.byForce)
+    setup.parameter = response::ForcedResponseSetup::Parameter::ForceScale;
+  else
+    response::selectElementParameter(setup, "contact", name, out.referenceValue);
+  const auto problem = response::peakFollowingProblem(setup);
+  // Every peak of the reference curve that stands out (5 %), so one that overtakes the
+  // largest is seen; its frequencies from the curve's parameter (omega / omegaUnit).
+  auto starts = continuation::prominentPeaks(referenceCurve.branch, problem.measure);
+  if (starts.empty()) throw SolverError("peak following/" + name + ": the reference curve has no peak");
+  for (auto& st : starts) st.frequency *= reference.omegaUnit;
+  out.startingPeaks = starts.size();
+  const double w0 = starts.front().frequency;
+  continuation::PeakFollowingOptions o;
+  o.search.step = 5e-4 * w0, o.search.maxStep = 5e-3 * w0, o.search.window = 0.15 * w0;
+  o.search.parameterTolerance = 1e-7 * w0, o.search.tolerance = reference.continuation.tolerance;
+  o.bandFrom = 2 * M_PI * bandFromHz, o.bandTo = 2 * M_PI * bandToHz;
+  o.sweep = reference.continuation;
+  o.sweep.checkpoints = nullptr;
+  o.locateOptimum = !out.byForce;  // over the force, the grid's
+  out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues);
+  log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
+            "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
+            " Hz");
+  followBothWays(problem, starts, o, out);
+  if (out.curve.points.empty()) throw SolverError("peak following/" + name + ": " + out.curve.stopReason);
+  return out;
+}
+
+}  // namespace cyclone::disc
