@@ -31,96 +31,6 @@ namespace cyclone::scenes {
 
 namespace {
 
-Eigen::Vector3d toEigen(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-
-DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSectors, std::string& cache) {
-  DiscModelSpec spec;
-  spec.material = readMaterial(scene.section("material"));
-  {
-    auto c = scene.section("constraints");
-    spec.fixedNodeSets = c.getStringList("fixed_node_sets", {});
-    c.rejectUnknownKeys();
-    if (spec.fixedNodeSets.empty())
-      throw InputError(scene.where("constraints/fixed_node_sets"), "a disc response needs the disc held (e.g. [bore])");
-  }
-  {
-    auto cy = scene.section("cyclic");
-    spec.sectors = cy.getInt("sectors", builtInSectors);
-    if (spec.sectors < 2) throw InputError(cy.where("sectors"), "is required (>= 2) for a mesh read from a file");
-    spec.axis = readRotationAxis(cy);
-    // The reduced models are cantilevered: the disc's faces cyclic, the shroud's free
-    // (configuration and the shroud's faces are the modal analysis's).
-    const auto faces = readCyclicFaces(cy);
-    spec.leftSets = faces.discLeft, spec.rightSets = faces.discRight;
-    const auto analyses = scene.getStringList("analysis", {});
-    if (std::find(analyses.begin(), analyses.end(), "modal") == analyses.end())
-      for (const char* key : {"configuration", "shroud_left_node_sets", "shroud_right_node_sets"})
-        if (cy.has(key))
-          log::warn(cy.where(key) + " is the modal analysis's (the reduced models are cantilevered: the disc's "
-                                    "faces cyclic, the shroud's free for the contacts); this scene has none, so it is "
-                                    "not used");
-    cy.rejectUnknownKeys();
-  }
-  double loadsRpm = 0;
-  {
-    auto l = scene.section("loads");
-    loadsRpm = l.getDouble("speed_rpm", 0.0);
-  }
-  spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
-  spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
-  spec.modes = r.getInt("modes", spec.modes);
-  spec.omega0 = r.getDouble("omega0", spec.omega0);
-  spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
-  if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
-  spec.rpm = r.getDouble("speed_rpm", loadsRpm);
-  if (!(spec.rpm >= 0)) throw InputError(r.where("speed_rpm"), "must be >= 0");
-  spec.prestress = readPrestressKind(r, "nonlinear");
-  cache = r.getString("cache", "reuse");
-  if (cache != "reuse" && cache != "rebuild" && cache != "off")
-    throw InputError(r.where("cache"), "use reuse (read a model whose inputs match), rebuild or off");
-  return spec;
-}
-
-DiscResponseSpec readResponseSpec(SceneSection& d) {
-  DiscResponseSpec spec;
-  spec.engineOrder = d.getInt("engine_order", 0);
-  if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
-  spec.harmonics = readHarmonicList(d, 3);
-  spec.samples = d.getInt("samples", 0);
-  if (spec.samples < 0 || spec.samples > kMaxSamples)
-    throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in 1.." +
-                                             std::to_string(kMaxSamples) + " time samples per period (leave it out "
-                                             "for the automatic count)");
-  auto c = d.section("contact");
-  auto& ct = spec.contact;
-  ct.leftSet = c.getString("left_node_set", ct.leftSet);
-  ct.rightSet = c.getString("right_node_set", ct.rightSet);
-  ct.kn = c.getDouble("kn", ct.kn);
-  ct.kt = c.getDouble("kt", ct.kt);
-  ct.mu = c.getDouble("mu", ct.mu);
-  ct.preload = c.getDouble("preload", ct.preload);
-  if (c.has("normal") != c.has("tangent"))
-    throw InputError(c.location(), "give both normal and tangent (the contact frame), or neither");
-  if (c.has("normal")) ct.normal = toEigen(c.getVector3("normal", {0, 0, 0}));
-  if (c.has("tangent")) ct.tangent = toEigen(c.getVector3("tangent", {0, 0, 0}));
-  c.rejectUnknownKeys();
-  if (d.has("gap")) {
-    auto g = d.section("gap");
-    spec.gap.pairs = g.getIntList("pairs", {});
-    if (spec.gap.pairs.empty()) throw InputError(g.where("pairs"), "needs the contact pairs that are gap elements");
-    spec.gap.kn = g.getDouble("kn", spec.gap.kn);
-    spec.gap.clearance = g.getDouble("clearance", spec.gap.clearance);
-    g.rejectUnknownKeys();
-  }
-  auto e = d.section("excitation");
-  spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
-  spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));
-  spec.excitation.amplitude = e.getDouble("amplitude", spec.excitation.amplitude);
-  e.rejectUnknownKeys();
-  spec.responseNodeSets = d.getStringList("response_node_sets", spec.responseNodeSets);
-  return spec;
-}
-
 // One curve of a study: frequency (Hz) and max |x(t)| of the first output DOF per point.
 // A study value that reproduces the reference scene: disc_frc's files under the study's name.
 void copyReferenceCurve(const std::string& outDir, const std::string& tag, const std::string& what,
@@ -253,82 +163,6 @@ void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& po
   }
   for (const char* f : {"disc_hysteresis.csv", "disc_hysteresis.svg", "disc_time_response.csv", "disc_time_response.svg"})
     summary.written.push_back(outDir + "/" + f);
-}
-
-// disc_response's keys for the curve: family, frequency_range_hz, stability and the
-// continuation section (the disc's own defaults, discContinuationOptions, then the
-// scene's keys; an engine the scene names is used alone, by default the other one
-// retraces a curve the first leaves incomplete).
-disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
-                                        const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
-  disc::DiscSweepOptions sweep;
-  sweep.family = d.getInt("family", 1);
-  const auto range = d.getDoubleList("frequency_range_hz", {});
-  if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
-    throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
-  if (!range.empty()) sweep.fromHz = range[0], sweep.toHz = range[1];
-  sweep.stability = readStability(d);
-  sweep.harmonicsCheckTo = harmonicsCheckTo;
-  auto cs = d.section("continuation");
-  using Engine = continuation::ContinuationOptions::Engine;
-  sweep.continuation = disc::discContinuationOptions(
-      cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca : Engine::PredictorCorrector);
-  if (cs.has("engine")) sweep.fallback.reset();
-  readContinuationSteps(cs, sweep.continuation, "predictor_corrector");
-  sweep.continuation.tolerance = cs.getDouble("tolerance", sweep.continuation.tolerance);
-  cs.rejectUnknownKeys();
-  sweep.continuation.checkpoints = checkpoints;
-  if (sweep.fallback) sweep.fallback->checkpoints = checkpoints;
-  return sweep;
-}
-
-// What a disc scene asks for, read and checked before any FE work.
-struct DiscPlan {
-  DiscModelSpec modelSpec;   ///< with the check of the engine order's nodal diameter
-  std::string cacheDir;      ///< empty: nothing cached
-  std::vector<int> nds;      ///< the nodal diameters the models are built for
-  DiscResponseSpec spec;
-  int harmonicsCheckTo = 0;
-  PeakStressSpec peakStress;
-  std::vector<PeakStudySpec> peakStudies;
-};
-
-DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
-                      int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm) {
-  DiscPlan plan;
-  std::string cache;
-  plan.modelSpec = readModelSpec(scene, r, builtInSectors, cache);
-  const int sectors = plan.modelSpec.sectors;
-  auto& spec = plan.spec;
-  if (forcedResponse) {
-    spec = readResponseSpec(d);
-    plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec);
-    plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
-    const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
-    plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
-    if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {
-      // Also the nodal diameters of the harmonics the curve's harmonics check adds.
-      auto checked = spec.harmonics;
-      for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, plan.harmonicsCheckTo); ++h) checked.push_back(h);
-      plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, checked);
-      plan.modelSpec.checkNodalDiameter = disc::nodalDiametersFor(sectors, spec.engineOrder, {1}).front();
-    } else {  // engine-order errors before any FE work
-      DiscReducedModels none;
-      none.sectors = sectors;
-      disc::makeDiscForcedResponse(mesh, none, spec);  // throws the explained InputError
-    }
-    if (r.has("nodal_diameters"))
-      throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
-  } else {
-    plan.nds = r.getIntList("nodal_diameters", {});
-    if (plan.nds.empty())
-      throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
-  }
-  plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
-  plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
-  if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(plan.cacheDir);
-  r.rejectUnknownKeys();
-  return plan;
 }
 
 // The reduced models per nodal diameter (cached), their check against the full FE
@@ -489,18 +323,6 @@ int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, 
   summary.written.push_back(outDir + "/study_" + name + ".svg");
   summary.written.push_back(outDir + "/study_" + name + ".csv");
   return index;
-}
-
-// disc_response/hysteresis_contacts, checked against the contact pairs (one element per pair).
-std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec) {
-  const std::vector<int> contacts = d.getIntList("hysteresis_contacts", {});
-  const int count = int(mesh.nodeSet(spec.contact.rightSet).size());
-  for (int e : contacts)
-    if (e < 0 || e >= count)
-      throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
-                                                           std::to_string(count) +
-                                                           " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
-  return contacts;
 }
 
 }  // namespace

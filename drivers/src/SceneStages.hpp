@@ -12,6 +12,7 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
+#include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscPeakVibration.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
@@ -143,6 +144,35 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
                      const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
                      const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
                      linalg::CommPtr comm, SceneSummary& summary);
+
+/// "peak memory after <stage>: ..." for the log (rank 0's, and the sum over the ranks).
+void logPeakMemory(const std::string& stage, const linalg::CommPtr& comm);
+
+/// The modal stage: the prestressed modes of every nodal diameter at each speed of
+/// modal/speeds_rpm, their Exodus files, frequencies.csv, MAC between speeds, and the
+/// Campbell and SAFE diagrams.
+void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir,
+                linalg::CommPtr comm, SceneSummary& summary);
+
+// What a disc scene asks for, read and checked before any FE work.
+struct DiscPlan {
+  DiscModelSpec modelSpec;   ///< with the check of the engine order's nodal diameter
+  std::string cacheDir;      ///< empty: nothing cached
+  std::vector<int> nds;      ///< the nodal diameters the models are built for
+  DiscResponseSpec spec;
+  int harmonicsCheckTo = 0;
+  PeakStressSpec peakStress;
+  std::vector<PeakStudySpec> peakStudies;
+};
+
+/// Reads and checks a disc scene's reduced_model and disc_response sections (r, d).
+DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
+                      int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm);
+/// disc_response's sweep keys (family, range, stability, continuation) with the check's top H.
+disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
+                                        const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
+/// disc_response/hysteresis_contacts: the contact pairs whose loops are written.
+std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec);
 
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.

@@ -1,0 +1,100 @@
+// Readers shared by the scene stages: the rotation axis, prestress kind, harmonic
+// list, stability, harmonics check, cyclic faces and material of a scene section.
+#include <string>
+#include <vector>
+
+#include "SceneStages.hpp"
+#include "cyclone/core/Error.hpp"
+#include "cyclone/scenes/SceneSection.hpp"
+
+namespace cyclone::scenes {
+
+mesh::RotationAxis readRotationAxis(SceneSection& section) {
+  const auto p = section.getVector3("axis_point", {0, 0, 0}), d = section.getVector3("axis_direction", {0, 0, 1});
+  mesh::RotationAxis axis{Eigen::Vector3d(p[0], p[1], p[2]), Eigen::Vector3d(d[0], d[1], d[2])};
+  if (!(axis.direction.norm() > 0)) throw InputError(section.where("axis_direction"), "must not be zero");
+  return axis;
+}
+
+cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback) {
+  const std::string value = section.getString("prestress", fallback);
+  if (value == "linear") return cyclic::PrestressKind::Linear;
+  if (value == "nonlinear") return cyclic::PrestressKind::Nonlinear;
+  if (value == "none") return cyclic::PrestressKind::None;
+  throw InputError(section.where("prestress"), "unknown prestress '" + value + "' (use linear, nonlinear or none)");
+}
+
+std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
+  std::vector<int> list = section.getIntList("harmonics", {defaultMax});
+  if (list.size() == 1) {  // a single number H means 0..H
+    const int H = list[0];
+    if (H < 1) throw InputError(section.where("harmonics"), "needs at least harmonic 1 (a single number H means 0..H)");
+    list.clear();
+    for (int h = 0; h <= H; ++h) list.push_back(h);
+  }
+  return list;
+}
+
+response::ForcedResponseSetup::Stability readStability(SceneSection& section) {
+  using Stability = response::ForcedResponseSetup::Stability;
+  const std::string value = section.getString("stability", "auto");
+  if (value == "auto") return Stability::Auto;
+  if (value == "true") return Stability::Always;
+  if (value == "false") return Stability::Never;
+  throw InputError(section.where("stability"), "must be auto, true or false");
+}
+
+int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic) {
+  const int upTo = section.getInt("harmonics_check_to", 0);
+  if (section.has("harmonics_check_to") && upTo <= maxHarmonic)
+    throw InputError(section.where("harmonics_check_to"),
+                     "must exceed the curve's highest harmonic " + std::to_string(maxHarmonic) + ", got " +
+                         std::to_string(upTo) + " (the check raises H from there)");
+  return upTo;
+}
+
+std::vector<std::string> CyclicFaces::left() const {
+  auto faces = discLeft;
+  if (shroudCyclic) faces.insert(faces.end(), shroudLeft.begin(), shroudLeft.end());
+  return faces;
+}
+
+std::vector<std::string> CyclicFaces::right() const {
+  auto faces = discRight;
+  if (shroudCyclic) faces.insert(faces.end(), shroudRight.begin(), shroudRight.end());
+  return faces;
+}
+
+CyclicFaces readCyclicFaces(SceneSection& cy) {
+  CyclicFaces f;
+  const std::string configuration = cy.getString("configuration", "fixed_shroud");
+  if (configuration != "fixed_shroud" && configuration != "cantilever")
+    throw InputError(cy.where("configuration"), "unknown configuration '" + configuration +
+                                                    "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc "
+                                                    "faces only)");
+  f.shroudCyclic = configuration == "fixed_shroud";
+  f.discLeft = cy.getStringList("disc_left_node_sets", f.discLeft);
+  f.discRight = cy.getStringList("disc_right_node_sets", f.discRight);
+  f.shroudLeft = cy.getStringList("shroud_left_node_sets", f.shroudLeft);
+  f.shroudRight = cy.getStringList("shroud_right_node_sets", f.shroudRight);
+  if (f.discLeft.empty() || f.discLeft.size() != f.discRight.size())
+    throw InputError(cy.where("disc_right_node_sets"), "the disc's left and right side faces need as many sets each "
+                                                       "(at least one): right = left rotated by +360/N degrees");
+  if (f.shroudLeft.size() != f.shroudRight.size())
+    throw InputError(cy.where("shroud_right_node_sets"), "the shroud's left and right side faces need as many sets each");
+  return f;
+}
+
+fe::IsotropicElastic readMaterial(SceneSection m) {
+  fe::IsotropicElastic material;
+  material.name = m.getString("name", material.name);
+  material.E = m.getDouble("E", material.E);
+  material.nu = m.getDouble("nu", material.nu);
+  material.rho = m.getDouble("rho", material.rho);
+  if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readFatigueMaterial)
+  m.rejectUnknownKeys();
+  material.validate(m.location());
+  return material;
+}
+
+}  // namespace cyclone::scenes
