@@ -96,7 +96,10 @@ const ProjectedReceptance::Projected& ProjectedReceptance::projected(long p) con
   auto it = projected_.find(p);
   if (it != projected_.end()) return it->second;
   Projected out;
-  if (auto r = modalRealization(p); r && r->numModes() > 0) {
+  auto r = projectedRealization(p);
+  out.hasRealization = r.has_value();
+  if (r && r->numModes() == 0) out.r = std::move(*r);
+  if (r && r->numModes() > 0) {
     // The check at two frequencies between the modes (not on one: a pole there says nothing).
     const double top = std::sqrt(r->eigenvalues.cwiseAbs().maxCoeff());
     out.usable = true;
@@ -132,6 +135,12 @@ Eigen::MatrixXd ProjectedReceptance::meanCompliance() const {
 }
 
 std::optional<ModalRealization> ProjectedReceptance::modalRealization(long p) const {
+  const Projected& pr = projected(p);
+  if (!pr.hasRealization) return std::nullopt;
+  return pr.r;
+}
+
+std::optional<ModalRealization> ProjectedReceptance::projectedRealization(long p) const {
   auto r = base_->modalRealization(p);
   if (!r) return r;
   const Eigen::MatrixXcd Tp = transform(p);

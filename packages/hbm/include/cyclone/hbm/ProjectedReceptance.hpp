@@ -31,7 +31,8 @@ public:
   bool usesWoodbury(long phaseIndex) const { return projected(phaseIndex).woodbury; }
   /// T_0 A_mean T_0^T, T_0 = T + T_next (the mean motion is the same in every sector).
   Eigen::MatrixXd meanCompliance() const override;
-  /// The base model's realization projected: R' = T_p R T_p^H, U' = T_p U, V' = conj(T_p) V.
+  /// The base model's realization projected: R' = T_p R T_p^H, U' = T_p U, V' = conj(T_p) V
+  /// (computed once per phase: Hill's method asks for it at every point).
   std::optional<ModalRealization> modalRealization(long phaseIndex) const override;
   /// T_p (q rows by the base model's DOFs).
   Eigen::MatrixXcd transform(long phaseIndex) const;
@@ -45,12 +46,14 @@ private:
   //   (R / s + U D V^T)^-1 = s R^-1 - s^2 G (D^-1 + s K)^-1 Hv,  s = 1 + i eta,
   // G = R^-1 U, Hv = V^T R^-1, K = V^T R^-1 U (checked once against the plain inverse).
   struct Projected {
+    bool hasRealization = false;  // the base model has one (then r is its projection)
     bool usable = false;
     ModalRealization r;
     bool woodbury = false;
     Eigen::MatrixXcd Rinv, G, Hv, K;
   };
   const Projected& projected(long phaseIndex) const;
+  std::optional<ModalRealization> projectedRealization(long phaseIndex) const;
   Eigen::MatrixXcd projectedDirectly(double frequency, long phaseIndex) const;
   std::shared_ptr<const ReceptanceModel> base_;
   Eigen::MatrixXd T_, Tnext_;
