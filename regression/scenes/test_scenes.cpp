@@ -180,20 +180,10 @@ DemoRun demoProducts() {
   return run;
 }
 
-TEST(Scenes, DemoSceneWritesSaneProducts) {
-  log::setQuiet(true);
-  const auto run = demoProducts();
-  const auto& dir = run.dir;
-  const auto& summary = run.summary;
-  ASSERT_FALSE(summary.written.empty()) << "no files listed for the demo in " << dir;
-  ASSERT_FALSE(summary.computed.empty()) << "no summary for the demo in " << dir;
-  for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
-  for (const char* f : {"mesh.exo", "mesh.inp", "static.exo", "frequencies.csv", "modes_10000rpm.exo",
-                        "campbell.svg", "safe.svg", "resonances.csv", "rom_check.svg", "disc_frc.csv",
-                        "disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
-                        "disc_time_response.svg", "study_preload.svg", "study_preload.csv", "report.md",
-                        "disc_frc_harmonics.csv", "peak_preload.csv", "peak_preload.svg"})
-    EXPECT_TRUE(fs::exists(dir / f)) << f;
+namespace {
+
+// The demo's checks, one product each (DemoSceneWritesSaneProducts runs them in turn).
+void checkFollowedPeaks(const fs::path& dir) {
   // The peak followed over the preload (peak_studies): at the value-list study's
   // preloads it meets the peaks of the frequency curves traced there, to what those
   // curves resolve of their flat, friction-damped tops: at 50 N the curve steps 1.35 Hz
@@ -242,6 +232,9 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     }
     EXPECT_GE(compared, 3);
   }
+}
+
+void checkReportSections(const fs::path& dir) {
   {
     std::ifstream report(dir / "report.md");
     const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
@@ -251,6 +244,9 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
                                 "### preload: the peak followed", "![peak_preload](peak_preload.svg)"})
       EXPECT_NE(text.find(section), std::string::npos) << section;
   }
+}
+
+void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
   // The harmonics check's peaks (harmonics_check_to: 5): the H = 1 level, found by the
   // search from the curve's largest point, lies at or just above that point (the curve
   // samples the continuous peak); the levels above are there, found or with a reason.
@@ -327,8 +323,10 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     else
       EXPECT_EQ(headline.find("was tried"), std::string::npos) << headline;
   }
+}
+
+void checkContactEnergies(const fs::path& dir, std::map<int, double>& energies) {
   // Friction dissipates: every contact's energy per cycle at the peak is >= 0, some > 0.
-  std::map<int, double> energies;
   {
     std::ifstream csv(dir / "disc_frc_contacts.csv");
     std::string line;
@@ -343,6 +341,9 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     }
     EXPECT_GT(total, 0.0);
   }
+}
+
+void checkHysteresisLoop(const fs::path& dir, const std::map<int, double>& energies) {
   // The hysteresis loop of the contact dissipating most (the default choice):
   // every sample obeys Coulomb's law |f_t| <= mu f_n (mu = 0.4 in the demo),
   // and the loop's area (trapezoidal rule over the samples) is the energy per
@@ -373,10 +374,12 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     EXPECT_NEAR(area, largest, 0.02 * largest);
   }
 
+}
+
+void checkPeakStress(const fs::path& dir, const scenes::SceneSummary& summary, double& safetyFactor) {
   // The sector's vibration at the peak: the full FE field at the retained DOFs against the
   // harmonic balance solution (the reduced model's error); the headline's safety factor is
   // the worst node's, and the Goodman closed form of its own mean and alternating stress.
-  {
     for (const char* f : {"disc_peak_response.exo", "disc_peak_vibration.exo", "disc_peak_stress.csv", "disc_goodman.svg"})
       EXPECT_TRUE(fs::exists(dir / f)) << f;
     double fieldError = -1;
@@ -410,6 +413,10 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     const auto sf = headline.find("safety factor ");
     ASSERT_NE(sf, std::string::npos);
     EXPECT_NEAR(std::stod(headline.substr(sf + 14)), factor, 1e-3 * factor);
+    safetyFactor = factor;
+}
+
+void checkPeakAnimation(const fs::path& dir) {
     // The animation's first step (t = 0) is the sum of the harmonics' real parts.
     const auto fields = mesh::readExodusResults((dir / "disc_peak_response.exo").string());
     const auto period = mesh::readExodusResults((dir / "disc_peak_vibration.exo").string());
@@ -428,6 +435,9 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
     }
     EXPECT_LT(worst, 1e-12 + 1e-12 * largest);
     EXPECT_GT(largest, 0.0);
+}
+
+void checkExodusWithMeshio(const fs::path& dir, double factor) {
     // A reader other than ours opens both files and sees the fields (python3-meshio, Debian).
     const std::string script =
         "import meshio, sys\n"
@@ -449,8 +459,9 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
         << (dir / "disc_peak_vibration.exo") << " " << factor;
     EXPECT_EQ(std::system(cmd.str().c_str()), 0) << cmd.str();
     fs::remove(dir / "check_exodus.py");
-  }
+}
 
+void checkStaticProducts(const fs::path& dir) {
   const auto mesh = mesh::readExodus((dir / "static.exo").string());
   const auto results = mesh::readExodusResults((dir / "static.exo").string());
   ASSERT_EQ(results.steps.size(), 1u);
@@ -469,6 +480,41 @@ TEST(Scenes, DemoSceneWritesSaneProducts) {
   // No temporary files left behind.
   for (const auto& entry : fs::directory_iterator(dir))
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+}  // namespace
+
+TEST(Scenes, DemoSceneWritesSaneProducts) {
+  log::setQuiet(true);
+  const auto run = demoProducts();
+  const auto& dir = run.dir;
+  const auto& summary = run.summary;
+  ASSERT_FALSE(summary.written.empty()) << "no files listed for the demo in " << dir;
+  ASSERT_FALSE(summary.computed.empty()) << "no summary for the demo in " << dir;
+  for (const auto& p : summary.written) EXPECT_TRUE(fs::exists(p)) << p;
+  for (const char* f : {"mesh.exo", "mesh.inp", "static.exo", "frequencies.csv", "modes_10000rpm.exo",
+                        "campbell.svg", "safe.svg", "resonances.csv", "rom_check.svg", "disc_frc.csv",
+                        "disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
+                        "disc_time_response.svg", "study_preload.svg", "study_preload.csv", "report.md",
+                        "disc_frc_harmonics.csv", "peak_preload.csv", "peak_preload.svg"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  checkFollowedPeaks(dir);
+  if (HasFatalFailure()) return;
+  checkReportSections(dir);
+  checkHarmonicsLevelsAndHeadline(dir);
+  if (HasFatalFailure()) return;
+  std::map<int, double> energies;
+  checkContactEnergies(dir, energies);
+  if (HasFatalFailure()) return;
+  checkHysteresisLoop(dir, energies);
+  if (HasFatalFailure()) return;
+  double factor = 0;
+  checkPeakStress(dir, summary, factor);
+  if (HasFatalFailure()) return;
+  checkPeakAnimation(dir);
+  if (HasFatalFailure()) return;
+  checkExodusWithMeshio(dir, factor);
+  checkStaticProducts(dir);
 }
 
 // A small 8-sector disc (thin ring) with the bore held.
@@ -1331,8 +1377,15 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                 dir);
   EXPECT_NE(msg.find("continuation/max_step"), std::string::npos) << msg;
   EXPECT_NE(msg.find("at least min_step"), std::string::npos) << msg;
-  // Friction and cyclic keys: the element's parameter, W_next without a ring,
-  // a cyclic system without (or with two different) engine orders.
+  EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+}
+
+// Friction and cyclic keys: the element's parameter, W_next without a ring, a cyclic
+// system without (or with two different) engine orders, a harmonics check below H.
+TEST(Scenes, ForcedResponseBadElementAndCyclicKeysAreNamed) {
+  const auto dir = freshDir("frcbad2");
+  const std::string base = "cyclone:\n  analysis: forced_response\n  system:\n    dofs: 2\n";
+  std::string msg;
   const std::string mk = "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n";
   const std::string force = "  excitation:\n    f:\n      dof: 0\n      cos: 1.0\n";
   msg = failure(base + mk + "  nonlinear_elements:\n    c:\n      type: friction2d\n      W: [1.0, 0.0, 0.0, 1.0]\n"
