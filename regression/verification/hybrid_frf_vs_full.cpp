@@ -38,6 +38,50 @@ std::vector<double> band(const rom::RetainedModes& modes, int families) {
 
 }  // namespace
 
+namespace {
+
+// The expansion point: at zero frequency (what the mean harmonic of a harmonic balance
+// sees) the hybrid model with A0 at sigma = 0 is exact; inside the band an indefinite
+// factorization; on a natural frequency a clear error.
+void checkExpansionPoints(const rom::NodalDiameterModel& full, const rom::RetainedModes& allModes,
+                          const rom::StaticCompliance& A0, const std::vector<double>& w,
+                          const std::vector<Eigen::MatrixXcd>& reference) {
+  // Zero frequency without damping (what the mean harmonic of a harmonic balance sees):
+  // with A0 at sigma = 0 the hybrid model is exact there whatever the modes kept.
+  const Eigen::MatrixXd Az = full.zeroFrequencyCompliance();
+  const double ez = (rom::HybridFrfModel(allModes.first(5), A0, kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
+  const double ezt =
+      (rom::HybridFrfModel::modalTruncation(allModes.first(5), kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
+  std::printf("zero frequency, 5 modes: hybrid %.3e, truncation %.3e\n", ez, ezt);
+  EXPECT_LT(ez, 1e-10);
+  EXPECT_GT(ezt, 1e-3);
+
+  // Expansion point inside the band (between families 2 and 3): an indefinite factorization.
+  const double w0 = 0.5 * (std::sqrt(allModes.eigenvalues[2]) + std::sqrt(allModes.eigenvalues[4]));
+  const auto A0mid = full.staticCompliance(w0, allModes);
+  const rom::HybridFrfModel mid(allModes.first(20), A0mid, kEta);
+  double emid = 0;
+  for (std::size_t i = 0; i < w.size(); ++i) emid = std::max(emid, relativeError(mid.compliance(w[i]), reference[i]));
+  const rom::HybridFrfModel zero(allModes.first(20), A0, kEta);
+  double ezero = 0;
+  for (std::size_t i = 0; i < w.size(); ++i)
+    ezero = std::max(ezero, relativeError(zero.compliance(w[i]), reference[i]));
+  std::printf("20 modes, w0 = %.1f Hz (in the band): %.3e (w0 = 0: %.3e)\n", w0 / (2 * M_PI), emid, ezero);
+  EXPECT_LT(emid, ezero);
+
+  // w0 on a natural frequency: a clear error naming it.
+  const double w3 = std::sqrt(allModes.eigenvalues[4]);
+  try {
+    full.staticCompliance(w3 * (1 + 1e-5), allModes);
+    ADD_FAILURE() << "w0 on natural frequency 5 was accepted";
+  } catch (const InputError& e) {
+    std::printf("w0 on a natural frequency: %s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("natural frequency"), std::string::npos);
+  }
+}
+
+}  // namespace
+
 TEST(HybridFrf, ConvergesToFullFeCompliance) {
   Timer timer;
   const SectorCase s({"bore"});
@@ -99,38 +143,7 @@ TEST(HybridFrf, ConvergesToFullFeCompliance) {
   }
   EXPECT_LT(best, 1e-3);
 
-  // Zero frequency without damping (what the mean harmonic of a harmonic balance sees):
-  // with A0 at sigma = 0 the hybrid model is exact there whatever the modes kept.
-  const Eigen::MatrixXd Az = full.zeroFrequencyCompliance();
-  const double ez = (rom::HybridFrfModel(allModes.first(5), A0, kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
-  const double ezt =
-      (rom::HybridFrfModel::modalTruncation(allModes.first(5), kEta).zeroFrequencyCompliance() - Az).norm() / Az.norm();
-  std::printf("zero frequency, 5 modes: hybrid %.3e, truncation %.3e\n", ez, ezt);
-  EXPECT_LT(ez, 1e-10);
-  EXPECT_GT(ezt, 1e-3);
-
-  // Expansion point inside the band (between families 2 and 3): an indefinite factorization.
-  const double w0 = 0.5 * (std::sqrt(allModes.eigenvalues[2]) + std::sqrt(allModes.eigenvalues[4]));
-  const auto A0mid = full.staticCompliance(w0, allModes);
-  const rom::HybridFrfModel mid(allModes.first(20), A0mid, kEta);
-  double emid = 0;
-  for (std::size_t i = 0; i < w.size(); ++i) emid = std::max(emid, relativeError(mid.compliance(w[i]), reference[i]));
-  const rom::HybridFrfModel zero(allModes.first(20), A0, kEta);
-  double ezero = 0;
-  for (std::size_t i = 0; i < w.size(); ++i)
-    ezero = std::max(ezero, relativeError(zero.compliance(w[i]), reference[i]));
-  std::printf("20 modes, w0 = %.1f Hz (in the band): %.3e (w0 = 0: %.3e)\n", w0 / (2 * M_PI), emid, ezero);
-  EXPECT_LT(emid, ezero);
-
-  // w0 on a natural frequency: a clear error naming it.
-  const double w3 = std::sqrt(allModes.eigenvalues[4]);
-  try {
-    full.staticCompliance(w3 * (1 + 1e-5), allModes);
-    ADD_FAILURE() << "w0 on natural frequency 5 was accepted";
-  } catch (const InputError& e) {
-    std::printf("w0 on a natural frequency: %s\n", e.what());
-    EXPECT_NE(std::string(e.what()).find("natural frequency"), std::string::npos);
-  }
+  checkExpansionPoints(full, allModes, A0, w, reference);
 }
 
 TEST(HybridFrf, RigidBodyModesShiftW0) {
