@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/disc/DiscParameterStudy.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
@@ -667,77 +668,71 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   EXPECT_NE(msg.find("stiffness"), std::string::npos) << msg;
 }
 
-// Studies other than the demo's preload: more damping lowers the peak, more force
+namespace {
+
+// A curve's points between two folds on a stretch traced against its sweep's direction
+// (the middle branch of an S) are not stable by Hill's method; returns how many were checked.
+int expectNoStableMiddleBranch(const response::ForcedResponseResult& c) {
+  const std::size_t n = c.omega.size();
+  const auto back = [&](std::size_t j, std::size_t k) {  // the step j -> k against its sweep
+    return c.segment[j] == c.segment[k] && (c.segment[j] == 0 ? c.omega[k] < c.omega[j] : c.omega[k] > c.omega[j]);
+  };
+  int checked = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (!back(i - 1, i) || !back(i, i + 1)) continue;
+    std::size_t a = i, b = i;
+    while (a > 0 && back(a - 1, a)) --a;
+    while (b + 1 < n && back(b, b + 1)) ++b;
+    if (c.flags[a] != "fold" || c.flags[b] != "fold") continue;
+    ++checked;
+    EXPECT_NE(c.stable[i], 1) << "point " << i << " at " << c.omega[i] / (2 * M_PI) << " Hz lies between two folds";
+  }
+  return checked;
+}
+
+}  // namespace
+
+// Studies other than the demo's preload, by the library's values (disc::studyDisc on the
+// thin 8-sector disc of discResponseScene): more damping lowers the peak, more force
 // raises it; the modes study runs on fewer modes of the same models.
 TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
   log::setQuiet(true);
-  const auto dir = freshDir("disc_studies");
-  const std::string yaml = discResponseScene() +
-                           "    studies:\n"
-                           "      loss_factor: [0.012]\n"
-                           "      force: [2.0]\n"
-                           "      modes: [10]\n";
-  scenes::SceneOverrides o;
-  o.outputDirectory = dir.string();
-  const auto summary = scenes::runSceneText(yaml, "studies.yaml", o, Tpetra::getDefaultComm());
+  mesh::ShroudedSectorParameters sector;
+  sector.sectors = 8, sector.boreRadius = 70.0, sector.meshSize = 14.0;
+  const auto mesh = mesh::generateShroudedSector(sector);
+  disc::DiscModelSpec models;
+  models.sectors = 8, models.rpm = 10000.0, models.prestress = cyclic::PrestressKind::Linear;
+  disc::DiscResponseSpec spec;
+  spec.engineOrder = 3, spec.harmonics = {0, 1}, spec.contact.preload = 5.0, spec.excitation.amplitude = 20.0;
+  const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(8, 3, {0, 1}), "",
+                                                    Tpetra::getDefaultComm());
+  disc::DiscSweepOptions sweep;
+  sweep.harmonicsCheckTo = -1;
+  const auto reference = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
   // The reference curve covers the sweep (its first sweep folds back to the start at about
   // 346 Hz; a second sweep from the range's end traces the rest).
-  double sweepFrom = 0, sweepTo = 0;
-  for (const auto& l : summary.computed)
-    if (const auto at = l.find("; sweep "); at != std::string::npos)
-      EXPECT_EQ(std::sscanf(l.c_str() + at, "; sweep %lf -> %lf", &sweepFrom, &sweepTo), 2) << l;
-  ASSERT_GT(sweepTo, sweepFrom);
-  {
-    std::ifstream csv(dir / "disc_frc.csv");
-    std::string line;
-    std::getline(csv, line);
-    double lo = 1e300, hi = -1e300;
-    for (; std::getline(csv, line);) {
-      double point, omega, hz;
-      ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &point, &omega, &hz), 3) << line;
-      lo = std::min(lo, hz), hi = std::max(hi, hz);
-    }
-    EXPECT_NEAR(lo, sweepFrom, 1e-6 * sweepTo);
-    EXPECT_NEAR(hi, sweepTo, 1e-6 * sweepTo);
-  }
-  // The reference curve's peak (the first output DOF's max |x(t)| column), then each study's value.
-  auto studyPeak = [](const fs::path& csvPath) {
-    std::ifstream csv(csvPath);
-    std::string line;
-    std::getline(csv, line);
-    std::getline(csv, line);
-    double value, hz, peak;
-    EXPECT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &value, &hz, &peak), 3) << line;
-    return peak;
+  ASSERT_FALSE(reference.curve.omega.empty());
+  const auto [lo, hi] = std::minmax_element(reference.curve.omega.begin(), reference.curve.omega.end());
+  EXPECT_NEAR(*lo / (2 * M_PI), reference.fromHz, 1e-6 * reference.toHz);
+  EXPECT_NEAR(*hi / (2 * M_PI), reference.toHz, 1e-6 * reference.toHz);
+  auto studyPeak = [&](disc::DiscStudyParameter q, double value) {
+    const auto curves = disc::studyDisc(mesh, reduced, spec, reference, q, {value}, sweep);
+    EXPECT_EQ(curves.size(), 1u);
+    EXPECT_GT(curves.front().curve.omega.size(), 10u);
+    return curves.front().curve.peak;
   };
-  double reference = 0;
-  {
-    std::ifstream csv(dir / "disc_frc.csv");
-    std::string header;
-    std::getline(csv, header);
-    std::vector<std::string> names;
-    std::stringstream hs(header);
-    for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
-    const auto column = std::find_if(names.begin(), names.end(), [](const std::string& n) {
-                          return n.size() > 4 && n.compare(n.size() - 4, 4, "_max") == 0;
-                        }) - names.begin();
-    for (std::string line; std::getline(csv, line);) {
-      std::stringstream ss(line);
-      std::string c;
-      for (long i = 0; i <= column; ++i) std::getline(ss, c, ',');
-      reference = std::max(reference, std::stod(c));
-    }
-  }
-  const double damped = studyPeak(dir / "study_loss_factor.csv"), forced = studyPeak(dir / "study_force.csv"),
-               fewer = studyPeak(dir / "study_modes.csv");
-  std::printf("peaks: reference %.4e, loss factor x2 %.4e, force x2 %.4e, 10 modes %.4e\n", reference, damped, forced,
+  const double damped = studyPeak(disc::DiscStudyParameter::LossFactor, 0.012),
+               forced = studyPeak(disc::DiscStudyParameter::Force, 2.0),
+               fewer = studyPeak(disc::DiscStudyParameter::Modes, 10);
+  const double peak = reference.curve.peak;
+  std::printf("peaks: reference %.4e, loss factor x2 %.4e, force x2 %.4e, 10 modes %.4e\n", peak, damped, forced,
               fewer);
-  EXPECT_LT(damped, reference);
-  EXPECT_GT(forced, reference);
+  EXPECT_LT(damped, peak);
+  EXPECT_GT(forced, peak);
   // Fewer modes: no bound from theory on a friction curve (7 % here on this thin test disc); the
   // study must run and give a finite peak.
   EXPECT_TRUE(std::isfinite(fewer) && fewer > 0);
-  std::printf("middle-branch points (between folds) checked unstable: %d\n", expectNoStableMiddleBranch(dir));
+  std::printf("middle-branch points (between folds) checked unstable: %d\n", expectNoStableMiddleBranch(reference.curve));
 }
 
 // Gap elements at a shroud pair (seed 8.6): interference stiffens the disc, so
