@@ -1,5 +1,5 @@
 // The largest peak followed over a parameter where another peak overtakes the one
-// followed: a main mass with a tuned absorber (2-DOF, linear, closed-form frequency
+// followed, and a followed peak that vanishes: a main mass with a tuned absorber (2-DOF, linear, closed-form frequency
 // response), the absorber's tuning as the parameter. At f = 0.9 the upper peak is
 // the larger, at f = 1.0 the lower one; neither vanishes in between. Both peaks of
 // the starting curve are followed (prominentPeaks) and each value reports the
@@ -115,4 +115,112 @@ TEST(PeakFollowing, APeakThatOvertakesTheFollowedOneIsTaken) {
   EXPECT_LT(worstW, 1e-6);
   EXPECT_EQ(jumps, 1);
   EXPECT_EQ(jumpAt, exactSwitch);
+}
+
+namespace {
+
+// The same system with the absorber's damping c2 as the parameter (tuning f = 1):
+// |X1(w)| has two peaks while c2 is small, and one (between them) once the absorber's
+// damping has merged them.
+double dampedAmplitude(double w, double damping) {
+  const double k2 = m2;
+  const std::complex<double> a(k1 + k2 - m1 * w * w, w * (c1 + damping)), b(-k2, -w * damping),
+      d(k2 - m2 * w * w, w * damping);
+  return std::abs(d / (a * d - b * b));
+}
+
+// Whether |X1| has a local maximum within `reach` of w (a sample scan).
+bool hasLocalMaximumNear(double w, double damping, double reach) {
+  const int n = 4000;
+  for (int i = 1; i < n; ++i) {
+    const double x = w - reach + 2 * reach * i / n, h = 2 * reach / n;
+    const double y = dampedAmplitude(x, damping);
+    if (y > dampedAmplitude(x - h, damping) && y >= dampedAmplitude(x + h, damping)) return true;
+  }
+  return false;
+}
+
+continuation::PeakTrackingProblem dampedAbsorber() {
+  continuation::PeakTrackingProblem P;
+  P.size = 4;
+  auto blocks = [](double w, double damping, Eigen::Matrix2d& S, Eigen::Matrix2d& D) {
+    const double k2 = m2;
+    Eigen::Matrix2d K, M, C;
+    K << k1 + k2, -k2, -k2, k2;
+    M << m1, 0, 0, m2;
+    C << c1 + damping, -damping, -damping, damping;
+    S = K - w * w * M, D = w * C;
+  };
+  P.residual = [blocks](const Eigen::VectorXd& x, double w, double damping, Eigen::VectorXd& R) {
+    Eigen::Matrix2d S, D;
+    blocks(w, damping, S, D);
+    R.resize(4);
+    R.head(2) = S * x.head(2) + D * x.tail(2) - Eigen::Vector2d(1, 0);
+    R.tail(2) = S * x.tail(2) - D * x.head(2);
+  };
+  P.jacobian = [blocks](const Eigen::VectorXd&, double w, double damping, Eigen::MatrixXd& J) {
+    Eigen::Matrix2d S, D;
+    blocks(w, damping, S, D);
+    J.resize(4, 4);
+    J << S, D, -D, S;
+  };
+  P.measure = [](const Eigen::VectorXd& x) { return std::hypot(x(0), x(2)); };
+  return P;
+}
+
+}  // namespace
+
+// A followed peak that vanishes: the upper peak of the lightly damped absorber, followed
+// as the absorber's damping grows until it merges into the other. Where no local maximum
+// is left near it, the band's largest is taken and marked as a jump; every point is a
+// local maximum of the exact response (before the jump the followed one, after it the
+// global one).
+TEST(PeakFollowing, AFollowedPeakThatVanishesIsReplacedByTheBandsLargest) {
+  const auto P = dampedAbsorber();
+  continuation::PeakFollowingOptions o;
+  for (int i = 0; i <= 30; ++i) o.parameters.push_back(1e-3 * std::pow(40.0, i / 30.0));  // c2 1e-3 .. 0.04
+  o.search.step = 1e-4, o.search.maxStep = 1e-2, o.search.window = 0.03, o.search.parameterTolerance = 1e-9;
+  o.search.tolerance = 1e-12;
+  o.bandFrom = 0.7, o.bandTo = 1.3;
+  o.locateOptimum = false;
+  o.sweep.from = 0.7, o.sweep.to = 1.3;
+  // The upper peak at the first damping, from the exact response's scan.
+  double w0 = 1.0, top = 0;
+  for (int i = 0; i <= 30000; ++i) {
+    const double w = 1.0 + 0.3 * i / 30000;
+    if (const double a = dampedAmplitude(w, o.parameters.front()); a > top) top = a, w0 = w;
+  }
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(4);
+  const auto followed = continuation::followPeak(P, x0, w0, o);
+  ASSERT_TRUE(followed.complete) << followed.stopReason;
+  int jumps = 0, jumpAt = -1, exactVanish = -1;
+  double worst = 0;
+  for (std::size_t i = 0; i < followed.points.size(); ++i) {
+    const auto& p = followed.points[i];
+    if (p.jump) ++jumps, jumpAt = int(i);
+    if (exactVanish < 0 && i > 0 && !hasLocalMaximumNear(followed.points[i - 1].frequency, p.parameter, o.search.window))
+      exactVanish = int(i);
+    // A local maximum of the exact response at the point's frequency.
+    const double h = 1e-5;
+    const double a = dampedAmplitude(p.frequency, p.parameter);
+    worst = std::max(worst, std::abs(p.measure / a - 1));
+    EXPECT_GE(a, dampedAmplitude(p.frequency - h, p.parameter) * (1 - 1e-9)) << i;
+    EXPECT_GE(a, dampedAmplitude(p.frequency + h, p.parameter) * (1 - 1e-9)) << i;
+  }
+  std::printf("%zu values, %d searches, %d band sweeps; jump at c2 = %.4g (exact: the followed peak's neighbourhood "
+              "loses its maximum at c2 = %.4g); amplitude against the exact response %.1e\n",
+              followed.points.size(), followed.searches, followed.sweeps,
+              jumpAt >= 0 ? o.parameters[std::size_t(jumpAt)] : 0.0,
+              exactVanish >= 0 ? o.parameters[std::size_t(exactVanish)] : 0.0, worst);
+  EXPECT_EQ(jumps, 1);
+  EXPECT_EQ(jumpAt, exactVanish);
+  EXPECT_GE(followed.sweeps, 1);
+  // At the jump the band's largest: the exact response's global maximum over the band.
+  if (jumpAt >= 0) {
+    const auto& p = followed.points[std::size_t(jumpAt)];
+    double global = 0;
+    for (int i = 0; i <= 60000; ++i) global = std::max(global, dampedAmplitude(0.7 + 0.6 * i / 60000, p.parameter));
+    EXPECT_NEAR(p.measure / global, 1.0, 1e-6);
+  }
+  EXPECT_LT(worst, 1e-8);
 }
