@@ -19,12 +19,22 @@ namespace {
 
 constexpr double m1 = 1, k1 = 1, c1 = 0.002, m2 = 0.05, c2 = 1e-3;
 
-// |X1(w)| of the main mass under a unit force, absorber tuned to f (k2 = m2 f^2).
-double exactAmplitude(double w, double f) {
-  const double k2 = m2 * f * f;
-  const std::complex<double> a(k1 + k2 - m1 * w * w, w * (c1 + c2)), b(-k2, -w * c2), d(k2 - m2 * w * w, w * c2);
+// The absorber's parameter: its tuning f (k2 = m2 f^2, damping c2) or its damping
+// (tuned to 1, k2 = m2).
+enum class Absorber { Tuning, Damping };
+void absorberProperties(Absorber q, double p, double& k2, double& damping) {
+  k2 = q == Absorber::Tuning ? m2 * p * p : m2;
+  damping = q == Absorber::Tuning ? c2 : p;
+}
+
+// |X1(w)| of the main mass under a unit force, the absorber's parameter at p.
+double amplitude(double w, Absorber q, double p) {
+  double k2, cd;
+  absorberProperties(q, p, k2, cd);
+  const std::complex<double> a(k1 + k2 - m1 * w * w, w * (c1 + cd)), b(-k2, -w * cd), d(k2 - m2 * w * w, w * cd);
   return std::abs(d / (a * d - b * b));
 }
+double exactAmplitude(double w, double f) { return amplitude(w, Absorber::Tuning, f); }
 
 // The global maximum over [0.7, 1.3]: the best of 60001 samples, then golden section.
 std::pair<double, double> exactPeak(double f) {
@@ -42,28 +52,30 @@ std::pair<double, double> exactPeak(double f) {
   return {0.5 * (lo + hi), exactAmplitude(0.5 * (lo + hi), f)};
 }
 
-// Harmonic balance of the linear system, x = [a1 a2 b1 b2] (cos and sin parts).
-continuation::PeakTrackingProblem absorber() {
+// Harmonic balance of the linear system, x = [a1 a2 b1 b2] (cos and sin parts), in the
+// absorber's parameter q.
+continuation::PeakTrackingProblem absorber(Absorber q = Absorber::Tuning) {
   continuation::PeakTrackingProblem P;
   P.size = 4;
-  auto blocks = [](double w, double f, Eigen::Matrix2d& S, Eigen::Matrix2d& D) {
-    const double k2 = m2 * f * f;
+  auto blocks = [q](double w, double p, Eigen::Matrix2d& S, Eigen::Matrix2d& D) {
+    double k2, cd;
+    absorberProperties(q, p, k2, cd);
     Eigen::Matrix2d K, M, C;
     K << k1 + k2, -k2, -k2, k2;
     M << m1, 0, 0, m2;
-    C << c1 + c2, -c2, -c2, c2;
+    C << c1 + cd, -cd, -cd, cd;
     S = K - w * w * M, D = w * C;
   };
-  P.residual = [blocks](const Eigen::VectorXd& x, double w, double f, Eigen::VectorXd& R) {
+  P.residual = [blocks](const Eigen::VectorXd& x, double w, double p, Eigen::VectorXd& R) {
     Eigen::Matrix2d S, D;
-    blocks(w, f, S, D);
+    blocks(w, p, S, D);
     R.resize(4);
     R.head(2) = S * x.head(2) + D * x.tail(2) - Eigen::Vector2d(1, 0);
     R.tail(2) = S * x.tail(2) - D * x.head(2);
   };
-  P.jacobian = [blocks](const Eigen::VectorXd&, double w, double f, Eigen::MatrixXd& J) {
+  P.jacobian = [blocks](const Eigen::VectorXd&, double w, double p, Eigen::MatrixXd& J) {
     Eigen::Matrix2d S, D;
-    blocks(w, f, S, D);
+    blocks(w, p, S, D);
     J.resize(4, 4);
     J << S, D, -D, S;
   };
@@ -119,15 +131,9 @@ TEST(PeakFollowing, APeakThatOvertakesTheFollowedOneIsTaken) {
 
 namespace {
 
-// The same system with the absorber's damping c2 as the parameter (tuning f = 1):
-// |X1(w)| has two peaks while c2 is small, and one (between them) once the absorber's
-// damping has merged them.
-double dampedAmplitude(double w, double damping) {
-  const double k2 = m2;
-  const std::complex<double> a(k1 + k2 - m1 * w * w, w * (c1 + damping)), b(-k2, -w * damping),
-      d(k2 - m2 * w * w, w * damping);
-  return std::abs(d / (a * d - b * b));
-}
+// With the absorber's damping as the parameter (tuned to 1): two peaks while it is small,
+// one (between them) once the damping has merged them.
+double dampedAmplitude(double w, double damping) { return amplitude(w, Absorber::Damping, damping); }
 
 // Whether |X1| has a local maximum within `reach` of w (a sample scan).
 bool hasLocalMaximumNear(double w, double damping, double reach) {
@@ -140,34 +146,6 @@ bool hasLocalMaximumNear(double w, double damping, double reach) {
   return false;
 }
 
-continuation::PeakTrackingProblem dampedAbsorber() {
-  continuation::PeakTrackingProblem P;
-  P.size = 4;
-  auto blocks = [](double w, double damping, Eigen::Matrix2d& S, Eigen::Matrix2d& D) {
-    const double k2 = m2;
-    Eigen::Matrix2d K, M, C;
-    K << k1 + k2, -k2, -k2, k2;
-    M << m1, 0, 0, m2;
-    C << c1 + damping, -damping, -damping, damping;
-    S = K - w * w * M, D = w * C;
-  };
-  P.residual = [blocks](const Eigen::VectorXd& x, double w, double damping, Eigen::VectorXd& R) {
-    Eigen::Matrix2d S, D;
-    blocks(w, damping, S, D);
-    R.resize(4);
-    R.head(2) = S * x.head(2) + D * x.tail(2) - Eigen::Vector2d(1, 0);
-    R.tail(2) = S * x.tail(2) - D * x.head(2);
-  };
-  P.jacobian = [blocks](const Eigen::VectorXd&, double w, double damping, Eigen::MatrixXd& J) {
-    Eigen::Matrix2d S, D;
-    blocks(w, damping, S, D);
-    J.resize(4, 4);
-    J << S, D, -D, S;
-  };
-  P.measure = [](const Eigen::VectorXd& x) { return std::hypot(x(0), x(2)); };
-  return P;
-}
-
 }  // namespace
 
 // A followed peak that vanishes: the upper peak of the lightly damped absorber, followed
@@ -176,7 +154,7 @@ continuation::PeakTrackingProblem dampedAbsorber() {
 // local maximum of the exact response (before the jump the followed one, after it the
 // global one).
 TEST(PeakFollowing, AFollowedPeakThatVanishesIsReplacedByTheBandsLargest) {
-  const auto P = dampedAbsorber();
+  const auto P = absorber(Absorber::Damping);
   continuation::PeakFollowingOptions o;
   for (int i = 0; i <= 30; ++i) o.parameters.push_back(1e-3 * std::pow(40.0, i / 30.0));  // c2 1e-3 .. 0.04
   o.search.step = 1e-4, o.search.maxStep = 1e-2, o.search.window = 0.03, o.search.parameterTolerance = 1e-9;
