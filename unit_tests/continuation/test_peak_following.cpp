@@ -1,10 +1,13 @@
-// The largest peak followed over a parameter where another peak overtakes the one
-// followed, and a followed peak that vanishes: a main mass with a tuned absorber (2-DOF, linear, closed-form frequency
-// response), the absorber's tuning as the parameter. At f = 0.9 the upper peak is
-// the larger, at f = 1.0 the lower one; neither vanishes in between. Both peaks of
-// the starting curve are followed (prominentPeaks) and each value reports the
-// largest, marked as a jump where it changes: every point is the exact response's
-// global maximum (dense sampling and golden section of the closed form).
+// The largest peak followed over a parameter, on a main mass with a tuned absorber
+// (2-DOF, linear, closed-form frequency response):
+//  - the absorber's tuning as the parameter, where another peak overtakes the one
+//    followed: at f = 0.9 the upper peak is the larger, at f = 1.0 the lower one;
+//    neither vanishes in between. Both peaks of the starting curve are followed
+//    (prominentPeaks) and each value reports the largest, marked as a jump where it
+//    changes: every point is the exact response's global maximum (dense sampling and
+//    golden section of the closed form);
+//  - the absorber's damping as the parameter, where the followed (upper) peak
+//    vanishes into the other: the band's largest is taken there, marked as a jump.
 #include <gtest/gtest.h>
 
 #include <cmath>
