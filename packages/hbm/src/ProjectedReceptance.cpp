@@ -33,64 +33,6 @@ Eigen::MatrixXcd ProjectedReceptance::projectedDirectly(double frequency, long p
   return Tp * base_->compliance(frequency, p) * Tp.adjoint();
 }
 
-namespace {
-
-// A(w) = R / (1 + i eta) + U diag(1 / ((1 + i eta) l_j + i c_j w - w^2)) V^T (ReceptanceModel.hpp).
-Eigen::MatrixXcd fromModes(const ModalRealization& r, double w) {
-  const std::complex<double> structural(1.0, r.lossFactor);
-  Eigen::VectorXcd d(r.numModes());
-  for (int j = 0; j < r.numModes(); ++j) {
-    const double c = r.viscous.size() != 0 ? r.viscous(j) : 0.0;
-    d(j) = 1.0 / (structural * r.eigenvalues(j) + std::complex<double>(-w * w, c * w));
-  }
-  Eigen::MatrixXcd A = r.R / structural;
-  A.noalias() += r.U * d.asDiagonal() * r.V.transpose();
-  return A;
-}
-
-std::complex<double> structuralFactor(const ModalRealization& r) { return {1.0, r.lossFactor}; }
-
-// The modal weights' inverses D^-1: (1 + i eta) l_j + i c_j w - w^2.
-Eigen::VectorXcd inverseWeights(const ModalRealization& r, double w) {
-  Eigen::VectorXcd d(r.numModes());
-  for (int j = 0; j < r.numModes(); ++j) {
-    const double c = r.viscous.size() != 0 ? r.viscous(j) : 0.0;
-    d(j) = structuralFactor(r) * r.eigenvalues(j) + std::complex<double>(-w * w, c * w);
-  }
-  return d;
-}
-
-Eigen::MatrixXcd woodburyStiffness(const ModalRealization& r, const Eigen::MatrixXcd& Rinv, const Eigen::MatrixXcd& G,
-                                   const Eigen::MatrixXcd& Hv, const Eigen::MatrixXcd& K, double w) {
-  const std::complex<double> s = structuralFactor(r);
-  Eigen::MatrixXcd M = s * K;
-  M.diagonal() += inverseWeights(r, w);
-  Eigen::MatrixXcd Z = s * Rinv;
-  Z.noalias() -= (s * s) * (G * M.partialPivLu().solve(Hv));
-  return Z;
-}
-
-// Woodbury's pieces where R is well conditioned and the identity reproduces the plain
-// inverse at two frequencies between the modes (1e-8: the residual part of a hybrid
-// model can be ill conditioned, and then the inverse is taken plainly).
-bool prepareWoodbury(const ModalRealization& r, Eigen::MatrixXcd& Rinv, Eigen::MatrixXcd& G, Eigen::MatrixXcd& Hv,
-                     Eigen::MatrixXcd& K) {
-  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(r.R);
-  if (!(lu.rcond() > 1e-12)) return false;
-  Rinv = lu.inverse();
-  G = Rinv * r.U;
-  Hv = r.V.transpose() * Rinv;
-  K = r.V.transpose() * G;
-  const double top = std::sqrt(r.eigenvalues.cwiseAbs().maxCoeff());
-  for (double w : {0.37 * top, 1.13 * top}) {
-    const Eigen::MatrixXcd plain = fromModes(r, w).inverse();
-    const Eigen::MatrixXcd fast = woodburyStiffness(r, Rinv, G, Hv, K, w);
-    if (!plain.allFinite() || !((fast - plain).norm() <= 1e-8 * plain.norm())) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 const ProjectedReceptance::Projected& ProjectedReceptance::projected(long p) const {
   auto it = projected_.find(p);
@@ -104,11 +46,11 @@ const ProjectedReceptance::Projected& ProjectedReceptance::projected(long p) con
     const double top = std::sqrt(r->eigenvalues.cwiseAbs().maxCoeff());
     out.usable = true;
     for (double w : {0.37 * top, 1.13 * top}) {
-      const Eigen::MatrixXcd direct = projectedDirectly(w, p), modal = fromModes(*r, w);
+      const Eigen::MatrixXcd direct = projectedDirectly(w, p), modal = ModalStiffness::compliance(*r, w);
       if (!((direct - modal).norm() <= 1e-10 * direct.norm())) out.usable = false;
     }
     out.r = std::move(*r);
-    if (out.usable) out.woodbury = prepareWoodbury(out.r, out.Rinv, out.G, out.Hv, out.K);
+    if (out.usable) out.stiffness = ModalStiffness(out.r);
   }
   return projected_.emplace(p, std::move(out)).first->second;
 }
@@ -116,7 +58,7 @@ const ProjectedReceptance::Projected& ProjectedReceptance::projected(long p) con
 Eigen::MatrixXcd ProjectedReceptance::compliance(double frequency, long p) const {
   if (frequency > 0) {
     const Projected& pr = projected(p);
-    if (pr.usable) return fromModes(pr.r, frequency);
+    if (pr.usable) return ModalStiffness::compliance(pr.r, frequency);
   }
   return projectedDirectly(frequency, p);
 }
@@ -124,7 +66,7 @@ Eigen::MatrixXcd ProjectedReceptance::compliance(double frequency, long p) const
 Eigen::MatrixXcd ProjectedReceptance::dynamicStiffness(double frequency, long p) const {
   if (frequency > 0) {
     const Projected& pr = projected(p);
-    if (pr.woodbury) return woodburyStiffness(pr.r, pr.Rinv, pr.G, pr.Hv, pr.K, frequency);
+    if (pr.stiffness.usable()) return pr.stiffness(frequency);
   }
   return ReceptanceModel::dynamicStiffness(frequency, p);
 }

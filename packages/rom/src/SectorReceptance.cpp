@@ -58,51 +58,20 @@ Eigen::MatrixXcd SectorReceptance::compliance(double frequency, long phaseIndex)
   return A.topLeftCorner(n, n) + std::complex<double>(0, sign) * A.bottomLeftCorner(n, n);
 }
 
-const SectorReceptance::Woodbury& SectorReceptance::woodbury(int k, int sign) const {
-  const auto key = std::make_pair(k, sign);
-  auto it = woodbury_.find(key);
-  if (it != woodbury_.end()) return it->second;
-  Woodbury w;
-  const auto* hybrid = dynamic_cast<const HybridFrfModel*>(&model(k));
-  if (hybrid && hybrid->hasStaticCorrection()) {
-    // The travelling-wave combination of the real-form blocks, as in compliance().
-    const int n = dofs_;
-    const bool pair = copies(sectors_, k) == 2;
-    const std::complex<double> si(0, sign);
-    const Eigen::MatrixXcd R2 = hybrid->residualCompliance();
-    const Eigen::MatrixXd& phi = hybrid->modes().shapes;
-    const Eigen::MatrixXcd R = pair ? Eigen::MatrixXcd(R2.topLeftCorner(n, n) + si * R2.bottomLeftCorner(n, n)) : R2;
-    const Eigen::MatrixXcd U = pair ? Eigen::MatrixXcd(phi.topRows(n).cast<std::complex<double>>() +
-                                                       si * phi.bottomRows(n).cast<std::complex<double>>())
-                                    : Eigen::MatrixXcd(phi.cast<std::complex<double>>());
-    const Eigen::MatrixXcd V = phi.topRows(n).cast<std::complex<double>>();
-    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(R);
-    if (lu.rcond() > 1e-12) {
-      w.Rinv = lu.inverse();
-      w.G = w.Rinv * U;
-      w.H = V.transpose() * w.Rinv;
-      w.K = V.transpose() * w.G;
-      w.usable = true;
-      // One check against the plain inverse, at 0.7 of the first natural frequency.
-      const double f = 0.7 * std::sqrt(std::max(hybrid->modes().eigenvalues.front(), 0.0));
-      const Eigen::VectorXcd d = hybrid->modalWeights(f);
-      const Eigen::MatrixXcd M = Eigen::MatrixXcd(d.cwiseInverse().asDiagonal()) + w.K;
-      const Eigen::MatrixXcd Zw = w.Rinv - w.G * M.partialPivLu().solve(w.H);
-      const Eigen::MatrixXcd Zd = compliance(f, k == 0 ? 0 : (sign > 0 ? (sectors_ - k) % sectors_ : k)).inverse();
-      if (!((Zw - Zd).norm() <= 1e-8 * Zd.norm())) w = Woodbury{};
-    }
-  }
-  return woodbury_.emplace(key, std::move(w)).first->second;
+// The dynamic stiffness by Woodbury's identity over the phase's modal realization
+// (hbm::ModalStiffness: checked there against the plain inverse, unusable where the
+// constant part R is ill conditioned or absent, e.g. a modal truncation).
+const hbm::ModalStiffness& SectorReceptance::stiffness(long key) const {
+  if (auto it = stiffness_.find(key); it != stiffness_.end()) return it->second;
+  const auto r = modalRealization(key);
+  return stiffness_.emplace(key, r ? hbm::ModalStiffness(*r) : hbm::ModalStiffness()).first->second;
 }
 
 Eigen::MatrixXcd SectorReceptance::dynamicStiffness(double frequency, long phaseIndex) const {
-  const auto [k, sign] = nodalDiameter(sectors_, phaseIndex);
-  const Woodbury& w = woodbury(k, sign);
-  if (!w.usable) return ReceptanceModel::dynamicStiffness(frequency, phaseIndex);
-  const auto& hybrid = static_cast<const HybridFrfModel&>(model(k));
-  const Eigen::VectorXcd d = hybrid.modalWeights(frequency);
-  const Eigen::MatrixXcd M = Eigen::MatrixXcd(d.cwiseInverse().asDiagonal()) + w.K;
-  return w.Rinv - w.G * M.partialPivLu().solve(w.H);
+  const long key = ((phaseIndex % sectors_) + sectors_) % sectors_;
+  const hbm::ModalStiffness& z = stiffness(key);
+  if (frequency > 0 && z.usable()) return z(frequency);
+  return ReceptanceModel::dynamicStiffness(frequency, phaseIndex);
 }
 
 std::optional<hbm::ModalRealization> SectorReceptance::modalRealization(long phaseIndex) const {

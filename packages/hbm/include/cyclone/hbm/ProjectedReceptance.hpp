@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 
+#include "cyclone/hbm/ModalStiffness.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 
 namespace cyclone::hbm {
@@ -28,7 +29,7 @@ public:
   /// (q x q x modes per frequency instead of an LU inverse), else the plain inverse.
   Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const override;
   /// Whether dynamicStiffness takes Woodbury's identity for phase p.
-  bool usesWoodbury(long phaseIndex) const { return projected(phaseIndex).woodbury; }
+  bool usesWoodbury(long phaseIndex) const { return projected(phaseIndex).stiffness.usable(); }
   /// T_0 A_mean T_0^T, T_0 = T + T_next (the mean motion is the same in every sector).
   Eigen::MatrixXd meanCompliance() const override;
   /// The base model's realization projected: R' = T_p R T_p^H, U' = T_p U, V' = conj(T_p) V
@@ -42,15 +43,12 @@ private:
   // Per phase index: the projected modal realization when it reproduces the projected
   // compliance (checked once against it), so that a frequency costs q x q x modes
   // instead of the base model's n x n compliance and two n-wide products.
-  // With it, where R is well conditioned, the pieces of Woodbury's identity
-  //   (R / s + U D V^T)^-1 = s R^-1 - s^2 G (D^-1 + s K)^-1 Hv,  s = 1 + i eta,
-  // G = R^-1 U, Hv = V^T R^-1, K = V^T R^-1 U (checked once against the plain inverse).
+  // With it, the dynamic stiffness by Woodbury's identity where that holds.
   struct Projected {
     bool hasRealization = false;  // the base model has one (then r is its projection)
     bool usable = false;
     ModalRealization r;
-    bool woodbury = false;
-    Eigen::MatrixXcd Rinv, G, Hv, K;
+    ModalStiffness stiffness;
   };
   const Projected& projected(long phaseIndex) const;
   std::optional<ModalRealization> projectedRealization(long phaseIndex) const;

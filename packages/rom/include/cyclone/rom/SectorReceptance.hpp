@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 
+#include "cyclone/hbm/ModalStiffness.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/rom/ComplianceModel.hpp"
 
@@ -28,10 +29,10 @@ public:
   int numDofs() const override { return dofs_; }
   int sectors() const override { return sectors_; }
   Eigen::MatrixXcd compliance(double frequency, long phaseIndex) const override;
-  /// For hybrid models A = R + U D(w) V^T (R the dropped modes' constant part, D diagonal,
-  /// rank = modes kept): the Woodbury identity, Z = R^-1 - R^-1 U (D^-1 + V^T R^-1 U)^-1 V^T R^-1,
-  /// an m x m solve per frequency instead of an n x n inverse. Checked once per nodal
-  /// diameter against the LU inverse; falls back to it if R is too ill-conditioned.
+  /// For models with a modal realization A = R / s + U D(w) V^T (R the dropped modes'
+  /// constant part): Woodbury's identity (hbm::ModalStiffness), an m x m solve per
+  /// frequency instead of an n x n inverse; the LU inverse where R is absent or too
+  /// ill conditioned.
   Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const override;
   /// Nodal diameter 0's zero-frequency compliance (InputError if that model is missing).
   Eigen::MatrixXd meanCompliance() const override;
@@ -46,12 +47,8 @@ public:
   const ComplianceModel& model(int nodalDiameter) const;
 
 private:
-  struct Woodbury {
-    bool usable = false;
-    Eigen::MatrixXcd Rinv, G, H, K;  // R^-1, R^-1 U, V^T R^-1, V^T R^-1 U
-  };
-  const Woodbury& woodbury(int k, int sign) const;
-  mutable std::map<std::pair<int, int>, Woodbury> woodbury_;
+  const hbm::ModalStiffness& stiffness(long phaseKey) const;
+  mutable std::map<long, hbm::ModalStiffness> stiffness_;
   mutable std::map<long, std::optional<hbm::ModalRealization>> realizations_;
   int sectors_;
   int dofs_ = 0;
