@@ -119,7 +119,7 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
 
 std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec) {
   std::vector<PeakStudySpec> out;
-  for (const std::string name : {"preload", "mu", "force"}) {
+  for (const std::string name : {"preload", "mu", "contact_stiffness", "force"}) {
     if (!peakStudies.has(name)) continue;
     auto s = peakStudies.section(name);
     const auto range = s.getDoubleList("range", {});
@@ -128,8 +128,14 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     const int values = s.getInt("values", 24);
     if (values < 3 || values > 400) throw InputError(s.where("values"), "must lie in 3..400");
     s.rejectUnknownKeys();
-    // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies'.
-    const double refValue = name == "preload" ? spec.contact.preload : name == "mu" ? spec.contact.mu : 1.0;
+    // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies';
+    // contact_stiffness: kn = kt together, so the scene's two must be equal.
+    double refValue = 0;
+    try {
+      refValue = disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name));
+    } catch (const InputError& e) {
+      throw InputError(s.where("range"), e.problem());
+    }
     if (!(refValue >= range[0] && refValue <= range[1]))
       throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
                                              "): the following starts at the reference curve's peak");
@@ -153,7 +159,7 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     for (const auto& p : listedHere) following.extraValues.push_back(p.value);
     const disc::DiscPeakFollowing f =
         followDiscPeak(mesh, models, spec, reference, referenceResult, bandFromHz, bandToHz, following);
-    const std::string unit = name == "preload" ? " / N" : "";
+    const std::string unit = name == "preload" ? " / N" : name == "contact_stiffness" ? " / (N/mm)" : "";
     if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
     const std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     summary.computed.push_back(line);

@@ -235,6 +235,24 @@ TEST(FrictionContact, BadParametersAreNamed) {
   }
 }
 
+// The contact stiffness of a study (kn = kt = the value) is one parameter: the element
+// it gives is the one built with those stiffnesses, force for force.
+TEST(FrictionContact, StiffnessParameterSetsKnAndKtTogether) {
+  const FrictionContact base(params(2, 1.0, 2.0, 0.3, 0.5));
+  const auto varied = base.withParameter("stiffness", 3.0);
+  const auto& p = static_cast<const FrictionContact&>(*varied).parameters();
+  EXPECT_EQ(p.kt, 3.0);
+  EXPECT_EQ(p.kn, 3.0);
+  const FrictionContact built(params(2, 3.0, 3.0, 0.3, 0.5));
+  const Aft aft(HarmonicSet::upTo(3), 64);
+  Eigen::MatrixXd W(aft.numCoefficients(), 3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  for (Eigen::Index i = 0; i < W.size(); ++i) W.data()[i] = u(rng);
+  EXPECT_EQ(force(*varied, aft, W), force(built, aft, W));
+  EXPECT_THROW(base.withParameter("stifness", 3.0), InputError);
+}
+
 // Limits: mu = 0 transmits no tangential force; a huge preload holds the
 // contact stuck, so the tangential force is the linear spring kt w_t.
 TEST(FrictionContact, FrictionlessAndStuckLimits) {

@@ -62,9 +62,16 @@ double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter param
   switch (parameter) {
     case DiscStudyParameter::Preload: return spec.contact.preload;
     case DiscStudyParameter::FrictionCoefficient: return spec.contact.mu;
+    case DiscStudyParameter::ContactStiffness:
+      // Followed as the value-list study varies it: kn = kt = the value.
+      if (spec.contact.kn != spec.contact.kt)
+        throw InputError("peak following/contact_stiffness",
+                         "varies kn and kt together from one value: the scene's kn and kt must be equal");
+      return spec.contact.kt;
     case DiscStudyParameter::Force: return 1.0;
     default:
-      throw InputError("peak following", "follows the preload, mu or force, not " + discStudyParameterName(parameter));
+      throw InputError("peak following",
+                       "follows the preload, mu, contact_stiffness or force, not " + discStudyParameterName(parameter));
   }
 }
 
@@ -92,7 +99,9 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   if (out.byForce)
     setup.parameter = response::ForcedResponseSetup::Parameter::ForceScale;
   else
-    response::selectElementParameter(setup, "contact", name, out.referenceValue);
+    response::selectElementParameter(
+        setup, "contact", following.parameter == DiscStudyParameter::ContactStiffness ? "stiffness" : name,
+        out.referenceValue);
   const auto problem = response::peakFollowingProblem(setup);
   // Every peak of the reference curve that stands out (5 %), so one that overtakes the
   // largest is seen; its frequencies from the curve's parameter (omega / omegaUnit).

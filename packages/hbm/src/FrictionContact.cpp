@@ -316,7 +316,8 @@ std::shared_ptr<const NonlinearElement> FrictionContact::withParameter(const std
   else if (name == "kn") p.kn = value;
   else if (name == "mu") p.mu = value;
   else if (name == "preload") p.preload = value;
-  else throw InputError("friction contact", "unknown parameter '" + name + "' (kt, kn, mu, preload)");
+  else if (name == "stiffness") p.kt = p.kn = value;  // a contact stiffness study's kn = kt
+  else throw InputError("friction contact", "unknown parameter '" + name + "' (kt, kn, stiffness, mu, preload)");
   return std::make_shared<FrictionContact>(p);
 }
 

@@ -13,7 +13,8 @@
 namespace cyclone::disc {
 
 struct DiscPeakFollowingSpec {
-  /// Preload, FrictionCoefficient or Force (InputError for another).
+  /// Preload, FrictionCoefficient, ContactStiffness (kn = kt = the value, as the value-list
+  /// study) or Force (InputError for another).
   DiscStudyParameter parameter = DiscStudyParameter::Preload;
   double from = 0, to = 0;  ///< 0 < from < to, containing the spec's value (1 for Force)
   int values = 24;          ///< evenly in log over the range (3..400)
@@ -33,7 +34,8 @@ struct DiscPeakFollowing {
   double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
 };
 
-/// The spec's value of `parameter` (preload, mu; 1 for Force: a scale of the excitation).
+/// The spec's value of `parameter` (preload, mu, kn = kt; 1 for Force: a scale of the
+/// excitation). InputError for contact stiffness when the spec's kn and kt differ.
 double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter parameter);
 
 /// The reference curve's peak followed over `following`: the system is spec's over

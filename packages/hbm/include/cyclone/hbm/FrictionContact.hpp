@@ -49,7 +49,7 @@ public:
   int stateSize() const override { return p_.tangentialDirections; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
-  /// kt, kn, mu, preload.
+  /// kt, kn, stiffness (kn = kt = value together), mu, preload.
   std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 
 private:
