@@ -91,6 +91,11 @@ fe::IsotropicElastic readMaterial(SceneSection m) {
   material.E = m.getDouble("E", material.E);
   material.nu = m.getDouble("nu", material.nu);
   material.rho = m.getDouble("rho", material.rho);
+  const std::string quadrature = m.getString("mass_quadrature", "exact");
+  if (quadrature == "stiffness_rule") material.massQuadrature = fe::MassQuadrature::StiffnessRule;
+  else if (quadrature != "exact")
+    throw InputError(m.where("mass_quadrature"), "'" + quadrature + "': exact (the default) or stiffness_rule "
+                                                 "(CalculiX's C3D10 mass and centrifugal load, for comparing with it)");
   if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readFatigueMaterial)
   m.rejectUnknownKeys();
   material.validate(m.location());

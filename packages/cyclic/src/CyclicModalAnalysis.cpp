@@ -15,6 +15,7 @@
 #include "cyclone/mesh/MeshDigest.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/PeakMemory.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/cyclic/HarmonicForm.hpp"
@@ -209,6 +210,8 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
   h.addAll(std::vector<long long>(sector.right.begin(), sector.right.end()));
   h.add(sector.axis.point.data(), sizeof(double) * 3).add(sector.axis.direction.data(), sizeof(double) * 3);
   h.add(problem.material.E).add(problem.material.nu).add(problem.material.rho);
+  // Only when not the default, so that the default's cached results keep their keys.
+  if (problem.material.massQuadrature != fe::MassQuadrature::Exact) h.add(std::string("mass quadrature: stiffness rule"));
   h.add(problem.modesPerNodalDiameter).add(problem.shift).add(int(problem.method)).add(k);
   if (const auto* p = problem.prestress.get()) {
     h.add(std::string("prestress")).add(p->speedRpm).add(p->omega).add(int(p->nonlinear));
@@ -320,7 +323,13 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
     NodalDiameterModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
-    if (rank == 0) log::info(describe(hm, problem.method));
+    releaseFreedMemory();  // the Krylov basis and the solves' work, before the next factor
+    if (rank == 0) {
+      std::ostringstream memory;
+      memory.precision(4);
+      memory << "; memory " << currentMemoryMb() << " MB, peak " << peakMemoryMb() << " MB";
+      log::info(describe(hm, problem.method) + memory.str());
+    }
     if (problem.checkpoints) problem.checkpoints->save(key, pack(hm));
     return hm;
   };

@@ -114,7 +114,7 @@ public:
         omega_(speedRpm * 2 * M_PI / 60), axis_(axis) {
     f1_ = A_.centrifugalLoad(material, omega_, axis);
     K1_ = A_.assemble([&](mesh::Index, fe::ElementType t, const fe::ElementCoords& X) {
-      return fe::elementSpinSoftening(t, X, material.rho, omega_, axis);
+      return fe::elementSpinSoftening(t, X, material.rho, omega_, axis, material.massQuadrature);
     });
   }
   PrestressState solve(const NonlinearPrestressOptions& opt);
@@ -135,7 +135,7 @@ private:
     const auto field = A_.nodalField(u);
     return A_.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
       Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material_, elementDisplacement(mesh_, e, field), true).tangent;
-      Ke -= lambda * fe::elementSpinSoftening(t, X, material_.rho, omega_, axis_);
+      Ke -= lambda * fe::elementSpinSoftening(t, X, material_.rho, omega_, axis_, material_.massQuadrature);
       return Ke;
     });
   }
@@ -262,7 +262,8 @@ Eigen::MatrixXd tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::
                 .tangent
           : Eigen::MatrixXd(fe::elementStiffness(type, X, material) +
                             fe::elementGeometricStiffness(type, X, prestress->stress[e]));
-  K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis);
+  K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis,
+                                material.massQuadrature);
   return K;
 }
 

@@ -82,7 +82,7 @@ SectorMatrices assembleSectorMatrices(const mesh::Mesh& mesh, const fe::Isotropi
       Eigen::MatrixXd Ke, Me;
       try {
         Ke = tangentElementMatrix(mesh, global, block.type, X, material, prestress);
-        Me = fe::elementMass(block.type, X, material.rho);
+        Me = fe::elementMass(block.type, X, material.rho, material.massQuadrature);
       } catch (const fe::InvalidElementGeometry& err) {
         throw InputError(mesh.source, mesh.elementName(global) + ": inverted or degenerate element (det J = " +
                                           std::to_string(err.detJ) + " at integration point " +

@@ -75,6 +75,8 @@ std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
   for (const auto& sets : {s.fixedNodeSets, s.leftSets, s.rightSets, s.retainedNodeSets})
     mesh::addNodeSetsToHash(h, mesh, sets);
   h.add(s.material.E).add(s.material.nu).add(s.material.rho);
+  // Only when not the default, so that the default's cached results keep their keys.
+  if (s.material.massQuadrature != fe::MassQuadrature::Exact) h.add(std::string("mass quadrature: stiffness rule"));
   h.add(s.sectors).add(s.axis.point.data(), sizeof(double) * 3).add(s.axis.direction.data(), sizeof(double) * 3);
   h.add(s.rpm).add(prestressName(s.prestress)).add(reducedModelKindName(s.kind)).add(s.modes).add(s.omega0).add(s.lossFactor).add(nd);
   return h.hex();

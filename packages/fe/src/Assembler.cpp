@@ -262,7 +262,7 @@ Teuchos::RCP<linalg::Matrix> Assembler::stiffness(const IsotropicElastic& materi
 }
 
 Teuchos::RCP<linalg::Matrix> Assembler::mass(const IsotropicElastic& material) const {
-  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementMass(t, X, material.rho); });
+  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementMass(t, X, material.rho, material.massQuadrature); });
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::assembleVector(const ElementVectorKernel& kernel) const {
@@ -272,7 +272,7 @@ Teuchos::RCP<linalg::MultiVector> Assembler::assembleVector(const ElementVectorK
 Teuchos::RCP<linalg::MultiVector> Assembler::centrifugalLoad(const IsotropicElastic& material, double omega,
                                                              const RotationAxis& axis) const {
   return assembleVector([&](mesh::Index, ElementType t, const ElementCoords& X) {
-    return elementCentrifugalLoad(t, X, material.rho, omega, axis);
+    return elementCentrifugalLoad(t, X, material.rho, omega, axis, material.massQuadrature);
   });
 }
 

@@ -39,6 +39,11 @@ ShapeTable tabulate(ElementType type, const mesh::QuadratureRule& rule) {
 
 enum class Rule { Stiffness, Mass };
 
+// The rule of the mass-like terms.
+Rule massLike(MassQuadrature quadrature) {
+  return quadrature == MassQuadrature::Exact ? Rule::Mass : Rule::Stiffness;
+}
+
 const ShapeTable& shapeTable(ElementType type, Rule rule) {
   constexpr std::array<ElementType, 4> types = {ElementType::Tet4, ElementType::Tet10, ElementType::Hex8,
                                                 ElementType::Hex20};
@@ -143,9 +148,9 @@ Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const
   return K;
 }
 
-Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho) {
+Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho, MassQuadrature quadrature) {
   const int n = checkedNodeCount(type, X);
-  const auto& t = shapeTable(type, Rule::Mass);
+  const auto& t = shapeTable(type, massLike(quadrature));
   const double floor = degenerateDetJ(X);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);  // scalar mass, the same for each direction
   for (int q = 0; q < t.numPoints(); ++q) {
@@ -158,9 +163,9 @@ Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho
 }
 
 Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
-                                       const RotationAxis& axis) {
+                                       const RotationAxis& axis, MassQuadrature quadrature) {
   const int n = checkedNodeCount(type, X);
-  const auto& t = shapeTable(type, Rule::Mass);
+  const auto& t = shapeTable(type, massLike(quadrature));
   const double floor = degenerateDetJ(X);
   const Eigen::Vector3d a = unitAxis(axis);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
@@ -247,11 +252,11 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
 }
 
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
-                                     const RotationAxis& axis) {
+                                     const RotationAxis& axis, MassQuadrature quadrature) {
   const int n = checkedNodeCount(type, X);
   const Eigen::Vector3d a = unitAxis(axis);
   const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();
-  const Eigen::MatrixXd M = elementMass(type, X, rho * omega * omega);  // blocks m_ab I_3
+  const Eigen::MatrixXd M = elementMass(type, X, rho * omega * omega, quadrature);  // blocks m_ab I_3
   Eigen::MatrixXd K(3 * n, 3 * n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) K.block<3, 3>(3 * i, 3 * j) = M(3 * i, 3 * j) * P;

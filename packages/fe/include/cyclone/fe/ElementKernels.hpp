@@ -28,12 +28,13 @@ public:
 
 /// Linear elastic stiffness (3n x 3n), stiffnessRule.
 Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat);
-/// Consistent mass (3n x 3n), massRule.
-Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho);
+/// Consistent mass (3n x 3n), massRule (or stiffnessRule: MassQuadrature).
+Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho,
+                            MassQuadrature quadrature = MassQuadrature::Exact);
 /// Consistent centrifugal body load  int N^T rho Omega^2 r_perp dV  (3n), r_perp the
-/// distance vector from the axis at the undeformed position; massRule.
+/// distance vector from the axis at the undeformed position; massRule (or stiffnessRule).
 Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
-                                       const RotationAxis& axis);
+                                       const RotationAxis& axis, MassQuadrature quadrature = MassQuadrature::Exact);
 /// Consistent load of a uniform body force density b (force/volume) (3n).
 Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b);
 /// Element volume.
@@ -51,7 +52,7 @@ Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords&
 ///   K_ab = rho Omega^2 (int N_a N_b dV) (I - a a^T)   (mass rule),
 /// subtracted from the tangent (the load follows the deformed position).
 Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
-                                     const RotationAxis& axis);
+                                     const RotationAxis& axis, MassQuadrature quadrature = MassQuadrature::Exact);
 /// Geometrically nonlinear element (Total Lagrangian, St Venant-Kirchhoff) at the
 /// element displacement ue, stiffness rule: Green-Lagrange strain E = (F^T F - I)/2,
 /// second Piola-Kirchhoff stress S = D E,
