@@ -128,7 +128,7 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
 // continuation section (the disc's own defaults, discContinuationOptions, then the
 // scene's keys; an engine the scene names is used alone, by default the other one
 // retraces a curve the first leaves incomplete).
-disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
+disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
                                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
   disc::DiscSweepOptions sweep;
   sweep.family = d.getInt("family", 1);
@@ -137,7 +137,8 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
     throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
   if (!range.empty()) sweep.fromHz = range[0], sweep.toHz = range[1];
   sweep.stability = readStability(d);
-  sweep.harmonicsCheckTo = harmonicsCheckTo;
+  sweep.harmonicsCheckTo = plan.harmonicsCheckTo;
+  sweep.harmonicsTolerance = plan.harmonicsTolerance;
   auto cs = d.section("continuation");
   using Engine = continuation::ContinuationOptions::Engine;
   sweep.continuation = disc::discContinuationOptions(
@@ -164,7 +165,9 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec);
     plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
-    plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic);
+    const HarmonicsTargetKeys target = readHarmonicsTarget(d, 5);
+    plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic, target);
+    plan.harmonicsTolerance = target.tolerance;
     if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {
       // Also the nodal diameters of the harmonics the curve's harmonics check adds.
       auto checked = spec.harmonics;

@@ -332,13 +332,21 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
                 linalg::CommPtr comm, SceneSummary& summary) {
   auto r = scene.section("reduced_model");
   auto d = scene.section("disc_response");
-  const DiscPlan plan = readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir, comm);
-  const auto models = reducedModelsStage(mesh, plan, outDir, comm, summary);
+  const DiscPlan readPlan = readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir, comm);
+  const auto models = reducedModelsStage(mesh, readPlan, outDir, comm, summary);
   if (!forcedResponse) return;
 
-  const auto sweep = readSweepOptions(d, plan.harmonicsCheckTo, checkpoints);
-  const auto hysteresisContacts = readHysteresisContacts(d, mesh, plan.spec);
-  auto solved = referenceStage(mesh, models, plan, sweep, outDir, comm, summary);
+  const auto sweep = readSweepOptions(d, readPlan, checkpoints);
+  const auto hysteresisContacts = readHysteresisContacts(d, mesh, readPlan.spec);
+  auto solved = referenceStage(mesh, models, readPlan, sweep, outDir, comm, summary);
+  // Harmonics by an error target traced the reference again with the harmonics that met
+  // it: the stages after it (studies, peak following) work with those.
+  DiscPlan plan = readPlan;
+  if (solved.curve.harmonicsTarget.retraced) {
+    const auto& hb = *solved.setup.system;
+    plan.spec.harmonics = hb.aft().harmonics().harmonics();
+    plan.spec.samples = hb.aft().numSamples();
+  }
   peakOutputsStage(mesh, models, plan, solved, hysteresisContacts, outDir, comm, summary);
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.

@@ -361,6 +361,7 @@ void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
 ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   MatrixSystemInput in = readMatrixSystem(scene);
   const hbm::HarmonicSet harmonics(readHarmonicList(scene, 7));
+  const HarmonicsTargetKeys harmonicsTarget = readHarmonicsTarget(scene, 7);
   // Elements first: the default sample count depends on them (friction and gaps need
   // many samples per period to place their events).
   ForcedResponseSetup setup;
@@ -398,10 +399,14 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   readForces(scene, ex, setup);
   auto cs = scene.section("continuation");
   readContinuation(cs, setup);
+  if (harmonicsTarget.tolerance > 0 && setup.parameter != ForcedResponseSetup::Parameter::Omega)
+    throw InputError(scene.where("harmonics"), "auto compares the peaks of frequency curves: it needs the "
+                                               "continuation parameter omega");
   auto out = scene.section("output");
   setup.outputDofs = out.getIntList("dofs", {0});
   setup.stability = readStability(out);
-  setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic());
+  setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic(), harmonicsTarget);
+  setup.harmonicsTolerance = harmonicsTarget.tolerance;
   out.rejectUnknownKeys();
   for (int d : setup.outputDofs)
     if (d < 0 || d >= in.n) throw InputError(out.where("dofs"), "DOF " + std::to_string(d) + " out of range");

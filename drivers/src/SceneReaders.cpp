@@ -25,6 +25,10 @@ cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string
 }
 
 std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
+  if (section.isWord("harmonics", "auto")) {  // by an error target: from 0..1 up (readHarmonicsTarget)
+    section.getString("harmonics", "");  // marks the key read
+    return {0, 1};
+  }
   std::vector<int> list = section.getIntList("harmonics", {defaultMax});
   if (list.size() == 1) {  // a single number H means 0..H
     const int H = list[0];
@@ -44,7 +48,31 @@ response::ForcedResponseSetup::Stability readStability(SceneSection& section) {
   throw InputError(section.where("stability"), "must be auto, true or false");
 }
 
-int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic) {
+HarmonicsTargetKeys readHarmonicsTarget(SceneSection& section, int defaultMax) {
+  HarmonicsTargetKeys keys;
+  if (!section.isWord("harmonics", "auto")) {
+    for (const char* key : {"harmonics_tolerance", "harmonics_max"})
+      if (section.has(key)) throw InputError(section.where(key), "applies to harmonics: auto only");
+    return keys;
+  }
+  keys.tolerance = section.getDouble("harmonics_tolerance", 0.01);
+  if (!(keys.tolerance > 0 && keys.tolerance < 0.5))
+    throw InputError(section.where("harmonics_tolerance"),
+                     "a relative change of the peak between harmonic counts, 0 < tolerance < 0.5");
+  keys.max = section.getInt("harmonics_max", defaultMax);
+  if (keys.max < 3 || keys.max > 30)
+    throw InputError(section.where("harmonics_max"),
+                     "the highest harmonic tried must lie in 3..30 (two raises from H = 1 meet the tolerance at "
+                     "H = 3 at the earliest)");
+  return keys;
+}
+
+int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic, const HarmonicsTargetKeys& target) {
+  if (target.tolerance > 0) {
+    if (section.has("harmonics_check_to"))
+      throw InputError(section.where("harmonics_check_to"), "with harmonics: auto the check runs to harmonics_max");
+    return target.max;
+  }
   const int upTo = section.getInt("harmonics_check_to", 0);
   if (section.has("harmonics_check_to") && upTo <= maxHarmonic)
     throw InputError(section.where("harmonics_check_to"),

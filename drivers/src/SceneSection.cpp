@@ -101,6 +101,10 @@ bool SceneSection::has(const std::string& key) const { return list_.isParameter(
 
 bool SceneSection::isSection(const std::string& key) const { return has(key) && list_.isSublist(key); }
 
+bool SceneSection::isWord(const std::string& key, const std::string& word) const {
+  return has(key) && list_.isType<std::string>(key) && list_.get<std::string>(key) == word;
+}
+
 double SceneSection::getDouble(const std::string& key, double fallback) {
   markUsed(key);
   if (!has(key)) return fallback;

@@ -79,16 +79,27 @@ mesh::RotationAxis readRotationAxis(SceneSection& section);
 cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback);
 
 /// `harmonics` of a section: a list of harmonics, or one number H meaning 0..H (H >= 1);
-/// `defaultMax` when absent (0..defaultMax).
+/// `defaultMax` when absent (0..defaultMax); `auto` (harmonics by an error target,
+/// readHarmonicsTarget) starts from 0..1.
 std::vector<int> readHarmonicList(SceneSection& section, int defaultMax);
+
+/// `harmonics: auto`'s keys: harmonics_tolerance (default 0.01: the peak's relative change
+/// over each of the last two raises of H) and harmonics_max (the highest H tried,
+/// default `defaultMax`). tolerance 0 when the harmonics are given (then those keys are
+/// refused).
+struct HarmonicsTargetKeys {
+  double tolerance = 0;
+  int max = 0;
+};
+HarmonicsTargetKeys readHarmonicsTarget(SceneSection& section, int defaultMax);
 
 /// `stability` of a section: auto (default), true or false; InputError naming the key otherwise.
 response::ForcedResponseSetup::Stability readStability(SceneSection& section);
 
 /// `harmonics_check_to` of a forced-response section: the highest harmonic the
 /// harmonics check of a frequency curve raises H to (0 when absent: H + 1); given,
-/// it must exceed the curve's H.
-int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic);
+/// it must exceed the curve's H. With harmonics: auto, harmonics_max (the key refused).
+int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic, const HarmonicsTargetKeys& target = {});
 
 /// report.md in the output directory: the run's summary, its figures (the SVGs the
 /// stages wrote), the studies' tables and the stages' error against run time.
@@ -161,6 +172,7 @@ struct DiscPlan {
   std::vector<int> nds;      ///< the nodal diameters the models are built for
   DiscResponseSpec spec;
   int harmonicsCheckTo = 0;
+  double harmonicsTolerance = 0;  ///< harmonics: auto's target (0: harmonics given)
   PeakStressSpec peakStress;
   std::vector<PeakStudySpec> peakStudies;
 };
@@ -169,7 +181,7 @@ struct DiscPlan {
 DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
                       int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm);
 /// disc_response's sweep keys (family, range, stability, continuation) with the check's top H.
-disc::DiscSweepOptions readSweepOptions(SceneSection& d, int harmonicsCheckTo,
+disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
                                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
 /// disc_response/hysteresis_contacts: the contact pairs whose loops are written.
 std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec);

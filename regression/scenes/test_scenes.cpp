@@ -25,6 +25,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
+#include "cyclone/disc/DiscPeakFollowing.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
@@ -210,7 +211,9 @@ void checkFollowedPeaks(const fs::path& dir) {
     int optima = 0, compared = 0;
     for (std::size_t i = 0; i < followed.size(); ++i) {
       optima += followed[i][4] == 1;
-      if (i > 0) EXPECT_GT(followed[i][0], followed[i - 1][0]);
+      if (i > 0) {
+        EXPECT_GT(followed[i][0], followed[i - 1][0]);
+      }
     }
     EXPECT_EQ(optima, 1);
     // peak_preload.h5: every peak's whole solution, its max |x(t)| the CSV's.
@@ -666,6 +669,16 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   EXPECT_NE(msg.find("peak_studies/mu/values"), std::string::npos) << msg;
   msg = peakStudy("      stiffness: {range: [1.0, 2.0]}\n");
   EXPECT_NE(msg.find("stiffness"), std::string::npos) << msg;
+  // The contact stiffness is followed as kn = kt: a scene with kn != kt is refused.
+  msg = failure(scene(3) + "    contact:\n      preload: 5.0\n      kn: 1.0e4\n      kt: 2.0e4\n    peak_studies:\n"
+                           "      contact_stiffness: {range: [1.0e3, 1.0e5]}\n",
+                dir);
+  EXPECT_NE(msg.find("peak_studies/contact_stiffness/range"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("kn and kt must be equal"), std::string::npos) << msg;
+  msg = failure(scene(3) + "    contact:\n      preload: 5.0\n      kn: 1.0e4\n      kt: 1.0e4\n    peak_studies:\n"
+                           "      contact_stiffness: {range: [2.0e4, 1.0e5]}\n",
+                dir);
+  EXPECT_NE(msg.find("must contain the scene's contact_stiffness"), std::string::npos) << msg;
 }
 
 namespace {
@@ -692,23 +705,36 @@ int expectNoStableMiddleBranch(const response::ForcedResponseResult& c) {
 
 }  // namespace
 
+// The thin 8-sector disc of discResponseScene through the library: its reduced models at
+// 10 000 rpm (linear prestress), EO 3, H = 1, 5 N preload, 20 N, and its reference curve
+// (no harmonics check).
+struct ThinDisc {
+  mesh::Mesh mesh;
+  disc::DiscResponseSpec spec;
+  disc::DiscReducedModels reduced;
+  disc::DiscSweepOptions sweep;
+  disc::DiscForcedResponse reference;
+  ThinDisc() {
+    mesh::ShroudedSectorParameters sector;
+    sector.sectors = 8, sector.boreRadius = 70.0, sector.meshSize = 14.0;
+    mesh = mesh::generateShroudedSector(sector);
+    disc::DiscModelSpec models;
+    models.sectors = 8, models.rpm = 10000.0, models.prestress = cyclic::PrestressKind::Linear;
+    spec.engineOrder = 3, spec.harmonics = {0, 1}, spec.contact.preload = 5.0, spec.excitation.amplitude = 20.0;
+    reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(8, 3, {0, 1}), "",
+                                           Tpetra::getDefaultComm());
+    sweep.harmonicsCheckTo = -1;
+    reference = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
+  }
+};
+
 // Studies other than the demo's preload, by the library's values (disc::studyDisc on the
 // thin 8-sector disc of discResponseScene): more damping lowers the peak, more force
 // raises it; the modes study runs on fewer modes of the same models.
 TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
   log::setQuiet(true);
-  mesh::ShroudedSectorParameters sector;
-  sector.sectors = 8, sector.boreRadius = 70.0, sector.meshSize = 14.0;
-  const auto mesh = mesh::generateShroudedSector(sector);
-  disc::DiscModelSpec models;
-  models.sectors = 8, models.rpm = 10000.0, models.prestress = cyclic::PrestressKind::Linear;
-  disc::DiscResponseSpec spec;
-  spec.engineOrder = 3, spec.harmonics = {0, 1}, spec.contact.preload = 5.0, spec.excitation.amplitude = 20.0;
-  const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(8, 3, {0, 1}), "",
-                                                    Tpetra::getDefaultComm());
-  disc::DiscSweepOptions sweep;
-  sweep.harmonicsCheckTo = -1;
-  const auto reference = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
+  const ThinDisc disc;
+  const auto& [mesh, spec, reduced, sweep, reference] = disc;
   // The reference curve covers the sweep (its first sweep folds back to the start at about
   // 346 Hz; a second sweep from the range's end traces the rest).
   ASSERT_FALSE(reference.curve.omega.empty());
@@ -733,6 +759,74 @@ TEST(Scenes, DiscStudiesMoveThePeakTheWayTheoryPredicts) {
   // study must run and give a finite peak.
   EXPECT_TRUE(std::isfinite(fewer) && fewer > 0);
   std::printf("middle-branch points (between folds) checked unstable: %d\n", expectNoStableMiddleBranch(reference.curve));
+}
+
+// The peak followed over the contact stiffness (kn = kt together, disc::followDiscPeak)
+// against frequency curves traced independently at three stiffnesses of its grid
+// (disc::studyDisc over the reference band), on the thin 8-sector disc: where the
+// followed peak lies in the band it must meet the swept curve's top there to what the
+// curve resolves of it (5e-3, as the demo's preload check), and no swept curve may rise
+// above the followed (largest) peak.
+TEST(Scenes, DiscPeakFollowedOverContactStiffnessMeetsSweptPeaks) {
+  log::setQuiet(true);
+  const ThinDisc disc;
+  const auto& [mesh, spec, reduced, sweep, reference] = disc;
+  // Two values below the scene's 1e4 N/mm, where the followed peak stays in the reference
+  // band, and one above, where it leaves it: at 2e4 the followed (largest) peak is the
+  // one near 1037 Hz, above the band's 998 Hz, while the curve over the band has its
+  // largest near 604 Hz, 0.4 % lower (measured; the stiffer contact lifts the stuck peak).
+  const std::vector<double> swept = {3.0e3, 6.0e3, 2.0e4};
+  disc::DiscPeakFollowingSpec following;
+  following.parameter = disc::DiscStudyParameter::ContactStiffness;
+  following.from = 2.0e3, following.to = 5.0e4, following.values = 5, following.extraValues = swept;
+  Timer timer;
+  const auto followed = disc::followDiscPeak(mesh, reduced, spec, reference.setup, reference.curve, reference.fromHz,
+                                             reference.toHz, following);
+  const double followSeconds = timer.seconds();
+  EXPECT_DOUBLE_EQ(followed.referenceValue, spec.contact.kt);
+  timer.restart();
+  const auto curves = disc::studyDisc(mesh, reduced, spec, reference, following.parameter, swept, sweep);
+  std::printf("followed over kn = kt: %zu peaks in %.1f s; %zu swept curves (%.1f..%.1f Hz) in %.1f s\n",
+              followed.curve.points.size(), followSeconds, curves.size(), reference.fromHz, reference.toHz,
+              timer.seconds());
+  for (const auto& p : followed.curve.points)
+    std::printf("  followed: kn = kt = %9.1f  %.6e at %8.3f Hz%s\n", p.parameter, p.measure,
+                p.frequency / (2 * M_PI), p.jump ? " (jump)" : "");
+  ASSERT_EQ(curves.size(), swept.size());
+  int compared = 0;
+  for (const auto& c : curves) {
+    ASSERT_TRUE(c.curve.branch.finished) << c.value << ": " << c.curve.branch.stopReason;
+    const continuation::FollowedPeak* match = nullptr;
+    for (const auto& p : followed.curve.points)
+      if (std::abs(p.parameter / c.value - 1) <= 1e-12) match = &p;
+    ASSERT_NE(match, nullptr) << c.value;
+    const double hz = match->frequency / (2 * M_PI);
+    // The followed peak is the largest: the curve's largest anywhere is not above it by
+    // more than the curve's resolution of its top.
+    EXPECT_LT(c.curve.peak, match->measure * (1 + 5e-3)) << c.value;
+    if (hz > reference.toHz || hz < reference.fromHz) {
+      std::printf("  kn = kt = %g: followed %.6e at %.3f Hz, outside the swept band; the swept curve's largest "
+                  "%.6e at %.3f Hz\n", c.value, match->measure, hz, c.curve.peak, c.curve.peakOmega / (2 * M_PI));
+      continue;
+    }
+    // The swept curve's top near the followed peak (within 2 % of its frequency).
+    double local = 0, localHz = 0;
+    for (std::size_t i = 0; i < c.curve.measure.size(); ++i) {
+      const double f = c.curve.omega[i] / (2 * M_PI);
+      if (std::abs(f / hz - 1) <= 0.02 && c.curve.measure[i] > local) local = c.curve.measure[i], localHz = f;
+    }
+    std::printf("  kn = kt = %g: followed %.6e at %.3f Hz; swept %.6e at %.3f Hz near it (%.1e, %.1e)\n", c.value,
+                match->measure, hz, local, localHz, match->measure / local - 1, hz / localHz - 1);
+    ASSERT_GT(local, 0) << "the swept curve has no point within 2 % of the followed peak's " << hz << " Hz";
+    ++compared;
+    EXPECT_NEAR(match->measure / local, 1.0, 5e-3) << c.value;
+    EXPECT_NEAR(hz / localHz, 1.0, 2e-3) << c.value;
+    // A peak search maximises: not below the curve's sampled top by more than its resolution.
+    EXPECT_GT(match->measure, local * (1 - 1e-3)) << c.value;
+  }
+  EXPECT_GE(compared, 2);
+  // A stiffer contact holds more: the followed peak moves up in frequency.
+  EXPECT_GT(followed.curve.points.back().frequency, followed.curve.points.front().frequency);
 }
 
 // Gap elements at a shroud pair (seed 8.6): interference stiffens the disc, so
@@ -1563,6 +1657,73 @@ TEST(Scenes, HarmonicsCheckComparesPeaksFoundBySearchWithTheReferences) {
       EXPECT_NE(line.find("H 3 2.87634"), std::string::npos) << line;
     }
   EXPECT_TRUE(said);
+}
+
+// harmonics: auto (harmonics by an error target): the Duffing oscillator from H = 1 up
+// until each of the peak's last two raises of H changed it by at most the tolerance (two:
+// its even harmonics are zero, so H = 1 -> 2 changes nothing), then the curve traced
+// again whole with that H. Its peak must lie within the tolerance of a curve traced
+// independently with two harmonics more.
+TEST(Scenes, HarmonicsByAnErrorTargetMeetACurveTracedWithTwoMore) {
+  log::setQuiet(true);
+  const auto dir = freshDir("harmonics_auto");
+  fs::create_directories(dir);
+  auto load = [&](const std::string& harmonics, const std::string& extra, const std::string& parameter = "omega") {
+    const std::string text =
+        "cyclone:\n  analysis: forced_response\n"
+        "  system:\n    dofs: 1\n    M: [1.0]\n    C: [0.05]\n    K: [1.0]\n"
+        "  nonlinear_elements:\n    hardening:\n      type: cubic\n      direction: [1.0]\n      k3: 0.1\n"
+        "  excitation:\n    force:\n      dof: 0\n      harmonic: 1\n      cos: 0.18\n"
+        "  harmonics: " + harmonics + "\n" + extra +
+        "  continuation:\n    parameter: " + parameter + "\n    from: 0.9\n    to: 1.4\n"
+        "  output:\n    dofs: [0]\n    stability: false\n";
+    const auto path = dir / "scene.yaml";
+    std::ofstream(path) << text;
+    return scenes::loadForcedResponseScene(path.string());
+  };
+  const double tolerance = 1e-3;
+  Timer timer;
+  auto setup = load("auto", "  harmonics_tolerance: 0.001\n");
+  const auto result = response::solveForcedResponse(setup);
+  const double autoSeconds = timer.seconds();
+  const auto& target = result.harmonicsTarget;
+  ASSERT_TRUE(target.retraced) << target.text;
+  EXPECT_EQ(target.tracedHarmonic, 1);
+  EXPECT_GE(target.reached, 3);
+  EXPECT_LE(target.change, tolerance);
+  EXPECT_EQ(setup.system->aft().harmonics().maxHarmonic(), target.reached);
+  EXPECT_TRUE(result.branch.finished) << result.branch.stopReason;
+  timer.restart();
+  auto reference = load("[" + std::to_string(target.reached + 2) + "]", "");
+  reference.harmonicsCheckTo = -1;
+  const auto two = response::solveForcedResponse(reference);
+  std::printf("harmonics: auto to %.0e: H = %d reached (change %.2e), peak %.9f at %.6f, %zu points, %.2f s in all; "
+              "H = %d traced alone: %.9f at %.6f, %.2f s; relative difference %.2e\n%s\n",
+              tolerance, target.reached, target.change, result.peak, result.peakOmega, result.branch.points.size(),
+              autoSeconds, target.reached + 2, two.peak, two.peakOmega, timer.seconds(), result.peak / two.peak - 1,
+              target.text.c_str());
+  EXPECT_NEAR(result.peak / two.peak, 1.0, tolerance);
+  // The search's peak at the level reached and the retraced curve's largest point agree to
+  // what the curve's points resolve of its top.
+  EXPECT_NEAR(result.peak / result.harmonicsCheck.levels.back().peak.value, 1.0, 1e-4);
+
+  // Bad combinations are named.
+  auto refused = [&](const std::string& harmonics, const std::string& extra, const std::string& parameter) {
+    try {
+      load(harmonics, extra, parameter);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  auto msg = refused("auto", "  harmonics_tolerance: 0.0\n", "omega");
+  EXPECT_NE(msg.find("harmonics_tolerance"), std::string::npos) << msg;
+  msg = refused("auto", "  harmonics_max: 2\n", "omega");
+  EXPECT_NE(msg.find("harmonics_max"), std::string::npos) << msg;
+  msg = refused("[3]", "  harmonics_tolerance: 0.01\n", "omega");
+  EXPECT_NE(msg.find("applies to harmonics: auto only"), std::string::npos) << msg;
+  msg = refused("auto", "", "force_scale\n    omega: 1.2");
+  EXPECT_NE(msg.find("continuation parameter omega"), std::string::npos) << msg;
 }
 
 // A force given by amplitude and phase is the same force as its cos/sin form:

@@ -20,6 +20,16 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   line.precision(6);
   line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
        << best.maxHarmonic;
+  const auto& target = curve.harmonicsTarget;
+  if (target.tolerance > 0 && target.reached >= 0) {  // harmonics by an error target, met (two raises)
+    headline.converged = true;
+    line << "; converged in the harmonics to " << 100 * target.tolerance << " % (each of the last two raises of H "
+         << "changed it by at most " << 100 * target.change << " %; the curve traced whole with H = " << target.reached
+         << ")";
+    headline.text = line.str();
+    return headline;
+  }
+  if (target.tolerance > 0) headline.converged = false;  // not met: said below, as without a target
   if (best.change < 0)
     line << "; an estimate: its convergence in the harmonics is not known (no level below it to compare)";
   else if (best.change <= kConverged)
@@ -33,6 +43,8 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   if (best.notFoundHarmonic >= 0)
     line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
          << "the last change";
+  if (target.tolerance > 0)
+    line << "; the error target " << 100 * target.tolerance << " % on the harmonics (harmonics: auto) was not met";
   headline.text = line.str();
   return headline;
 }
@@ -43,6 +55,7 @@ response::ForcedResponseResult sweepDisc(response::ForcedResponseSetup& setup, d
   setup.stability = options.stability;
   setup.harmonicsKey = "disc_response/harmonics";
   setup.harmonicsCheckTo = options.harmonicsCheckTo;
+  setup.harmonicsTolerance = options.harmonicsTolerance;
   setup.continuation = options.continuation;
   setup.continuation.from = 1.0, setup.continuation.to = toHz / fromHz;
   setup.fallback = options.fallback;

@@ -152,6 +152,62 @@ std::map<std::string, int> ForcedResponseResult::flagCounts() const {
   return counts;
 }
 
+namespace {
+
+// setup.harmonicsTolerance on a traced curve: the level the harmonics check stopped at
+// when its last two raises met the tolerance, and the curve traced again, whole, with
+// that level's harmonics (setup.system becomes it). Otherwise the curve stays, said.
+ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedResponseResult traced) {
+  HarmonicsTarget target;
+  target.tolerance = setup.harmonicsTolerance;
+  target.tracedHarmonic = setup.system->aft().harmonics().maxHarmonic();
+  const auto& levels = traced.harmonicsCheck.levels;
+  std::ostringstream text;
+  text.precision(3);
+  const double change = levelsMeetTarget(levels, target.tolerance);
+  if (change < 0) {
+    text << "harmonics by error target " << 100 * target.tolerance << " %: not met";
+    if (levels.empty()) text << " (no peak search: " << traced.harmonicsCheck.text << ")";
+    else if (!levels.back().peak.found) text << ": H = " << levels.back().maxHarmonic << " not found";
+    else text << " by H = " << levels.back().maxHarmonic << " (the largest tried)";
+    text << "; the curve stays the one traced with H = " << target.tracedHarmonic << ", its peak an estimate";
+    target.text = text.str();
+    log::warn(target.text);
+    traced.harmonicsTarget = target;
+    return traced;
+  }
+  const auto& reached = levels.back();
+  target.reached = reached.maxHarmonic;
+  target.change = change;
+  Timer timer;
+  setup.system = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(reached.harmonics), reached.samples);
+  const double tolerance = setup.harmonicsTolerance;
+  const int checkTo = setup.harmonicsCheckTo;
+  setup.harmonicsTolerance = 0, setup.harmonicsCheckTo = -1;  // the levels are known: no second check
+  std::ostringstream met;
+  met << "harmonics by error target: the peak met " << 100 * tolerance << " % at H = " << target.reached
+      << "; the curve traced again with it";
+  log::info(met.str());
+  ForcedResponseResult result = solveForcedResponse(setup);
+  setup.harmonicsTolerance = tolerance, setup.harmonicsCheckTo = checkTo;
+  target.retraced = true;
+  target.retraceSeconds = timer.seconds();
+  result.harmonicsCheck = traced.harmonicsCheck;
+  text << "harmonics by error target " << 100 * target.tolerance << " %: met at H = " << target.reached
+       << " (the last two raises changed the peak by at most " << 100 * change << " %); the curve traced whole with "
+       << "H = " << target.reached << " (" << result.branch.points.size() << " points, " << target.retraceSeconds
+       << " s), its largest point ";
+  text.precision(7);
+  text << result.peak << " against the peak search's " << reached.peak.value;
+  target.text = text.str();
+  log::info(target.text);
+  result.harmonicsTarget = target;
+  result.seconds += traced.seconds;
+  return result;
+}
+
+}  // namespace
+
 ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
   Timer timer;
   logProblem(setup);
@@ -192,6 +248,9 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
       result.harmonicsCheck = checkHarmonics(setup, result.branch, result.peakIndex, result.peak);
   }
   result.seconds = timer.seconds();
+  if (setup.harmonicsTolerance > 0 && setup.parameter == ForcedResponseSetup::Parameter::Omega &&
+      setup.harmonicsCheckTo >= 0 && n > 0 && !setup.outputDofs.empty())
+    return meetHarmonicsTarget(setup, std::move(result));
   return result;
 }
 

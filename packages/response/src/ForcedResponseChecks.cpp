@@ -131,6 +131,18 @@ continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& syst
 }
 
 
+}  // namespace
+
+double levelsMeetTarget(const std::vector<HarmonicsLevel>& levels, double target) {
+  const std::size_t n = levels.size();
+  if (n < 3 || !(levels[n - 1].peak.found && levels[n - 2].peak.found && levels[n - 3].peak.found)) return -1;
+  const double last = std::abs(levels[n - 1].peak.value / levels[n - 2].peak.value - 1),
+               before = std::abs(levels[n - 2].peak.value / levels[n - 3].peak.value - 1);
+  return std::max(last, before) <= target ? std::max(last, before) : -1;
+}
+
+namespace {
+
 // Solutions of one harmonic set at frequencies (Hz) near its peak: the traced curve's
 // points, a peak search's path.
 using SolvedPoints = std::vector<std::pair<double, Eigen::VectorXd>>;
@@ -163,7 +175,8 @@ std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& 
 // search path; for the first raised level also `curve`, the traced points). Stops at
 // a level whose peak is not found (a fold, no solution).
 std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
-                                       double scale, int dof, double tolerance, int upTo, const SolvedPoints& curve) {
+                                       double scale, int dof, double tolerance, int upTo, const SolvedPoints& curve,
+                                       double target) {
   std::vector<HarmonicsLevel> levels;
   std::unique_ptr<hbm::HarmonicBalanceSystem> lowerSystem, current;
   const hbm::HarmonicBalanceSystem* system = &hb;
@@ -211,6 +224,7 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
     level.seconds = timer.seconds();
     levels.push_back(level);
     if (!level.peak.found) break;
+    if (target > 0 && levelsMeetTarget(levels, target) >= 0) break;
     X = level.peak.x, hz = level.peak.parameter;
     lowerPoints = level.peak.path;
     if (levels.size() == 1) lowerPoints.insert(lowerPoints.end(), curve.begin(), curve.end());
@@ -279,8 +293,8 @@ HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Br
       if (std::abs(f / (w / (2 * M_PI)) - 1) <= 0.05) curve.emplace_back(f, p.x);
     }
     setup.apply(pt.parameter);
-    const auto levels =
-        peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo, curve);
+    const auto levels = peakByHarmonics(hb, pt.x, w / (2 * M_PI), scale, dof, setup.continuation.tolerance, upTo,
+                                        curve, setup.harmonicsTolerance);
     check.levels = levels;
     if (!levels.front().peak.found) {  // no interior peak with the curve's own harmonics
       check.text = pointHarmonicsCheck(setup, pt, peak) + " (no peak search: " + levels.front().peak.reason + ")";

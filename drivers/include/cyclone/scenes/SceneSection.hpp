@@ -24,6 +24,8 @@ public:
   bool has(const std::string& key) const;
   /// Whether the key holds a section (a map) rather than a value.
   bool isSection(const std::string& key) const;
+  /// The key holds the string `word` (e.g. harmonics: auto).
+  bool isWord(const std::string& key, const std::string& word) const;
   double getDouble(const std::string& key, double fallback);
   double requireDouble(const std::string& key);
   int getInt(const std::string& key, int fallback);

@@ -26,6 +26,9 @@ struct DiscSweepOptions {
   response::ForcedResponseSetup::Stability stability = response::ForcedResponseSetup::Stability::Auto;
   /// The highest harmonic the harmonics check raises H to (0: H + 1; < 0: no check).
   int harmonicsCheckTo = 0;
+  /// Harmonics by an error target (ForcedResponseSetup::harmonicsTolerance; 0: off): the
+  /// check stops where the peak met it and the curve is traced again with those harmonics.
+  double harmonicsTolerance = 0;
   continuation::ContinuationOptions continuation = discContinuationOptions();
   /// Retraces a curve `continuation` leaves incomplete (none: not retraced).
   std::optional<continuation::ContinuationOptions> fallback =
@@ -35,7 +38,9 @@ struct DiscSweepOptions {
 /// The peak a disc run reports: the harmonics check's highest level found.
 struct DiscHeadline {
   bool found = false;
-  bool converged = false;  ///< its change from the level below is at most 1 %, and no level above failed
+  /// Its change from the level below is at most 1 %, and no level above failed; with an
+  /// error target on the harmonics, the target met (its last two raises within it).
+  bool converged = false;
   response::HarmonicsConvergedPeak peak;
   std::string text;  ///< "friction-damped peak: max|x(t)| ... converged ... / an estimate ..."
 };

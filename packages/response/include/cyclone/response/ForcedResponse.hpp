@@ -16,6 +16,17 @@
 
 namespace cyclone::response {
 
+/// What the error target on the harmonics (setup.harmonicsTolerance) came to.
+struct HarmonicsTarget {
+  double tolerance = 0;   ///< 0: no target was set
+  int tracedHarmonic = 0; ///< the highest harmonic of the curve first traced
+  int reached = -1;       ///< the level whose last two raises met the tolerance (-1: none)
+  double change = -1;     ///< the larger of those two changes (-1: not reached)
+  bool retraced = false;  ///< the curve was traced again with the harmonics 0..reached
+  double retraceSeconds = 0;
+  std::string text;       ///< one line: reached or not, and why
+};
+
 struct ForcedResponseResult {
   continuation::Branch branch;
   std::string startMethod;  ///< how the first point was found (or why none was)
@@ -40,6 +51,7 @@ struct ForcedResponseResult {
   double peakOmega = 0;       ///< the frequency there (rad/s)
   SamplesCheck samplesCheck;      ///< at the peak point (empty text: not run)
   HarmonicsCheck harmonicsCheck;  ///< at the peak point (empty text: not run)
+  HarmonicsTarget harmonicsTarget;  ///< setup.harmonicsTolerance's outcome (tolerance 0: not asked)
   double seconds = 0;
 
   int unstablePoints() const;
@@ -54,7 +66,10 @@ std::vector<std::size_t> segmentBounds(const continuation::Branch& branch);
 /// Finds the first point, traces the curve over setup.continuation's range (with its
 /// fallbacks), computes stability (setup.stability), the flags and, when the curve has
 /// a point and an output DOF, the checks at its largest response (the harmonics check
-/// unless setup.harmonicsCheckTo < 0). An empty branch is returned, not thrown: its
+/// unless setup.harmonicsCheckTo < 0). With setup.harmonicsTolerance > 0 the check stops
+/// where the peak met it and the curve is traced again at that level (setup.system is
+/// replaced by it; the result's harmonicsCheck is the first curve's, which found it).
+/// An empty branch is returned, not thrown: its
 /// stopReason says why. InputError when the harmonic balance would not fit in memory.
 ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup);
 

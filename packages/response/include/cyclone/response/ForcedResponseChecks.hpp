@@ -68,6 +68,9 @@ struct HarmonicsCheck {
 HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
                               double peak);
 
+/// The larger of the last two raises' changes of the peak when both are at most `target`
+/// (the three last levels found), else -1: where harmonics by an error target stop.
+double levelsMeetTarget(const std::vector<HarmonicsLevel>& levels, double target);
 /// The solvers hold about four dense matrices of the unknowns' size: an InputError
 /// naming `harmonicsKey` where they would not fit in this machine's memory, a warning
 /// where each Newton iteration takes seconds.

@@ -46,6 +46,12 @@ struct ForcedResponseSetup {
   /// The harmonics check of a frequency curve finds the peak with H, H + 1, ... up to this
   /// (0: H + 1), each level by a peak search from the one before; < 0: no harmonics check.
   int harmonicsCheckTo = 0;
+  /// Harmonics by an error target (> 0; 0: off): the harmonics check stops at the first
+  /// level whose last two raises each changed the peak by at most this (relative; two,
+  /// because a symmetric nonlinearity leaves every other harmonic at zero), and the curve
+  /// is traced again, whole, with that level's harmonics (`system` becomes it). Frequency
+  /// curves only; a check that does not get there leaves the curve as traced, an estimate.
+  double harmonicsTolerance = 0;
   /// The scene key that sets the harmonics, for the message when the harmonic balance
   /// would not fit in memory.
   std::string harmonicsKey = "harmonics";
