@@ -135,6 +135,15 @@ void writeCurveSvg(const response::ForcedResponseSetup& setup, const response::F
                  std::vector<double>(y.begin() + i, y.begin() + j + 1), SvgPlot::palette(0), label, !stablePart);
     i = j;
   }
+  // The harmonics check's peaks at the other harmonic counts (each a peak search, not a
+  // traced curve): how far the traced curve's H is from converged, where it is seen.
+  if (byOmega) {
+    int colour = 1;
+    for (const auto& level : result.harmonicsCheck.levels)
+      if (level.peak.found && level.maxHarmonic != H)
+        plot.addMarkers({level.peak.parameter}, {level.peak.value}, SvgPlot::palette(colour++),
+                        "peak with H = " + std::to_string(level.maxHarmonic) + " (search)", 4.0);
+  }
   plot.write(path);
 }
 
