@@ -161,7 +161,8 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
         followDiscPeak(mesh, models, spec, reference, referenceResult, bandFromHz, bandToHz, following);
     const std::string unit = name == "preload" ? " / N" : name == "contact_stiffness" ? " / (N/mm)" : "";
     if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
-    const std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
+    std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
+    for (const auto& w : f.warnings) line += "; warning: " + w;
     summary.computed.push_back(line);
     log::info(line);
     summary.stages.push_back({"peak following (" + name + ")", f.curve.seconds,

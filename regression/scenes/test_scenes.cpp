@@ -1236,6 +1236,9 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   msg = failure(base + "  material:\n    rho: 0.0\n", dir);
   EXPECT_NE(msg.find("material/rho"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must be positive for modes"), std::string::npos) << msg;
+  msg = failure(base + "  material:\n    mass_quadrature: lumped\n", dir);
+  EXPECT_NE(msg.find("material/mass_quadrature"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("exact (the default) or stiffness_rule"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(dir / "frequencies.csv"));
 }
 
@@ -1724,6 +1727,8 @@ TEST(Scenes, HarmonicsByAnErrorTargetMeetACurveTracedWithTwoMore) {
   EXPECT_NE(msg.find("applies to harmonics: auto only"), std::string::npos) << msg;
   msg = refused("auto", "", "force_scale\n    omega: 1.2");
   EXPECT_NE(msg.find("continuation parameter omega"), std::string::npos) << msg;
+  msg = refused("auto", "  harmonics_tolerance: nan\n", "omega");
+  EXPECT_NE(msg.find("harmonics_tolerance"), std::string::npos) << msg;
 }
 
 // A force given by amplitude and phase is the same force as its cos/sin form:

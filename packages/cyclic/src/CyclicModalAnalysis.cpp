@@ -211,7 +211,8 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
   h.add(sector.axis.point.data(), sizeof(double) * 3).add(sector.axis.direction.data(), sizeof(double) * 3);
   h.add(problem.material.E).add(problem.material.nu).add(problem.material.rho);
   // Only when not the default, so that the default's cached results keep their keys.
-  if (problem.material.massQuadrature != fe::MassQuadrature::Exact) h.add(std::string("mass quadrature: stiffness rule"));
+  if (problem.material.massQuadrature != fe::MassQuadrature::Exact)
+    h.add(std::string("mass quadrature: stiffness rule"));
   h.add(problem.modesPerNodalDiameter).add(problem.shift).add(int(problem.method)).add(k);
   if (const auto* p = problem.prestress.get()) {
     h.add(std::string("prestress")).add(p->speedRpm).add(p->omega).add(int(p->nonlinear));

@@ -91,6 +91,13 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
     throw InputError("peak following/" + name, "values must lie in 3..400");
   if (referenceCurve.branch.points.empty())
     throw SolverError("peak following/" + name + ": the reference curve has no point to start from");
+  // An incomplete reference (a stretch left untraced) may have no true peak among its
+  // points: its largest local maximum can be where the traced part turned back, and the
+  // following then starts from that point, not from the resonance. Said, not hidden.
+  if (!referenceCurve.branch.finished)
+    out.warnings.push_back("the reference curve is incomplete (" + referenceCurve.branch.stopReason +
+                           "), so the peak followed may not be its resonance");
+  for (const auto& w : out.warnings) log::warn("peak following over the " + name + ": " + w);
 
   out.setup = makeDiscForcedResponse(mesh, models, spec);
   auto& setup = out.setup;

@@ -262,7 +262,9 @@ Teuchos::RCP<linalg::Matrix> Assembler::stiffness(const IsotropicElastic& materi
 }
 
 Teuchos::RCP<linalg::Matrix> Assembler::mass(const IsotropicElastic& material) const {
-  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) { return elementMass(t, X, material.rho, material.massQuadrature); });
+  return assemble([&](mesh::Index, ElementType t, const ElementCoords& X) {
+    return elementMass(t, X, material.rho, material.massQuadrature);
+  });
 }
 
 Teuchos::RCP<linalg::MultiVector> Assembler::assembleVector(const ElementVectorKernel& kernel) const {

@@ -5,6 +5,7 @@
 // value. The shroud contacts' Jacobian jumps where a stick-slip instant crosses a time
 // sample, and the peak condition's arclength tracking creeps there (docs/decisions.md):
 // a fixed-frequency Newton passes those corners.
+#include <string>
 #include <vector>
 
 #include "cyclone/continuation/PeakFollowing.hpp"
@@ -28,6 +29,7 @@ struct DiscPeakFollowing {
   double referenceValue = 0;              ///< the spec's value, where the following starts
   std::size_t startingPeaks = 0;          ///< the reference curve's prominent peaks followed
   response::ForcedResponseSetup setup;    ///< the system followed (at the last value followed)
+  std::vector<std::string> warnings;      ///< e.g. an incomplete reference curve to start from
   /// Over the force the peak grows with it: the optimum is the smallest peak per unit
   /// force (the most friction damping); otherwise the smallest peak.
   bool byForce = false;

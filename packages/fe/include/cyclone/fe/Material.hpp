@@ -4,7 +4,6 @@
 
 namespace cyclone::fe {
 
-/// Isotropic linear elastic material in a consistent unit set (examples: mm, N, s, t).
 /// How the mass-like element terms (consistent mass, centrifugal load, spin softening)
 /// are integrated. Exact: the element's mass rule (14 points for tet10, exact for its
 /// quadratic shape functions' products). StiffnessRule: the stiffness rule (4 points for
@@ -12,6 +11,7 @@ namespace cyclone::fe {
 /// it at its own discretisation (docs/verification.md), not for accuracy.
 enum class MassQuadrature { Exact, StiffnessRule };
 
+/// Isotropic linear elastic material in a consistent unit set (examples: mm, N, s, t).
 struct IsotropicElastic {
   std::string name = "titanium";
   double E = 1.16e5;      ///< Young's modulus (MPa)
