@@ -15,6 +15,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
+#include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/response/ForcedResponseTrace.hpp"
 
 namespace cyclone::response {
@@ -207,11 +208,46 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
   return branch;
 }
 
+// A curve both engines leave incomplete is traced again with twice the AFT samples,
+// then four times, where the system has elements whose sampled law has corners (those
+// that recommend a sample count: friction). The residual of a sampled friction law has a
+// corner wherever a stick-slip instant crosses a sample, and the corners shrink with the
+// samples: the thin 8-sector disc's H = 1 curve (256 samples) had a start at the range's
+// end and a kink at 582 Hz that neither engine passed, and is traced whole with 512 or
+// 1024 (docs/decisions.md, 2026-11-26). The finer system becomes setup.system (the
+// curve's points belong to it); where no retrace completes, the first curve stays.
+continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuation::Branch first) {
+  bool cornered = false;
+  for (const auto& e : setup.system->elements()) cornered = cornered || e.element->recommendedSamples() > 0;
+  if (!cornered) return first;
+  const int samples = setup.system->aft().numSamples();
+  std::unique_ptr<hbm::HarmonicBalanceSystem> original = std::move(setup.system);
+  std::ostringstream tried;
+  for (const int factor : {2, 4}) {
+    setup.system = hbm::withHarmonics(*original, original->aft().harmonics(), factor * samples);
+    log::info("forced response: incomplete with " + std::to_string(samples) + " AFT samples; traced again with " +
+              std::to_string(factor * samples));
+    auto again = traceWithFallback(setup, findStartingPoint(setup));
+    if (again.finished) {
+      again.stopReason += " (with " + std::to_string(factor * samples) + " AFT samples" + tried.str() + ": with " +
+                          std::to_string(samples) + " the curve was incomplete: " + first.stopReason + ")";
+      return again;
+    }
+    tried << "; " << factor * samples << " incomplete too";
+  }
+  setup.system = std::move(original);
+  setup.apply(setup.continuation.from);
+  first.stopReason += "; traced again with 2 and 4 times the " + std::to_string(samples) +
+                      " AFT samples, incomplete too";
+  return first;
+}
+
 }  // namespace
 
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
   const long unsettledBefore = hbm::FrictionContact::unsettledEvaluations();
   auto branch = traceWithFallback(setup, start);
+  if (!branch.finished && !branch.points.empty()) branch = traceWithMoreSamples(setup, std::move(branch));
   if (const long n = hbm::FrictionContact::unsettledEvaluations() - unsettledBefore; n > 0)
     log::warn("forced response: " + std::to_string(n) +
               " friction force evaluations ended on a slider state that is not periodic (the period map's "

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -34,6 +35,29 @@ namespace {
 
 using OP = Tpetra::Operator<>;
 using MV = linalg::MultiVector;
+
+// The eigen-solver's start block from its rows' global indices and a fixed seed: the
+// same on any number of processes and whatever was solved before. Tpetra's randomize
+// draws from a pool shared by every solve of the run, so a nodal diameter's modes (and
+// the reduced models built from them) differed at the solver's tolerance with the set
+// of diameters built before it, and a friction curve sensitive at that level was
+// traced whole with one set and not with another (docs/decisions.md, 2026-11-26).
+Teuchos::RCP<MV> seededStartBlock(const Teuchos::RCP<const linalg::Map>& map, int columns) {
+  auto X0 = Teuchos::rcp(new MV(map, columns));
+  for (int j = 0; j < columns; ++j) {
+    auto col = X0->getDataNonConst(j);
+    for (std::size_t i = 0; i < std::size_t(col.size()); ++i) {
+      // splitmix64 of (seed, column, global row): uniform in [-1, 1).
+      std::uint64_t z = 20261126ULL + 0x9E3779B97F4A7C15ULL * (std::uint64_t(j) * 0x100000000ULL +
+                                                              std::uint64_t(map->getGlobalElement(long(i))));
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+      z ^= z >> 31;
+      col[i] = 2.0 * double(z >> 11) * 0x1.0p-53 - 1.0;
+    }
+  }
+  return X0;
+}
 
 // Y = (K - sigma M)^{-1} M X
 class ShiftInvertOperator : public OP {
@@ -160,8 +184,7 @@ static ModalResult solveModesLobpcg(const linalg::Matrix& K, const linalg::Matri
   auto prec = makeMueLuPreconditioner(K, opt.nearNullSpace, opt.equationsPerNode);
   result.factorSeconds = timer.seconds();  // the preconditioner set-up stands in for the factorization
   timer.restart();
-  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), bs));
-  X0->randomize();
+  auto X0 = seededStartBlock(K.getRowMap(), bs);
   auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MV, OP>(
       Teuchos::rcpFromRef<const OP>(K), Teuchos::rcpFromRef<const OP>(M), X0));
   problem->setHermitian(true);
@@ -407,8 +430,7 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
 
   timer.restart();
   auto op = Teuchos::rcp(new ShiftInvertOperator(M, *factored));
-  auto X0 = Teuchos::rcp(new MV(K.getRowMap(), std::max(2, opt.blockSize)));
-  X0->randomize();
+  auto X0 = seededStartBlock(K.getRowMap(), std::max(2, opt.blockSize));
   const auto modes = blockKrylovSchur(K, op, Teuchos::rcpFromRef(M), X0, n, opt);
   finishModes(K, M, modes.lambda, modes.vectors, result);
   checkResiduals(result);
