@@ -117,9 +117,9 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
 
 }  // namespace
 
-std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec) {
+std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor) {
   std::vector<PeakStudySpec> out;
-  for (const std::string name : {"preload", "mu", "contact_stiffness", "force"}) {
+  for (const std::string name : {"preload", "mu", "contact_stiffness", "force", "loss_factor"}) {
     if (!peakStudies.has(name)) continue;
     auto s = peakStudies.section(name);
     const auto range = s.getDoubleList("range", {});
@@ -130,9 +130,10 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     s.rejectUnknownKeys();
     // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies';
     // contact_stiffness: kn = kt together, so the scene's two must be equal.
-    double refValue = 0;
+    // loss_factor: the reduced models' (reduced_model/loss_factor).
+    double refValue = lossFactor;
     try {
-      refValue = disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name));
+      if (name != "loss_factor") refValue = disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name));
     } catch (const InputError& e) {
       throw InputError(s.where("range"), e.problem());
     }

@@ -144,7 +144,7 @@ struct PeakStudySpec {
 /// Reads and checks disc_response/peak_studies before any work (InputError naming the
 /// key: a range that is not 0 < from < to or does not contain the scene's value, values
 /// outside 3..400, an unknown parameter).
-std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec);
+std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor);
 
 /// disc_response/peak_studies (preload, mu, force): the largest peak followed over the
 /// parameter by a peak search per value from the reference curve's peak; peak_<name>.csv

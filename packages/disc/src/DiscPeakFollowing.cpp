@@ -7,6 +7,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/rom/HybridFrfModel.hpp"
 
 namespace cyclone::disc {
 
@@ -56,6 +57,19 @@ void followBothWays(const continuation::PeakTrackingProblem& problem,
       whole.optimum = int(i);
 }
 
+// The models' loss factor (one for all diameters, as the scene builds them).
+double modelsLossFactor(const DiscReducedModels& models) {
+  double eta = -1;
+  for (const auto& [k, m] : models.models) {
+    const auto* h = dynamic_cast<const rom::HybridFrfModel*>(m.get());
+    if (!h) throw InputError("peak following/loss_factor", "needs hybrid or truncation models (their loss factor)");
+    if (eta >= 0 && h->lossFactor() != eta)
+      throw InputError("peak following/loss_factor", "the nodal diameters' models have different loss factors");
+    eta = h->lossFactor();
+  }
+  return eta;
+}
+
 }  // namespace
 
 double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter parameter) {
@@ -69,9 +83,11 @@ double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter param
                          "varies kn and kt together from one value: the scene's kn and kt must be equal");
       return spec.contact.kt;
     case DiscStudyParameter::Force: return 1.0;
+    case DiscStudyParameter::LossFactor:
+      throw InputError("peak following/loss_factor", "its reference value is the reduced models' (followDiscPeak)");
     default:
-      throw InputError("peak following",
-                       "follows the preload, mu, contact_stiffness or force, not " + discStudyParameterName(parameter));
+      throw InputError("peak following", "follows the preload, mu, contact_stiffness, force or loss_factor, not " +
+                                             discStudyParameterName(parameter));
   }
 }
 
@@ -81,7 +97,8 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
                                  double bandToHz, const DiscPeakFollowingSpec& following) {
   const std::string name = discStudyParameterName(following.parameter);
   DiscPeakFollowing out;
-  out.referenceValue = discReferenceValue(spec, following.parameter);
+  const bool byLossFactor = following.parameter == DiscStudyParameter::LossFactor;
+  out.referenceValue = byLossFactor ? modelsLossFactor(models) : discReferenceValue(spec, following.parameter);
   if (!(following.from > 0 && following.to > following.from))
     throw InputError("peak following/" + name, "needs a range 0 < from < to");
   if (!(out.referenceValue >= following.from && out.referenceValue <= following.to))
@@ -103,12 +120,24 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   auto& setup = out.setup;
   setup.outputDofs = reference.outputDofs;
   out.byForce = following.parameter == DiscStudyParameter::Force;
-  if (out.byForce)
+  if (out.byForce) {
     setup.parameter = response::ForcedResponseSetup::Parameter::ForceScale;
-  else
+  } else if (byLossFactor) {
+    // The damping lives in the reduced models' receptance: the system is made again from
+    // the models at each value (the condensed disc at H = 1: well under the peak search's
+    // cost per value).
+    setup.parameter = response::ForcedResponseSetup::Parameter::Rebuilt;
+    setup.rebuiltParameter = name;
+    setup.rebuiltAt = out.referenceValue;
+    setup.rebuild = [&mesh, &models, spec](double eta) {
+      if (!(eta >= 0)) throw InputError("peak following/loss_factor", "must be >= 0");
+      return makeDiscForcedResponse(mesh, variedModels(models, eta, 0), spec).system;
+    };
+  } else {
     response::selectElementParameter(
         setup, "contact", following.parameter == DiscStudyParameter::ContactStiffness ? "stiffness" : name,
         out.referenceValue);
+  }
   const auto problem = response::peakFollowingProblem(setup);
   // Every peak of the reference curve that stands out (5 %), so one that overtakes the
   // largest is seen; its frequencies from the curve's parameter (omega / omegaUnit).
@@ -123,12 +152,15 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   o.bandFrom = 2 * M_PI * bandFromHz, o.bandTo = 2 * M_PI * bandToHz;
   o.sweep = reference.continuation;
   o.sweep.checkpoints = nullptr;
-  o.locateOptimum = !out.byForce;  // over the force, the grid's
+  // Over the force the grid's optimum; over the loss factor the peak falls as the damping
+  // grows, so the optimum is the range's end, not located.
+  o.locateOptimum = !out.byForce && !byLossFactor;
   out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues);
   log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
             "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
             " Hz");
   followBothWays(problem, starts, o, out);
+  setup.rebuild = nullptr;  // it refers to the caller's mesh and models; the system stays at the last value
   if (out.curve.points.empty()) throw SolverError("peak following/" + name + ": " + out.curve.stopReason);
   return out;
 }

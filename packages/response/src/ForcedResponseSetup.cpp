@@ -75,6 +75,7 @@ std::string ForcedResponseSetup::parameterName() const {
     case Parameter::Omega: return "omega";
     case Parameter::ForceScale: return "force_scale";
     case Parameter::DampingScale: return "damping_scale";
+    case Parameter::Rebuilt: return rebuiltParameter;
     case Parameter::ElementParameter: return elementNames.at(parameterElements.at(0)) + "/" + elementParameter;
   }
   return "";
@@ -85,6 +86,10 @@ std::pair<double, double> ForcedResponseSetup::apply(double p) {
     case Parameter::Omega: return {p * omegaUnit, excitationScale};
     case Parameter::ForceScale: return {omega, p};
     case Parameter::DampingScale: system->setDampingScale(p); break;
+    case Parameter::Rebuilt:
+      if (!rebuild) throw InputError("continuation", "a rebuilt parameter needs its rebuild function");
+      if (!(p == rebuiltAt)) system = rebuild(p), rebuiltAt = p;
+      break;
     case Parameter::ElementParameter:
       for (std::size_t i = 0; i < parameterElements.size(); ++i)
         system->replaceElement(parameterElements[i], baseElements[i]->withParameter(elementParameter, p));

@@ -15,9 +15,10 @@ namespace cyclone::disc {
 
 struct DiscPeakFollowingSpec {
   /// Preload, FrictionCoefficient, ContactStiffness (kn = kt = the value, as the value-list
-  /// study) or Force (InputError for another).
+  /// study), Force or LossFactor (the reduced models' structural damping, the system made
+  /// again from them per value; InputError for another).
   DiscStudyParameter parameter = DiscStudyParameter::Preload;
-  double from = 0, to = 0;  ///< 0 < from < to, containing the spec's value (1 for Force)
+  double from = 0, to = 0;  ///< 0 < from < to, containing the spec's value (1 for Force; the models' loss factor)
   int values = 24;          ///< evenly in log over the range (3..400)
   /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
   std::vector<double> extraValues;
@@ -37,7 +38,8 @@ struct DiscPeakFollowing {
 };
 
 /// The spec's value of `parameter` (preload, mu, kn = kt; 1 for Force: a scale of the
-/// excitation). InputError for contact stiffness when the spec's kn and kt differ.
+/// excitation). InputError for contact stiffness when the spec's kn and kt differ, and for
+/// the loss factor (the models', not the spec's).
 double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter parameter);
 
 /// The reference curve's peak followed over `following`: the system is spec's over

@@ -3,6 +3,8 @@
 // (frequency, excitation scale, a nonlinear element's parameter, damping scale), the
 // range and continuation settings and the outputs, as the library traces it
 // (ForcedResponse.hpp) and a scene describes it (scenes/ForcedResponseScene.hpp).
+#include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,9 +21,10 @@ struct ForcedResponseSetup {
   std::unique_ptr<hbm::HarmonicBalanceSystem> system;
   /// The continuation parameter: the excitation frequency (rad/s); the excitation
   /// scale s (f = s f_ex); a parameter of one nonlinear element (e.g. a contact's
-  /// preload, kn, kt, mu); or a scale of the damping. All but Omega at the fixed
-  /// frequency `omega`.
-  enum class Parameter { Omega, ForceScale, ElementParameter, DampingScale } parameter = Parameter::Omega;
+  /// preload, kn, kt, mu); a scale of the damping; or a parameter of the model itself
+  /// (Rebuilt: `rebuild` makes the system at each value, e.g. a reduced model's loss
+  /// factor, which lives inside its receptance). All but Omega at the fixed frequency `omega`.
+  enum class Parameter { Omega, ForceScale, ElementParameter, DampingScale, Rebuilt } parameter = Parameter::Omega;
   double omega = 0;            ///< the fixed excitation frequency unless the parameter is Omega
   /// Omega: omega = p x omegaUnit, so the continuation runs on a parameter of order one
   /// (e.g. the frequency over a reference frequency for an FE disc, whose omega is ~1e4 rad/s).
@@ -35,6 +38,11 @@ struct ForcedResponseSetup {
   std::vector<int> parameterElements;
   std::string elementParameter;  ///< ElementParameter: which of their parameters
   std::vector<std::shared_ptr<const hbm::NonlinearElement>> baseElements;  ///< ElementParameter: as the scene gives them
+  /// Rebuilt: the system at a value (called when apply() gets a value other than the last
+  /// one: a parameter study evaluates one value at a time), and the parameter's name.
+  std::function<std::unique_ptr<hbm::HarmonicBalanceSystem>(double)> rebuild;
+  std::string rebuiltParameter;
+  double rebuiltAt = std::nan("");  ///< the value `system` was last rebuilt at
   continuation::ContinuationOptions continuation;
   /// Where `continuation` leaves the curve incomplete, traceForcedResponse traces it
   /// again with these options (another engine; the range and tolerance are continuation's).
@@ -59,10 +67,11 @@ struct ForcedResponseSetup {
   /// nodal diameter); the run's summary lists them.
   std::vector<std::string> notes;
 
-  /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale.
+  /// The parameter's name for outputs: omega, force_scale, <element>/<parameter>, damping_scale,
+  /// or rebuiltParameter.
   std::string parameterName() const;
-  /// Puts the system at parameter value p (swaps the element or sets the damping
-  /// scale) and returns the frequency and excitation scale that go with it.
+  /// Puts the system at parameter value p (swaps the element, sets the damping scale or
+  /// rebuilds the system) and returns the frequency and excitation scale that go with it.
   std::pair<double, double> apply(double p);
 };
 
