@@ -222,6 +222,13 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
   if (!cornered) return first;
   const int samples = setup.system->aft().numSamples();
   std::unique_ptr<hbm::HarmonicBalanceSystem> original = std::move(setup.system);
+  // Without checkpoints: a trace's key (its problem's residual at the start, the options)
+  // does not see the sample count, and at a start from rest the residual is the same at
+  // any count, so a retrace would read back the coarser trace saved under that key.
+  const auto continuationBefore = setup.continuation;
+  const auto fallbackBefore = setup.fallback;
+  setup.continuation.checkpoints = nullptr;
+  if (setup.fallback) setup.fallback->checkpoints = nullptr;
   std::ostringstream tried;
   for (const int factor : {2, 4}) {
     setup.system = hbm::withHarmonics(*original, original->aft().harmonics(), factor * samples);
@@ -229,12 +236,14 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
               std::to_string(factor * samples));
     auto again = traceWithFallback(setup, findStartingPoint(setup));
     if (again.finished) {
+      setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
       again.stopReason += " (with " + std::to_string(factor * samples) + " AFT samples" + tried.str() + ": with " +
                           std::to_string(samples) + " the curve was incomplete: " + first.stopReason + ")";
       return again;
     }
     tried << "; " << factor * samples << " incomplete too";
   }
+  setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
   setup.system = std::move(original);
   setup.apply(setup.continuation.from);
   first.stopReason += "; traced again with 2 and 4 times the " + std::to_string(samples) +
