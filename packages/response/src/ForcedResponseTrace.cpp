@@ -28,7 +28,37 @@ const char* engineName(continuation::ContinuationOptions::Engine engine) {
 
 }  // namespace
 
-StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
+namespace {
+
+// The start searches a trace has run, so that its passes (each engine, each end of the
+// range) do not repeat one: the second engine's pass searches the same far end again,
+// and a search's Newton attempts and the predictor-corrector's ramp do not depend on the
+// pass (only LOCA's ramp does, through its own options). Keyed by the search's parameter
+// value and what was tried; it lives for one trace, over one system.
+struct StartSearches {
+  struct Entry {
+    double from;
+    std::string what;  // "newton", or the ramp's engine and the options it reads
+    Eigen::VectorXd x;  // empty: failed
+    std::string method;  // how it converged, or why not
+  };
+  std::vector<Entry> entries;
+  const Entry* find(double from, const std::string& what) const {
+    for (const auto& e : entries)
+      if (e.from == from && e.what == what) return &e;
+    return nullptr;
+  }
+};
+
+std::string rampSignature(const continuation::ContinuationOptions& r) {
+  if (r.engine != continuation::ContinuationOptions::Engine::Loca) return "ramp: predictor-corrector";
+  std::ostringstream s;
+  s << "ramp: LOCA " << r.arcLengthScaling << r.stopWhereItTurnsBack << r.restartWhereTheCorrectorJumps
+    << int(r.lineSearch);
+  return s.str();
+}
+
+StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
   const auto& hb = *setup.system;
   const auto& o = setup.continuation;
   const auto [omega, scale] = setup.apply(o.from);  // the start's frequency and excitation scale
@@ -42,8 +72,21 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
     start.seconds = timer.seconds();
     return true;
   };
-  if (attempt(Eigen::VectorXd::Zero(hb.numUnknowns()), "Newton from rest")) return start;
-  if (attempt(hb.linearSolution(omega, scale), "Newton from the linear solution")) return start;
+  auto reuse = [&](const StartSearches::Entry& e) {
+    start.x = e.x;
+    start.method = e.method + " (found before in this trace)";
+    start.seconds = timer.seconds();
+  };
+  const auto* newton = searches.find(o.from, "newton");
+  if (newton && newton->x.size() > 0) return reuse(*newton), start;
+  if (!newton) {
+    if (attempt(Eigen::VectorXd::Zero(hb.numUnknowns()), "Newton from rest") ||
+        attempt(hb.linearSolution(omega, scale), "Newton from the linear solution")) {
+      searches.entries.push_back({o.from, "newton", start.x, start.method});
+      return start;
+    }
+    searches.entries.push_back({o.from, "newton", Eigen::VectorXd(), "stagnated"});
+  }
 
   // The ramp: the excitation scale from 0 to the start's scale at the start frequency.
   setup.apply(o.from);  // the element or damping value of the start
@@ -63,18 +106,33 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
   std::string why;
   for (Engine engine : {o.engine, o.engine == Engine::Loca ? Engine::PredictorCorrector : Engine::Loca}) {
     r.engine = engine;
+    const std::string name = engineName(engine), what = rampSignature(r);
+    if (const auto* earlier = searches.find(o.from, what)) {
+      if (earlier->x.size() > 0) return reuse(*earlier), start;
+      why += (why.empty() ? "" : "; ") + name + ": " + earlier->method;
+      continue;
+    }
     const auto branch = continuation::traceBranch(ramp, Eigen::VectorXd::Zero(hb.numUnknowns()), r);
-    const std::string name = engineName(engine);
     if (!branch.points.empty() && std::abs(branch.points.back().parameter - scale) <= 1e-9 * std::abs(scale) + 1e-12 &&
         attempt(branch.points.back().x, "ramp of the excitation from rest (" + name + ", " +
-                                            std::to_string(branch.points.size()) + " points)"))
+                                            std::to_string(branch.points.size()) + " points)")) {
+      searches.entries.push_back({o.from, what, start.x, start.method});
       return start;
+    }
+    searches.entries.push_back({o.from, what, Eigen::VectorXd(), branch.stopReason});
     why += (why.empty() ? "" : "; ") + name + ": " + branch.stopReason;
   }
   start.method = "no converged start: Newton from rest and from the linear solution stagnated, and the ramp of the "
                  "excitation from rest stopped (" + why + ")";
   start.seconds = timer.seconds();
   return start;
+}
+
+}  // namespace
+
+StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
+  StartSearches searches;
+  return searchStart(setup, searches);
 }
 
 namespace {
@@ -111,10 +169,11 @@ double farthestTowardsTheStart(const continuation::Branch& down, const continuat
 // start can fail where the response is large and close to a fold or an internal
 // resonance, and converge at the other end, off resonance: the default disc at H = 5,
 // docs/scenes.md).
-continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingPoint& failed) {
+continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingPoint& failed,
+                                     StartSearches& searches) {
   const auto upward = setup.continuation;
   setup.continuation.from = upward.to, setup.continuation.to = upward.from;
-  const StartingPoint far = findStartingPoint(setup);
+  const StartingPoint far = searchStart(setup, searches);
   continuation::Branch down;
   if (far.x.size() > 0) {
     const double scale = setup.unknownScale != 0 ? setup.unknownScale : far.x.cwiseAbs().maxCoeff();
@@ -137,8 +196,9 @@ continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingP
 }
 
 // Both sweeps with setup.continuation's engine.
-continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start) {
-  if (start.x.size() == 0) return traceFromTheEnd(setup, start);
+continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start,
+                                        StartSearches& searches) {
+  if (start.x.size() == 0) return traceFromTheEnd(setup, start, searches);
   double scale = setup.unknownScale;
   if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
   auto branch = traceOneSweep(setup, start.x, scale);
@@ -153,7 +213,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
     reached = upward.to >= upward.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
   if (branch.returnedToStart) reached = branch.reached;
   setup.continuation.from = upward.to, setup.continuation.to = upward.from;
-  const StartingPoint far = findStartingPoint(setup);
+  const StartingPoint far = searchStart(setup, searches);
   continuation::Branch down;
   if (far.x.size() > 0) down = traceOneSweep(setup, far.x, scale);
   setup.continuation = upward;
@@ -185,8 +245,9 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
 // engines fail in different places: the predictor-corrector where a stuck contact's
 // static state drifts at an almost constant frequency, LOCA at stick-slip kinks that
 // its corrector's plane misses); the complete curve, or else the first, is kept.
-continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start) {
-  auto branch = traceWithOneEngine(setup, start);
+continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start,
+                                       StartSearches& searches) {
+  auto branch = traceWithOneEngine(setup, start, searches);
   if (branch.finished || !setup.fallback) return branch;
   const auto primary = setup.continuation;
   continuation::ContinuationOptions other = *setup.fallback;
@@ -194,8 +255,8 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
   log::info(std::string("forced response: ") + engineName(primary.engine) + " left the curve incomplete (" +
             branch.stopReason + "); traced again with " + engineName(other.engine));
   setup.continuation = other;
-  const StartingPoint again = start.x.size() > 0 ? start : findStartingPoint(setup);
-  auto second = traceWithOneEngine(setup, again);
+  const StartingPoint again = start.x.size() > 0 ? start : searchStart(setup, searches);
+  auto second = traceWithOneEngine(setup, again, searches);
   setup.continuation = primary;
   setup.apply(primary.from);
   if (second.finished) {
@@ -234,7 +295,8 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
     setup.system = hbm::withHarmonics(*original, original->aft().harmonics(), factor * samples);
     log::info("forced response: incomplete with " + std::to_string(samples) + " AFT samples; traced again with " +
               std::to_string(factor * samples));
-    auto again = traceWithFallback(setup, findStartingPoint(setup));
+    StartSearches searches;  // a new system: nothing searched yet
+    auto again = traceWithFallback(setup, searchStart(setup, searches), searches);
     if (again.finished) {
       setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
       again.stopReason += " (with " + std::to_string(factor * samples) + " AFT samples" + tried.str() + ": with " +
@@ -255,7 +317,8 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
 
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
   const long unsettledBefore = hbm::FrictionContact::unsettledEvaluations();
-  auto branch = traceWithFallback(setup, start);
+  StartSearches searches;
+  auto branch = traceWithFallback(setup, start, searches);
   if (!branch.finished && !branch.points.empty()) branch = traceWithMoreSamples(setup, std::move(branch));
   if (const long n = hbm::FrictionContact::unsettledEvaluations() - unsettledBefore; n > 0)
     log::warn("forced response: " + std::to_string(n) +
