@@ -114,7 +114,7 @@ TEST(TraceCheckpoint, AFinishedTraceIsReadBackWithoutComputing) {
   };
   const auto again = continuation::traceBranch(counted, rest, o);
   expectSameBranch(again, first);
-  EXPECT_EQ(residuals, 1);  // the key's, at the guess
+  EXPECT_EQ(residuals, 5);  // the key's, at the guess and four probes around it
 }
 
 TEST(TraceCheckpoint, OtherProblemsAndOptionsHaveOtherKeys) {
@@ -122,6 +122,16 @@ TEST(TraceCheckpoint, OtherProblemsAndOptionsHaveOtherKeys) {
   const auto o = rangeOnly();
   const std::string key = continuation::traceKey(duffing(0.18), rest, o);
   EXPECT_NE(key, continuation::traceKey(duffing(0.19), rest, o));  // another force: another residual at the guess
+  // Another cubic stiffness, invisible at rest (the residual there is the force alone):
+  // the probes around the guess tell it (a key of the residual at the guess alone read a
+  // gap-clearance study's curve back from another clearance's trace).
+  auto stiffer = test_support::singleTermOscillator(1, 0.05, 1, 0.2, 0.18);
+  stiffer.measure = [](const Eigen::VectorXd& x) { return x.norm(); };
+  Eigen::VectorXd F1, F2;
+  duffing(0.18).residual(rest, o.from, F1);
+  stiffer.residual(rest, o.from, F2);
+  ASSERT_EQ((F1 - F2).norm(), 0.0);  // the same at the guess
+  EXPECT_NE(key, continuation::traceKey(stiffer, rest, o));
   auto o2 = o;
   o2.to = 2.5;
   EXPECT_NE(key, continuation::traceKey(duffing(0.18), rest, o2));

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <sstream>
 
 #include "ContinuationEngines.hpp"
@@ -25,19 +26,27 @@ ContinuationOptions locaOptions() {
 
 std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   ContentHash h;
-  h.add(std::string("cyclone trace 1")).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
+  h.add(std::string("cyclone trace 2")).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
   h.add(o.initialStep).add(o.minStep).add(o.maxStep).add(o.maxSteps).add(o.tolerance).add(o.maxNewtonIterations);
   h.add(o.turnAngle).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
   h.add(int(o.restartWhereTheCorrectorJumps)).add(int(o.lineSearch)).add(int(bool(problem.measure)));
   h.add((long long)guess.size()).add(guess.data(), std::size_t(guess.size()) * sizeof(double));
-  // The residual at the guess tells the problem: two problems with the same size and
-  // options that agree there would start alike.
-  Eigen::VectorXd F;
-  try {
-    problem.residual(guess, o.from, F);
-    h.add((long long)F.size()).add(F.data(), std::size_t(F.size()) * sizeof(double));
-  } catch (...) {
-    h.add(std::string("residual failed at the guess"));
+  // The residual tells the problem: at the guess, and at points around it over many
+  // decades, because a start from rest does not show what acts only in motion (a
+  // friction coefficient, a contact stiffness, a gap's clearance, a cubic spring, the
+  // damping): a clearance study's curve at 0.01 mm was read back from the trace at 0
+  // (docs/decisions.md, 2026-11-26). The probes are deterministic, so the same problem
+  // gives the same key.
+  Eigen::VectorXd F, probe(guess.size());
+  for (Eigen::Index i = 0; i < probe.size(); ++i) probe(i) = std::sin(1.0 + 0.6180339887498949 * double(i));
+  const double size = std::max(1.0, guess.size() > 0 ? guess.cwiseAbs().maxCoeff() : 0.0);
+  for (const double amplitude : {0.0, 1e-6, 1e-3, 1.0, 1e3}) {
+    try {
+      problem.residual(guess + (amplitude * size) * probe, o.from, F);
+      h.add((long long)F.size()).add(F.data(), std::size_t(F.size()) * sizeof(double));
+    } catch (...) {
+      h.add(std::string("residual failed at a probe"));
+    }
   }
   return h.hex();
 }
