@@ -14,6 +14,9 @@
 //    the reduced model's modal realization finds it stable;
 //  - in between, friction damps: the curve's peak lies below the stuck limit's
 //    peak and between the two limits' resonances, and moves up with the preload;
+//  - the peak followed over the preload (issue 21) tends to those linear limits' peaks:
+//    with a constant normal load (kn = 0) the slip force mu N0 alone sets the friction,
+//    free as it vanishes, stuck as it grows;
 //  - gap elements (seed 8.6) at the outermost pairs: with an interference larger
 //    than the motion they are linear normal springs, with a clearance larger
 //    than it they are absent; the same linear formula gives both references.
@@ -35,6 +38,7 @@
 #include "cyclone/rom/SectorReceptance.hpp"
 #include "cyclone/response/ForcedResponseTrace.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscPeakFollowing.hpp"
 
 using namespace cyclone;
 using namespace cyclone::response;
@@ -370,5 +374,89 @@ TEST(DiscFriction, HarmonicAndSampleRefinementNearThePeak) {
       EXPECT_LT(err, 0.01 * truncation) << byN[i].samples << " samples: the samples must not limit the accuracy";
     }
   }
+  std::printf("total %.1f s\n", total.seconds());
+}
+
+// The resonance peak followed over the preload (disc::followDiscPeak, issue 21) reaches
+// the linear limits' peaks at both ends, six decades each way from 5 N. The contacts carry
+// a constant normal load (kn = 0), so the slip force mu N0 alone sets the friction: at
+// N0 = 1e-6 N (slip force 4e-7 N against a 20 N excitation) the contacts are free, at
+// 1e6 N stuck, and each limit is the linear response formed in complex arithmetic
+// (linearLimits), its peak located by golden section near the followed peak's
+// frequency. Harmonic 1 alone: the measure max|x(t)| is then |x_1|, the linear limits'
+// quantity. About 26 s (its own ctest entry, disc_peak_preload_limits).
+TEST(DiscFriction, PeakFollowedOverPreloadReachesTheLinearLimits) {
+  Timer total;
+  Disc disc(10000.0, {0, 1});
+  auto spec = responseSpec({1}, 5.0, 0.0, 1e4);
+  DiscSweepOptions sweep;
+  sweep.harmonicsCheckTo = -1;
+  sweep.stability = ForcedResponseSetup::Stability::Never;
+  const auto reference = solveDiscForcedResponse(disc.mesh, disc.models, spec, sweep);
+  std::printf("reference (5 N, kn = 0, H = 1): %zu points, %.2f..%.2f Hz, peak %.6e at %.3f Hz, %.1f s (%s)\n",
+              reference.curve.branch.points.size(), reference.fromHz, reference.toHz, reference.curve.peak,
+              reference.curve.peakOmega / (2 * M_PI), total.seconds(), reference.curve.branch.stopReason.c_str());
+  ASSERT_TRUE(reference.curve.branch.finished) << reference.curve.branch.stopReason;
+  DiscPeakFollowingSpec following;
+  following.parameter = DiscStudyParameter::Preload;
+  following.from = 1e-6, following.to = 1e6, following.values = 25;
+  Timer tf;
+  const auto followed = followDiscPeak(disc.mesh, disc.models, spec, reference.setup, reference.curve,
+                                       reference.fromHz, reference.toHz, following);
+  std::printf("followed over the preload: %zu values in %.1f s\n", followed.curve.points.size(), tf.seconds());
+  for (const auto& q : followed.curve.points)
+    std::printf("  preload %10.4g N: %.8e mm at %9.4f Hz%s\n", q.parameter, q.measure, q.frequency / (2 * M_PI),
+                q.jump ? " (jump)" : "");
+  ASSERT_TRUE(followed.curve.complete) << followed.curve.stopReason;
+  ASSERT_GE(followed.curve.points.size(), 2u);
+  // The output DOF among the retained DOFs (the linear limits' index; the condensed
+  // system numbers its coordinates otherwise).
+  auto retained = spec;
+  retained.condensed = false;
+  const int dofOut = makeDiscForcedResponse(disc.mesh, disc.models, retained, 1.0).outputDofs.front();
+  ASSERT_EQ(followed.curve.points.front().parameter, following.from);
+  ASSERT_EQ(followed.curve.points.back().parameter, following.to);
+  // The linear peak of one limit near hz: golden section on |x(w)| over hz (1 +- 5 %).
+  auto linearPeak = [&](bool stuck, double hz) {
+    auto amplitude = [&](double f) {
+      const auto l = linearLimits(disc.mesh, disc.models, spec, 2 * M_PI * f);
+      return std::abs((stuck ? l.stuck : l.free)(dofOut));
+    };
+    double a = 0.95 * hz, b = 1.05 * hz;
+    const double g = 0.5 * (std::sqrt(5.0) - 1);
+    double c = b - g * (b - a), d = a + g * (b - a), fc = amplitude(c), fd = amplitude(d);
+    while (b - a > 1e-9 * hz) {
+      if (fc > fd) b = d, d = c, fd = fc, c = b - g * (b - a), fc = amplitude(c);
+      else a = c, c = d, fc = fd, d = a + g * (b - a), fd = amplitude(d);
+    }
+    EXPECT_GT(a, 0.951 * hz) << "the linear peak is not inside the bracket around " << hz << " Hz";
+    EXPECT_LT(b, 1.049 * hz) << "the linear peak is not inside the bracket around " << hz << " Hz";
+    return std::pair<double, double>{0.5 * (a + b), amplitude(0.5 * (a + b))};
+  };
+  for (const bool stuck : {false, true}) {
+    const auto& end = stuck ? followed.curve.points.back() : followed.curve.points.front();
+    const double hz = end.frequency / (2 * M_PI);
+    const auto [peakHz, peak] = linearPeak(stuck, hz);
+    const double errAmplitude = std::abs(end.measure / peak - 1), errHz = std::abs(hz / peakHz - 1);
+    std::printf("%s limit (preload %g N): followed %.8e mm at %.4f Hz, linear %.8e mm at %.4f Hz: %.2e, %.2e\n",
+                stuck ? "stuck" : "free", end.parameter, end.measure, hz, peak, peakHz, errAmplitude, errHz);
+    // The peak search's tolerance (1e-7 in frequency) and the sampled measure (max over 256
+    // samples of a harmonic: 1 - cos(pi / 256) = 7.5e-5 below |x_1| at worst).
+    EXPECT_LT(errAmplitude, 1e-4);
+    EXPECT_LT(errHz, 1e-5);
+  }
+  // Towards the free limit the friction's damping falls with the slip force (at large slip
+  // a Jenkins element's equivalent damping is 4 mu N0 / (pi a)): the deficit below the free
+  // peak shrinks about in proportion to the preload over the grid's first decade.
+  const auto& first = followed.curve.points[0];
+  const auto& decade = followed.curve.points[2];
+  ASSERT_NEAR(decade.parameter / first.parameter, 10.0, 1e-9);
+  const auto [freeHz, freePeak] = linearPeak(false, first.frequency / (2 * M_PI));
+  const double deficitFirst = 1 - first.measure / freePeak, deficitDecade = 1 - decade.measure / freePeak;
+  std::printf("deficit below the free peak: %.3e at %g N, %.3e at %g N (ratio %.2f)\n", deficitFirst, first.parameter,
+              deficitDecade, decade.parameter, deficitDecade / deficitFirst);
+  EXPECT_GT(deficitFirst, 0);
+  EXPECT_GT(deficitDecade / deficitFirst, 5.0);
+  EXPECT_LT(deficitDecade / deficitFirst, 20.0);
   std::printf("total %.1f s\n", total.seconds());
 }

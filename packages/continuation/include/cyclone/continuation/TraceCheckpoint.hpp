@@ -44,7 +44,10 @@ public:
   double intervalSeconds = 5;
 };
 
-/// The key traceBranch files a trace under (32 hex digits).
+/// The key traceBranch files a trace under (32 hex digits): a digest of the problem's size,
+/// the options, the guess, and the residual at the guess and at four fixed probes around it
+/// (what acts only in motion, such as a gap's clearance or a friction coefficient, does not
+/// show in the residual at rest).
 std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& guess,
                      const ContinuationOptions& options);
 
