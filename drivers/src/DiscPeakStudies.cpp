@@ -55,23 +55,26 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
     if (!out) throw Error("cannot write " + file.finalPath());
     file.commit();
   }
-  post::SvgPlot plot("Resonance peak against the " + name + " (followed)", "log10(" + name + unit + ")",
-                     "peak max |x(t)|");
+  // The clearance on a linear axis (zero and interference are values of it), the others in log.
+  const bool linear = name == "clearance";
+  auto axis = [linear](double v) { return linear ? v : std::log10(v); };
+  post::SvgPlot plot("Resonance peak against the " + name + " (followed)",
+                     linear ? name + unit : "log10(" + name + unit + ")", "peak max |x(t)|");
   std::vector<double> x, y;
-  for (const auto& p : curve.points) x.push_back(std::log10(p.parameter)), y.push_back(p.measure);
+  for (const auto& p : curve.points) x.push_back(axis(p.parameter)), y.push_back(p.measure);
   plot.addLine(x, y, post::SvgPlot::palette(0), "followed peak");
   if (!listed.empty()) {
     std::vector<double> lx, ly;
-    for (const auto& s : listed) lx.push_back(std::log10(s.value)), ly.push_back(s.peak);
+    for (const auto& s : listed) lx.push_back(axis(s.value)), ly.push_back(s.peak);
     plot.addMarkers(lx, ly, post::SvgPlot::palette(2), "frequency curves (studies)");
   }
   if (curve.optimum >= 0) {
     const auto& o = curve.points[std::size_t(curve.optimum)];
-    plot.addMarkers({std::log10(o.parameter)}, {o.measure}, "#000000", "optimum", 5.0);
+    plot.addMarkers({axis(o.parameter)}, {o.measure}, "#000000", "optimum", 5.0);
     std::ostringstream text;
     text.precision(4);
     text << "optimum " << o.parameter;
-    plot.addText(std::log10(o.parameter), o.measure, text.str());
+    plot.addText(axis(o.parameter), o.measure, text.str());
   }
   plot.write(outDir + "/peak_" + name + ".svg");
   summary.written.push_back(outDir + "/peak_" + name + ".csv");
@@ -105,7 +108,7 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
     int compared = 0;
     for (const auto& sp : it->second)
       for (const auto& p : whole.points)
-        if (std::abs(p.parameter - sp.value) <= 1e-12 * std::abs(sp.value) && sp.peak > 0) {
+        if (std::abs(p.parameter - sp.value) <= 1e-12 * std::max(std::abs(sp.value), 1e-6) && sp.peak > 0) {
           worst = std::max(worst, std::abs(p.measure / sp.peak - 1));
           ++compared;
         }
@@ -119,12 +122,16 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
 
 std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor) {
   std::vector<PeakStudySpec> out;
-  for (const std::string name : {"preload", "mu", "contact_stiffness", "force", "loss_factor"}) {
+  for (const std::string name : {"preload", "mu", "contact_stiffness", "force", "loss_factor", "clearance"}) {
     if (!peakStudies.has(name)) continue;
     auto s = peakStudies.section(name);
     const auto range = s.getDoubleList("range", {});
-    if (range.size() != 2 || !(range[0] > 0 && range[1] > range[0]))
+    if (name == "clearance") {  // mm, of any sign (negative: interference)
+      if (range.size() != 2 || !(std::isfinite(range[0]) && std::isfinite(range[1]) && range[1] > range[0]))
+        throw InputError(s.where("range"), "needs [from, to] with from < to (mm; negative: interference)");
+    } else if (range.size() != 2 || !(range[0] > 0 && range[1] > range[0])) {
       throw InputError(s.where("range"), "needs [from, to] with 0 < from < to");
+    }
     const int values = s.getInt("values", 24);
     if (values < 3 || values > 400) throw InputError(s.where("values"), "must lie in 3..400");
     s.rejectUnknownKeys();
@@ -160,7 +167,10 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     for (const auto& p : listedHere) following.extraValues.push_back(p.value);
     const disc::DiscPeakFollowing f =
         followDiscPeak(mesh, models, spec, reference, referenceResult, bandFromHz, bandToHz, following);
-    const std::string unit = name == "preload" ? " / N" : name == "contact_stiffness" ? " / (N/mm)" : "";
+    const std::string unit = name == "preload"             ? " / N"
+                             : name == "contact_stiffness" ? " / (N/mm)"
+                             : name == "clearance"         ? " / mm"
+                                                           : "";
     if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
     std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     for (const auto& w : f.warnings) line += "; warning: " + w;

@@ -923,7 +923,9 @@ TEST(Scenes, DiscPeakFollowedOverLossFactorMeetsSweptPeaks) {
 // each value (a trace key of the residual at rest alone read the 0.005 mm curve back from
 // the 0.002 mm trace: a gap open at rest does not show its clearance there), both curves
 // whole with their peaks inside the band, the wider clearance's peak lower (less contact
-// stiffness). Bad gap input is named. (Until 2026-11-26 this test compared an incomplete
+// stiffness). The peak followed over the clearance (peak_studies, issue 21: a peak search
+// per value on a linear grid) meets both curves' tops. Bad gap input is named. (Until
+// 2026-11-26 this test compared an incomplete
 // curve's top with the far end of the range, under an interference whose 100 N at one node
 // pair overloads the 5 N friction contacts: docs/decisions.md.)
 TEST(Scenes, DiscGapClearanceStudyTracesEachValue) {
@@ -939,7 +941,9 @@ TEST(Scenes, DiscGapClearanceStudyTracesEachValue) {
            "      clearance: 0.002\n"
            "    hysteresis_contacts: [0, 1]\n"
            "    studies:\n"
-           "      clearance: [0.002, 0.005]\n";
+           "      clearance: [0.002, 0.005]\n"
+           "    peak_studies:\n"
+           "      clearance: {range: [-0.001, 0.005], values: 4}\n";
   };
   scenes::SceneOverrides o;
   o.outputDirectory = dir.string();
@@ -964,6 +968,30 @@ TEST(Scenes, DiscGapClearanceStudyTracesEachValue) {
               peak[0], hz[0], clearance, peak[1], hz[1], wider);
   EXPECT_NE(peak[1], peak[0]);  // traced, not the other clearance's curve read back
   EXPECT_LT(hz[1], hz[0]);
+  {  // the followed peak at the study's values: the curves' tops (to what a curve resolves, 5e-3)
+    std::ifstream followed(dir / "peak_clearance.csv");
+    ASSERT_TRUE(followed.good());
+    std::getline(followed, line);
+    int rows = 0, met = 0;
+    double lowest = 1e300;
+    while (std::getline(followed, line)) {
+      double value, f, amplitude;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &value, &f, &amplitude), 3) << line;
+      ++rows;
+      lowest = std::min(lowest, value);
+      for (std::size_t i = 0; i < values.size(); ++i)
+        if (std::abs(value - values[i]) <= 1e-12) {
+          ++met;
+          std::printf("  followed at %.3f mm: %.6g mm at %.3f Hz (swept %.6g at %.3f Hz)\n", value, amplitude, f,
+                      peak[i], hz[i]);
+          EXPECT_NEAR(amplitude / peak[i], 1.0, 5e-3) << value;
+          EXPECT_NEAR(f / hz[i], 1.0, 1e-3) << value;
+        }
+    }
+    EXPECT_EQ(rows, 5);  // -0.001, 0.001, 0.003, 0.005 and the scene's 0.002
+    EXPECT_EQ(met, 2);
+    EXPECT_NEAR(lowest, -0.001, 1e-12);  // an interference followed too (a linear grid through zero)
+  }
   {  // the gap's rows at the peak: no tangential motion or force, the spring's normal force
     std::ifstream loops(dir / "disc_hysteresis.csv");
     std::getline(loops, line);
@@ -1005,6 +1033,11 @@ TEST(Scenes, DiscGapClearanceStudyTracesEachValue) {
   const auto msg = failure(scene("[100000]"), dir);
   EXPECT_NE(msg.find("gap/pairs"), std::string::npos) << msg;
   EXPECT_NE(failure(scene("[0, 0]"), dir).find("twice"), std::string::npos);
+  // A followed range that leaves out the scene's clearance, or runs backwards, is named.
+  for (const std::string range : {"[0.003, 0.008]", "[0.005, -0.001]"}) {
+    const auto bad = failure(std::regex_replace(scene("[0]"), std::regex("\\[-0.001, 0.005\\]"), range), dir);
+    EXPECT_NE(bad.find("peak_studies/clearance/range"), std::string::npos) << range << ": " << bad;
+  }
 }
 
 TEST(Scenes, UnknownKeyIsNamedWithItsPath) {

@@ -48,7 +48,9 @@ TEST(TraceCheckpointFile, AnUnfinishedStateReadsBackExactly) {
     EXPECT_EQ(r->branch.points[i].parameter, s.branch.points[i].parameter);
     EXPECT_EQ(r->branch.points[i].x, s.branch.points[i].x);
     EXPECT_EQ(r->tangentX[i].size(), s.tangentX[i].size());
-    if (s.tangentX[i].size() > 0) EXPECT_EQ(r->tangentX[i], s.tangentX[i]);
+    if (s.tangentX[i].size() > 0) {
+      EXPECT_EQ(r->tangentX[i], s.tangentX[i]);
+    }
     EXPECT_EQ(r->tangentP[i], s.tangentP[i]);
     EXPECT_EQ(r->measures[i], s.measures[i]);
   }

@@ -13,15 +13,25 @@ namespace cyclone::disc {
 
 namespace {
 
-// The grid: n values evenly in log over the range, with the reference value and the
-// extra values inside it, sorted, without repeats.
-std::vector<double> followedValues(double from, double to, int n, double reference, const std::vector<double>& extra) {
-  auto v = continuation::logarithmicValues(from, to, n);
+// The grid: n values evenly in log over the range (evenly for a parameter that may be zero
+// or negative: the clearance, whose negative values are interferences), with the
+// reference value and the extra values inside it, sorted, without repeats.
+std::vector<double> followedValues(double from, double to, int n, double reference, const std::vector<double>& extra,
+                                   bool linear) {
+  std::vector<double> v;
+  if (linear)
+    for (int i = 0; i < n; ++i) v.push_back(from + (to - from) * double(i) / double(n - 1));
+  else
+    v = continuation::logarithmicValues(from, to, n);
   v.push_back(reference);
   for (double x : extra)
     if (x >= from && x <= to) v.push_back(x);
   std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end(), [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }),
+  const double span = std::abs(to - from);
+  v.erase(std::unique(v.begin(), v.end(),
+                      [linear, span](double a, double b) {
+                        return std::abs(a - b) <= 1e-12 * (linear ? span : std::abs(b));
+                      }),
           v.end());
   return v;
 }
@@ -83,10 +93,14 @@ double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter param
                          "varies kn and kt together from one value: the scene's kn and kt must be equal");
       return spec.contact.kt;
     case DiscStudyParameter::Force: return 1.0;
+    case DiscStudyParameter::Clearance:
+      if (spec.gap.pairs.empty())
+        throw InputError("peak following/clearance", "needs gap elements (disc_response/gap/pairs)");
+      return spec.gap.clearance;
     case DiscStudyParameter::LossFactor:
       throw InputError("peak following/loss_factor", "its reference value is the reduced models' (followDiscPeak)");
     default:
-      throw InputError("peak following", "follows the preload, mu, contact_stiffness, force or loss_factor, not " +
+      throw InputError("peak following", "follows the preload, mu, contact_stiffness, force, loss_factor or clearance, not " +
                                              discStudyParameterName(parameter));
   }
 }
@@ -99,8 +113,11 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   DiscPeakFollowing out;
   const bool byLossFactor = following.parameter == DiscStudyParameter::LossFactor;
   out.referenceValue = byLossFactor ? modelsLossFactor(models) : discReferenceValue(spec, following.parameter);
-  if (!(following.from > 0 && following.to > following.from))
-    throw InputError("peak following/" + name, "needs a range 0 < from < to");
+  const bool byClearance = following.parameter == DiscStudyParameter::Clearance;
+  if (byClearance ? !(std::isfinite(following.from) && std::isfinite(following.to) && following.to > following.from)
+                  : !(following.from > 0 && following.to > following.from))
+    throw InputError("peak following/" + name, byClearance ? "needs a range from < to (mm; negative: interference)"
+                                                           : "needs a range 0 < from < to");
   if (!(out.referenceValue >= following.from && out.referenceValue <= following.to))
     throw InputError("peak following/" + name, "the range must contain the scene's value " +
                                                    std::to_string(out.referenceValue));
@@ -133,6 +150,8 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
       if (!(eta >= 0)) throw InputError("peak following/loss_factor", "must be >= 0");
       return makeDiscForcedResponse(mesh, variedModels(models, eta, 0), spec).system;
     };
+  } else if (byClearance) {
+    response::selectElementParameter(setup, "gap", "gap", out.referenceValue);  // the unilateral spring's gap
   } else {
     response::selectElementParameter(
         setup, "contact", following.parameter == DiscStudyParameter::ContactStiffness ? "stiffness" : name,
@@ -155,7 +174,8 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   // Over the force the grid's optimum; over the loss factor the peak falls as the damping
   // grows, so the optimum is the range's end, not located.
   o.locateOptimum = !out.byForce && !byLossFactor;
-  out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues);
+  out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues,
+                            byClearance);
   log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
             "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
             " Hz");

@@ -15,11 +15,13 @@ namespace cyclone::disc {
 
 struct DiscPeakFollowingSpec {
   /// Preload, FrictionCoefficient, ContactStiffness (kn = kt = the value, as the value-list
-  /// study), Force or LossFactor (the reduced models' structural damping, the system made
-  /// again from them per value; InputError for another).
+  /// study), Force, LossFactor (the reduced models' structural damping, the system made
+  /// again from them per value) or Clearance (the gap elements'; InputError for another).
   DiscStudyParameter parameter = DiscStudyParameter::Preload;
-  double from = 0, to = 0;  ///< 0 < from < to, containing the spec's value (1 for Force; the models' loss factor)
-  int values = 24;          ///< evenly in log over the range (3..400)
+  /// 0 < from < to (from < to of any sign for the clearance: negative is interference),
+  /// containing the spec's value (1 for Force; the models' loss factor).
+  double from = 0, to = 0;
+  int values = 24;  ///< evenly in log over the range (evenly for the clearance; 3..400)
   /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
   std::vector<double> extraValues;
 };
