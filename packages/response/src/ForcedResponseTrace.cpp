@@ -78,7 +78,10 @@ StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
     start.seconds = timer.seconds();
   };
   const auto* newton = searches.find(o.from, "newton");
-  if (newton && newton->x.size() > 0) return reuse(*newton), start;
+  if (newton && newton->x.size() > 0) {
+    reuse(*newton);
+    return start;
+  }
   if (!newton) {
     if (attempt(Eigen::VectorXd::Zero(hb.numUnknowns()), "Newton from rest") ||
         attempt(hb.linearSolution(omega, scale), "Newton from the linear solution")) {
@@ -108,7 +111,10 @@ StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
     r.engine = engine;
     const std::string name = engineName(engine), what = rampSignature(r);
     if (const auto* earlier = searches.find(o.from, what)) {
-      if (earlier->x.size() > 0) return reuse(*earlier), start;
+      if (earlier->x.size() > 0) {
+        reuse(*earlier);
+        return start;
+      }
       why += (why.empty() ? "" : "; ") + name + ": " + earlier->method;
       continue;
     }
