@@ -56,7 +56,7 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
     file.commit();
   }
   // The clearance on a linear axis (zero and interference are values of it), the others in log.
-  const bool linear = name == "clearance";
+  const bool linear = name == "clearance" || name == "speed";
   auto axis = [linear](double v) { return linear ? v : std::log10(v); };
   post::SvgPlot plot("Resonance peak against the " + name + " (followed)",
                      linear ? name + unit : "log10(" + name + unit + ")", "peak max |x(t)|");
@@ -89,19 +89,29 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
   const auto& grid = f.grid;
   const bool byForce = f.byForce;
   const auto merit = [&f](const continuation::FollowedPeak& p) { return f.merit(p); };
-  const auto& best = whole.points[std::size_t(whole.optimum)];
   int jumps = 0;
   for (const auto& p : whole.points) jumps += p.jump;
   std::ostringstream line;
   line.precision(6);
   line << "peak following over the " << name << " " << range[0] << ".." << range[1] << ": " << whole.points.size()
        << " values in " << whole.seconds << " s (" << whole.searches << " peak searches, " << whole.solves
-       << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); smallest peak"
-       << (byForce ? " per unit force " : " ") << merit(best) << " at " << name << " " << best.parameter << " ("
-       << best.frequency / (2 * M_PI) << " Hz, "
-       << (best.parameter == grid.front() || best.parameter == grid.back()
-               ? "at the range's end: the optimum may lie beyond it"
-               : whole.optimumLocated ? "located between its neighbours" : "the grid's") << ")";
+       << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); ";
+  if (whole.optimum < 0) {  // the speed: an operating condition, its largest peak
+    std::size_t top = 0;
+    for (std::size_t i = 0; i < whole.points.size(); ++i)
+      if (whole.points[i].measure > whole.points[top].measure) top = i;
+    const auto& p = whole.points[top];
+    line << "largest peak " << p.measure << " at " << name << " " << p.parameter << " (" << p.frequency / (2 * M_PI)
+         << " Hz; the reduced models built at each " << name << ")";
+  } else {
+    const auto& best = whole.points[std::size_t(whole.optimum)];
+    line << "smallest peak" << (byForce ? " per unit force " : " ") << merit(best) << " at " << name << " "
+         << best.parameter << " (" << best.frequency / (2 * M_PI) << " Hz, "
+         << (best.parameter == grid.front() || best.parameter == grid.back()
+                 ? "at the range's end: the optimum may lie beyond it"
+                 : whole.optimumLocated ? "located between its neighbours" : "the grid's")
+         << ")";
+  }
   // The value-list study's peaks (frequency curves) at the same values.
   if (const auto it = listed.find(name); it != listed.end()) {
     double worst = 0;
@@ -120,15 +130,19 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
 
 }  // namespace
 
-std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor) {
+std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor,
+                                           double rpm) {
   std::vector<PeakStudySpec> out;
-  for (const std::string name : {"preload", "mu", "contact_stiffness", "force", "loss_factor", "clearance"}) {
+  for (const std::string name : {"preload", "mu", "contact_stiffness", "force", "loss_factor", "clearance", "speed"}) {
     if (!peakStudies.has(name)) continue;
     auto s = peakStudies.section(name);
     const auto range = s.getDoubleList("range", {});
     if (name == "clearance") {  // mm, of any sign (negative: interference)
       if (range.size() != 2 || !(std::isfinite(range[0]) && std::isfinite(range[1]) && range[1] > range[0]))
         throw InputError(s.where("range"), "needs [from, to] with from < to (mm; negative: interference)");
+    } else if (name == "speed") {  // rpm; 0 is a speed (no prestress)
+      if (range.size() != 2 || !(range[0] >= 0 && std::isfinite(range[1]) && range[1] > range[0]))
+        throw InputError(s.where("range"), "needs [from, to] with 0 <= from < to (rpm)");
     } else if (range.size() != 2 || !(range[0] > 0 && range[1] > range[0])) {
       throw InputError(s.where("range"), "needs [from, to] with 0 < from < to");
     }
@@ -137,10 +151,11 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     s.rejectUnknownKeys();
     // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies';
     // contact_stiffness: kn = kt together, so the scene's two must be equal.
-    // loss_factor: the reduced models' (reduced_model/loss_factor).
-    double refValue = lossFactor;
+    // loss_factor: the reduced models' (reduced_model/loss_factor); speed: the speed they
+    // are built at (reduced_model/speed_rpm).
+    double refValue = name == "speed" ? rpm : lossFactor;
     try {
-      if (name != "loss_factor") refValue = disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name));
+      if (name != "loss_factor" && name != "speed") refValue = disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name));
     } catch (const InputError& e) {
       throw InputError(s.where("range"), e.problem());
     }
@@ -154,7 +169,7 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
 }
 
 void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                     const DiscResponseSpec& spec, const ForcedResponseSetup& reference,
+                     const DiscPlan& plan, const ForcedResponseSetup& reference,
                      const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
                      const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
                      linalg::CommPtr comm, SceneSummary& summary) {
@@ -165,19 +180,32 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     following.from = study.from, following.to = study.to, following.values = study.values;
     const auto listedHere = listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{};
     for (const auto& p : listedHere) following.extraValues.push_back(p.value);
+    // The speed: the scene's reduced models (same kind, nodal diameters and cache) at each speed.
+    following.modelsAtSpeed = [&mesh, &plan, comm](double speed) {
+      auto ms = plan.modelSpec;
+      ms.rpm = speed;
+      ms.checkNodalDiameter = -1;  // the check against the full FE model is the scene speed's
+      // Only the diameters the followed harmonics live on (not the harmonics check's).
+      const auto nds = disc::nodalDiametersFor(ms.sectors, plan.spec.engineOrder, plan.spec.harmonics);
+      return disc::buildDiscReducedModels(mesh, ms, nds, plan.cacheDir, comm);
+    };
     const disc::DiscPeakFollowing f =
-        followDiscPeak(mesh, models, spec, reference, referenceResult, bandFromHz, bandToHz, following);
+        followDiscPeak(mesh, models, plan.spec, reference, referenceResult, bandFromHz, bandToHz, following);
     const std::string unit = name == "preload"             ? " / N"
                              : name == "contact_stiffness" ? " / (N/mm)"
                              : name == "clearance"         ? " / mm"
+                             : name == "speed"             ? " / rpm"
                                                            : "";
     if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
     std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     for (const auto& w : f.warnings) line += "; warning: " + w;
     summary.computed.push_back(line);
     log::info(line);
-    summary.stages.push_back({"peak following (" + name + ")", f.curve.seconds,
-                              "each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's"});
+    summary.stages.push_back(
+        {"peak following (" + name + ")", f.curve.seconds,
+         std::string("each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's") +
+             (name == "speed" ? "; the reduced models built again at each speed (no interpolation between speeds)"
+                              : "")});
   }
 }
 

@@ -162,7 +162,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   auto& spec = plan.spec;
   if (forcedResponse) {
     spec = readResponseSpec(d);
-    plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec, plan.modelSpec.lossFactor);
+    plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec, plan.modelSpec.lossFactor, plan.modelSpec.rpm);
     plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
     const HarmonicsTargetKeys target = readHarmonicsTarget(d, 5);

@@ -333,11 +333,17 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   auto r = scene.section("reduced_model");
   auto d = scene.section("disc_response");
   const DiscPlan readPlan = readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir, comm);
+  // The sweep's keys too are checked before the models are built (a bad key must not
+  // wait for that work).
+  std::optional<disc::DiscSweepOptions> read;
+  std::vector<int> hysteresisContacts;
+  if (forcedResponse) {
+    read = readSweepOptions(d, readPlan, checkpoints);
+    hysteresisContacts = readHysteresisContacts(d, mesh, readPlan.spec);
+  }
   const auto models = reducedModelsStage(mesh, readPlan, outDir, comm, summary);
   if (!forcedResponse) return;
-
-  const auto sweep = readSweepOptions(d, readPlan, checkpoints);
-  const auto hysteresisContacts = readHysteresisContacts(d, mesh, readPlan.spec);
+  const auto& sweep = *read;
   auto solved = referenceStage(mesh, models, readPlan, sweep, outDir, comm, summary);
   // Harmonics by an error target traced the reference again with the harmonics that met
   // it: the stages after it (studies, peak following) work with those.
@@ -362,7 +368,7 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
       if (!peaks.empty()) studyPeaks[name] = peaks;
     }
   studies.rejectUnknownKeys();
-  followDiscPeaks(plan.peakStudies, mesh, models, plan.spec, solved.setup, solved.curve, solved.fromHz, solved.toHz,
+  followDiscPeaks(plan.peakStudies, mesh, models, plan, solved.setup, solved.curve, solved.fromHz, solved.toHz,
                   studyPeaks, outDir, comm, summary);
   d.rejectUnknownKeys();
   if (studyCurves > 0)

@@ -135,8 +135,10 @@ struct StudyPeak {
 };
 
 /// One peak study of disc_response/peak_studies: the parameter, its range and values.
+struct DiscPlan;
+
 struct PeakStudySpec {
-  std::string name;  ///< preload, mu or force
+  std::string name;  ///< preload, mu, contact_stiffness, force, loss_factor, clearance or speed
   double from = 0, to = 0;
   int values = 24;
 };
@@ -144,14 +146,15 @@ struct PeakStudySpec {
 /// Reads and checks disc_response/peak_studies before any work (InputError naming the
 /// key: a range that is not 0 < from < to or does not contain the scene's value, values
 /// outside 3..400, an unknown parameter).
-std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor);
+std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor,
+                                           double rpm);
 
 /// disc_response/peak_studies (preload, mu, force): the largest peak followed over the
 /// parameter by a peak search per value from the reference curve's peak; peak_<name>.csv
 /// and .svg (the optimum marked, the value-list study's peaks beside it); lines for the
 /// summary, with the largest difference from the study's peaks at shared values.
 void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                     const DiscResponseSpec& spec, const ForcedResponseSetup& reference,
+                     const DiscPlan& plan, const ForcedResponseSetup& reference,
                      const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
                      const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
                      linalg::CommPtr comm, SceneSummary& summary);

@@ -683,6 +683,18 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   msg = peakStudy("      loss_factor: {range: [0.01, 0.05]}\n");
   EXPECT_NE(msg.find("peak_studies/loss_factor/range"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must contain the scene's loss_factor (0.006"), std::string::npos) << msg;
+  // The speed's reference is the reduced models' (reduced_model/speed_rpm, or loads/speed_rpm; 0 here).
+  msg = peakStudy("      speed: {range: [-100.0, 12000.0]}\n");
+  EXPECT_NE(msg.find("peak_studies/speed/range"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("0 <= from < to"), std::string::npos) << msg;
+  msg = peakStudy("      speed: {range: [1000.0, 5000.0]}\n");
+  EXPECT_NE(msg.find("must contain the scene's speed (0"), std::string::npos) << msg;
+  // The sweep's keys too before the reduced models are built (they took 33 s on the
+  // default disc before a misspelt stability was named).
+  const auto early = freshDir("disc_eo_early");
+  msg = failure(scene(3) + "    stability: never\n", early);
+  EXPECT_NE(msg.find("disc_response/stability"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(early / "reduced_models")) << "models built before the key was read";
 }
 
 namespace {

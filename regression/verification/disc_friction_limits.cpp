@@ -460,3 +460,78 @@ TEST(DiscFriction, PeakFollowedOverPreloadReachesTheLinearLimits) {
   EXPECT_LT(deficitDecade / deficitFirst, 20.0);
   std::printf("total %.1f s\n", total.seconds());
 }
+
+// The resonance peak followed over the rotational speed (disc::followDiscPeak, issue 21):
+// the prestress, the modes and the reduced models change with the speed and are built
+// again at each value of the grid (modelsAtSpeed), so there is no interpolation error
+// between speeds. The reference: at the grid's far end the models built anew there and
+// the frequency curve traced over the reference band (solveDiscForcedResponse), whose
+// top the followed peak must meet (1e-4 in amplitude, 1e-5 in frequency: the peak search
+// holds 1e-7 of the frequency, the curve's top is located between its points, and at H = 1
+// the top is smooth; measured 9e-9 and 6e-9); centrifugal stiffening moves the peak up
+// in frequency with the speed. Friction at 5 N, harmonic 1. About 15 s.
+TEST(DiscFriction, PeakFollowedOverSpeedMeetsTheCurveAtAnotherSpeed) {
+  Timer total;
+  Disc disc(10000.0, {0, 1});
+  const auto spec = responseSpec({1}, 5.0, 1e4, 1e4);
+  DiscSweepOptions sweep;
+  sweep.harmonicsCheckTo = -1;
+  sweep.stability = ForcedResponseSetup::Stability::Never;
+  const auto reference = solveDiscForcedResponse(disc.mesh, disc.models, spec, sweep);
+  ASSERT_TRUE(reference.curve.branch.finished) << reference.curve.branch.stopReason;
+  EXPECT_EQ(disc.models.rpm, 10000.0);
+  const auto nds = nodalDiametersFor(disc.spec.sectors, kEngineOrder, spec.harmonics);
+  auto modelsAt = [&](double rpm) {
+    auto ms = disc.spec;
+    ms.rpm = rpm;
+    return buildDiscReducedModels(disc.mesh, ms, nds, "", Tpetra::getDefaultComm());
+  };
+  DiscPeakFollowingSpec following;
+  following.parameter = DiscStudyParameter::Speed;
+  following.from = 6000, following.to = 10000, following.values = 3;
+  int builds = 0;
+  following.modelsAtSpeed = [&](double rpm) {
+    ++builds;
+    return modelsAt(rpm);
+  };
+  Timer tf;
+  const auto followed = followDiscPeak(disc.mesh, disc.models, spec, reference.setup, reference.curve,
+                                       reference.fromHz, reference.toHz, following);
+  std::printf("followed over the speed: %zu values, %d model builds, %.1f s\n", followed.curve.points.size(), builds,
+              tf.seconds());
+  for (const auto& q : followed.curve.points)
+    std::printf("  %7.0f rpm: %.8e mm at %9.4f Hz%s\n", q.parameter, q.measure, q.frequency / (2 * M_PI),
+                q.jump ? " (jump)" : "");
+  ASSERT_TRUE(followed.curve.complete) << followed.curve.stopReason;
+  ASSERT_EQ(followed.curve.points.size(), 3u);
+  EXPECT_EQ(builds, 2);  // 6000 and 8000 rpm; 10000 is the models given
+  EXPECT_EQ(followed.curve.optimum, -1);  // an operating condition: no optimum marked
+  const auto& slow = followed.curve.points.front();
+  ASSERT_EQ(slow.parameter, 6000.0);
+  EXPECT_LT(slow.frequency, followed.curve.points.back().frequency);  // centrifugal stiffening
+  // The curve at 6000 rpm on models built anew there.
+  const auto models6000 = modelsAt(6000);
+  EXPECT_EQ(models6000.rpm, 6000.0);
+  DiscSweepOptions band = sweep;
+  band.fromHz = reference.fromHz, band.toHz = reference.toHz;
+  const auto curve = solveDiscForcedResponse(disc.mesh, models6000, spec, band);
+  ASSERT_TRUE(curve.curve.branch.finished) << curve.curve.branch.stopReason;
+  const double curveHz = curve.curve.peakOmega / (2 * M_PI), followedHz = slow.frequency / (2 * M_PI);
+  std::printf("6000 rpm: followed %.8e mm at %.4f Hz, curve %.8e mm at %.4f Hz (%zu points): %.2e, %.2e\n",
+              slow.measure, followedHz, curve.curve.peak, curveHz, curve.curve.branch.points.size(),
+              std::abs(curve.curve.peak / slow.measure - 1), std::abs(curveHz / followedHz - 1));
+  EXPECT_NEAR(curve.curve.peak / slow.measure, 1.0, 1e-4);
+  EXPECT_NEAR(curveHz / followedHz, 1.0, 1e-5);
+  // Bad ranges named.
+  auto bad = following;
+  bad.from = -1;
+  EXPECT_THROW(followDiscPeak(disc.mesh, disc.models, spec, reference.setup, reference.curve, reference.fromHz,
+                              reference.toHz, bad),
+               InputError);
+  bad = following;
+  bad.modelsAtSpeed = nullptr;
+  EXPECT_THROW(followDiscPeak(disc.mesh, disc.models, spec, reference.setup, reference.curve, reference.fromHz,
+                              reference.toHz, bad),
+               InputError);
+  std::printf("total %.1f s\n", total.seconds());
+}

@@ -14,7 +14,7 @@ namespace {
 constexpr DiscStudyParameter kParameters[] = {
     DiscStudyParameter::Preload, DiscStudyParameter::FrictionCoefficient, DiscStudyParameter::ContactStiffness,
     DiscStudyParameter::Force,   DiscStudyParameter::Clearance,           DiscStudyParameter::Harmonics,
-    DiscStudyParameter::LossFactor, DiscStudyParameter::Modes};
+    DiscStudyParameter::LossFactor, DiscStudyParameter::Modes,            DiscStudyParameter::Speed};
 
 // The spec at one value, and whether it reproduces the reference (the loss factor and
 // modes change the models: never the reference).
@@ -42,6 +42,9 @@ std::pair<DiscResponseSpec, bool> specAt(const DiscResponseSpec& spec, DiscStudy
       return {sv, sv.harmonics == spec.harmonics};
     case DiscStudyParameter::LossFactor:
     case DiscStudyParameter::Modes: return {sv, false};
+    case DiscStudyParameter::Speed:
+      throw InputError(key, "the speed is followed (peak_studies: speed: the models built at each speed), not "
+                            "swept as a value list");
   }
   return {sv, false};
 }
@@ -58,6 +61,7 @@ std::string discStudyParameterName(DiscStudyParameter parameter) {
     case DiscStudyParameter::Harmonics: return "harmonics";
     case DiscStudyParameter::LossFactor: return "loss_factor";
     case DiscStudyParameter::Modes: return "modes";
+    case DiscStudyParameter::Speed: return "speed";
   }
   return "";
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 
 #include "cyclone/core/Error.hpp"
@@ -99,8 +101,10 @@ double discReferenceValue(const DiscResponseSpec& spec, DiscStudyParameter param
       return spec.gap.clearance;
     case DiscStudyParameter::LossFactor:
       throw InputError("peak following/loss_factor", "its reference value is the reduced models' (followDiscPeak)");
+    case DiscStudyParameter::Speed:
+      throw InputError("peak following/speed", "its reference value is the reduced models' (followDiscPeak)");
     default:
-      throw InputError("peak following", "follows the preload, mu, contact_stiffness, force, loss_factor or clearance, not " +
+      throw InputError("peak following", "follows the preload, mu, contact_stiffness, force, loss_factor, clearance or speed, not " +
                                              discStudyParameterName(parameter));
   }
 }
@@ -112,12 +116,19 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   const std::string name = discStudyParameterName(following.parameter);
   DiscPeakFollowing out;
   const bool byLossFactor = following.parameter == DiscStudyParameter::LossFactor;
-  out.referenceValue = byLossFactor ? modelsLossFactor(models) : discReferenceValue(spec, following.parameter);
+  const bool bySpeed = following.parameter == DiscStudyParameter::Speed;
+  out.referenceValue = byLossFactor ? modelsLossFactor(models)
+                       : bySpeed    ? models.rpm
+                                    : discReferenceValue(spec, following.parameter);
   const bool byClearance = following.parameter == DiscStudyParameter::Clearance;
   if (byClearance ? !(std::isfinite(following.from) && std::isfinite(following.to) && following.to > following.from)
+      : bySpeed   ? !(following.from >= 0 && std::isfinite(following.to) && following.to > following.from)
                   : !(following.from > 0 && following.to > following.from))
     throw InputError("peak following/" + name, byClearance ? "needs a range from < to (mm; negative: interference)"
+                                               : bySpeed   ? "needs a range 0 <= from < to (rpm)"
                                                            : "needs a range 0 < from < to");
+  if (bySpeed && !following.modelsAtSpeed)
+    throw InputError("peak following/speed", "needs the models at each speed (DiscPeakFollowingSpec::modelsAtSpeed)");
   if (!(out.referenceValue >= following.from && out.referenceValue <= following.to))
     throw InputError("peak following/" + name, "the range must contain the scene's value " +
                                                    std::to_string(out.referenceValue));
@@ -150,6 +161,24 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
       if (!(eta >= 0)) throw InputError("peak following/loss_factor", "must be >= 0");
       return makeDiscForcedResponse(mesh, variedModels(models, eta, 0), spec).system;
     };
+  } else if (bySpeed) {
+    // The prestress, the modes and so the reduced models change with the speed: built
+    // again at each value of the grid (no interpolation between speeds, so no
+    // interpolation error), each speed's once (the searches come back to a value).
+    setup.parameter = response::ForcedResponseSetup::Parameter::Rebuilt;
+    setup.rebuiltParameter = name;
+    setup.rebuiltAt = out.referenceValue;
+    auto built = std::make_shared<std::map<double, std::shared_ptr<const DiscReducedModels>>>();
+    (*built)[out.referenceValue] = std::make_shared<const DiscReducedModels>(models);
+    setup.rebuild = [&mesh, spec, built, modelsAtSpeed = following.modelsAtSpeed](double rpm) {
+      if (!(rpm >= 0)) throw InputError("peak following/speed", "must be >= 0");
+      auto& m = (*built)[rpm];
+      if (!m) {
+        log::info("peak following over the speed: the reduced models at " + std::to_string(rpm) + " rpm");
+        m = std::make_shared<const DiscReducedModels>(modelsAtSpeed(rpm));
+      }
+      return makeDiscForcedResponse(mesh, *m, spec).system;
+    };
   } else if (byClearance) {
     response::selectElementParameter(setup, "gap", "gap", out.referenceValue);  // the unilateral spring's gap
   } else {
@@ -173,14 +202,15 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   o.sweep.checkpoints = nullptr;
   // Over the force the grid's optimum; over the loss factor the peak falls as the damping
   // grows, so the optimum is the range's end, not located.
-  o.locateOptimum = !out.byForce && !byLossFactor;
+  o.locateOptimum = !out.byForce && !byLossFactor && !bySpeed;
   out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues,
-                            byClearance);
+                            byClearance || bySpeed);
   log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
             "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
             " Hz");
   followBothWays(problem, starts, o, out);
   setup.rebuild = nullptr;  // it refers to the caller's mesh and models; the system stays at the last value
+  if (bySpeed) out.curve.optimum = -1;
   if (out.curve.points.empty()) throw SolverError("peak following/" + name + ": " + out.curve.stopReason);
   return out;
 }

@@ -240,6 +240,7 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   Timer timer;
   DiscReducedModels out;
   out.sectors = spec.sectors;
+  out.rpm = spec.rpm;
   out.sector = cyclic::makeCyclicSector(mesh, spec.sectors, spec.axis, spec.leftSets, spec.rightSets);
   for (int k : nodalDiameters) cyclic::checkNodalDiameter(spec.sectors, k);
   for (const auto& name : spec.retainedNodeSets)

@@ -20,8 +20,9 @@ enum class DiscStudyParameter {
   Harmonics,            ///< H: harmonics 0..H (the models must hold their nodal diameters)
   LossFactor,           ///< the reduced models' structural damping (hybrid and truncation models)
   Modes,                ///< the reduced models' kept natural frequencies (hybrid and truncation models)
+  Speed,                ///< the rotational speed (rpm) the reduced models are built at (peak following only)
 };
-/// preload, mu, contact_stiffness, force, clearance, harmonics, loss_factor, modes.
+/// preload, mu, contact_stiffness, force, clearance, harmonics, loss_factor, modes, speed.
 std::string discStudyParameterName(DiscStudyParameter parameter);
 /// The parameter of a name (none for another name).
 std::optional<DiscStudyParameter> discStudyParameterFromName(const std::string& name);

@@ -5,6 +5,7 @@
 // value. The shroud contacts' Jacobian jumps where a stick-slip instant crosses a time
 // sample, and the peak condition's arclength tracking creeps there (docs/decisions.md):
 // a fixed-frequency Newton passes those corners.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,12 +17,18 @@ namespace cyclone::disc {
 struct DiscPeakFollowingSpec {
   /// Preload, FrictionCoefficient, ContactStiffness (kn = kt = the value, as the value-list
   /// study), Force, LossFactor (the reduced models' structural damping, the system made
-  /// again from them per value) or Clearance (the gap elements'; InputError for another).
+  /// again from them per value), Clearance (the gap elements') or Speed (the models built
+  /// again at each speed by modelsAtSpeed; InputError for another).
   DiscStudyParameter parameter = DiscStudyParameter::Preload;
-  /// 0 < from < to (from < to of any sign for the clearance: negative is interference),
-  /// containing the spec's value (1 for Force; the models' loss factor).
+  /// 0 < from < to (from < to of any sign for the clearance: negative is interference;
+  /// 0 <= from < to for the speed), containing the spec's value (1 for Force; the models'
+  /// loss factor and speed).
   double from = 0, to = 0;
-  int values = 24;  ///< evenly in log over the range (evenly for the clearance; 3..400)
+  int values = 24;  ///< evenly in log over the range (evenly for the clearance and the speed; 3..400)
+  /// Speed: the reduced models at a speed (rpm), the same nodal diameters and kind as the
+  /// followed ones (e.g. buildDiscReducedModels with their spec at that rpm). Called once
+  /// per value of the grid; the reference speed's are the models given.
+  std::function<DiscReducedModels(double rpm)> modelsAtSpeed;
   /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
   std::vector<double> extraValues;
 };
@@ -34,7 +41,8 @@ struct DiscPeakFollowing {
   response::ForcedResponseSetup setup;    ///< the system followed (at the last value followed)
   std::vector<std::string> warnings;      ///< e.g. an incomplete reference curve to start from
   /// Over the force the peak grows with it: the optimum is the smallest peak per unit
-  /// force (the most friction damping); otherwise the smallest peak.
+  /// force (the most friction damping); otherwise the smallest peak. Over the speed, an
+  /// operating condition and not a design choice, none (curve.optimum = -1).
   bool byForce = false;
   double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
 };

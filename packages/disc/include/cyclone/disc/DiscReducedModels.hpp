@@ -64,6 +64,7 @@ void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck&
 
 struct DiscReducedModels {
   int sectors = 0;
+  double rpm = 0;  ///< the speed the models were built at (their prestress)
   cyclic::CyclicSector sector;
   std::vector<mesh::Index> retainedNodes;  ///< retained DOF 3 i + d is direction d of node retainedNodes[i]
   std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;  ///< by nodal diameter
