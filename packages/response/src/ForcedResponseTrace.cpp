@@ -9,6 +9,7 @@
 // the friction stuck, within 1e-3 of the answer. Where no Newton start converges,
 // the response is followed from rest as the excitation grows.
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cyclone/continuation/NewtonSolve.hpp"
@@ -283,6 +284,38 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
 // end and a kink at 582 Hz that neither engine passed, and is traced whole with 512 or
 // 1024 (docs/decisions.md, 2026-11-26). The finer system becomes setup.system (the
 // curve's points belong to it); where no retrace completes, the first curve stays.
+// Where an incomplete curve's sweeps stopped: the first sweep's farthest parameter from
+// the range's start and the sweep from the end's farthest towards the start (NaN where
+// there is none). Empty where the first sweep did not start at the range's start or
+// folded back to it (a fold is the curve's shape, and what more samples change there is
+// the start at the other end).
+std::optional<std::pair<double, double>> sweepStops(const continuation::Branch& b,
+                                                    const continuation::ContinuationOptions& o) {
+  if (b.returnedToStart || b.points.empty() ||
+      std::abs(b.points.front().parameter - o.from) > 1e-9 * std::abs(o.to - o.from))
+    return std::nullopt;
+  const std::size_t split = b.segmentStarts.empty() ? b.points.size() : b.segmentStarts.front();
+  const bool up = o.to >= o.from;
+  double first = o.from, far = std::nan("");
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    const double p = b.points[i].parameter;
+    if (i < split) first = up ? std::max(first, p) : std::min(first, p);
+    else far = std::isnan(far) ? p : (up ? std::min(far, p) : std::max(far, p));
+  }
+  return std::pair<double, double>{first, far};
+}
+
+// The same stops within 1e-3 of the range (both without a sweep from the end, or both
+// with one stopped at the same place).
+bool sameStops(const std::optional<std::pair<double, double>>& a, const std::optional<std::pair<double, double>>& b,
+               double span) {
+  if (!a || !b) return false;
+  auto same = [span](double x, double y) {
+    return (std::isnan(x) && std::isnan(y)) || std::abs(x - y) <= 1e-3 * span;
+  };
+  return same(a->first, b->first) && same(a->second, b->second);
+}
+
 continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuation::Branch first) {
   bool cornered = false;
   for (const auto& e : setup.system->elements()) cornered = cornered || e.element->recommendedSamples() > 0;
@@ -310,6 +343,24 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
       return again;
     }
     tried << "; " << factor * samples << " incomplete too";
+    // A sampling corner shrinks and moves with the samples; stops that stay where they
+    // were with twice the samples are the curve's own (the default disc at H = 5: 1394.4
+    // and 1394.0 Hz with 256 and 512), and four times would only cost more.
+    const double span = std::abs(continuationBefore.to - continuationBefore.from);
+    const auto before = sweepStops(first, continuationBefore), now = sweepStops(again, continuationBefore);
+    if (factor == 2 && sameStops(before, now, span)) {
+      std::ostringstream why;
+      why << " (its first sweep stopped at p = " << now->first << " against " << before->first << " with " << samples
+          << (std::isnan(now->second) ? "" : ", the sweep from the end at the same place too")
+          << ": not a sampling corner, four times not tried)";
+      tried << why.str();
+      setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
+      setup.system = std::move(original);
+      setup.apply(setup.continuation.from);
+      first.stopReason += "; traced again with 2 times the " + std::to_string(samples) + " AFT samples, incomplete too" +
+                          why.str();
+      return first;
+    }
   }
   setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
   setup.system = std::move(original);
