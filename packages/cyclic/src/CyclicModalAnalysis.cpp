@@ -126,6 +126,7 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
                       " must be positive definite; an unconstrained (free) model needs a negative shift "
                       "of the order of its first elastic eigenvalue (2 pi f)^2");
   }
+  form.releaseProjections();  // the factor holds what the solves need; K and M through the sector's
   hm.factorSeconds = factorTimer.seconds();
   solvers::ShiftInvertedProblem eigen;
   eigen.size = form.size();

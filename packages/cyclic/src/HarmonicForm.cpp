@@ -85,10 +85,12 @@ std::complex<double> conjugate(const std::complex<double>& z) { return std::conj
 // column j of K and M mapped onto the unknowns its rows follow). K and M share one
 // pattern. The result keeps the structural pattern (no entry dropped for being zero),
 // so every nodal diameter of one kind gets the same pattern and the same symbolic
-// factorization.
+// factorization. ZK or ZM may be null (not formed); normMSquared, when given, gets the
+// squared Frobenius norm of the Hermitian T^H M T whether ZM is formed or not.
 template <class Scalar>
 void project(const Real& K, const Real& M, const std::vector<Coupling<Scalar>>& copies, int unknowns,
-             Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& ZK, Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& ZM) {
+             Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>* ZK, Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>* ZM,
+             double* normMSquared = nullptr) {
   const int* outer = K.outerIndexPtr();
   const int* inner = K.innerIndexPtr();
   const double* k = K.valuePtr();
@@ -119,7 +121,8 @@ void project(const Real& K, const Real& M, const std::vector<Coupling<Scalar>>& 
     index.insert(index.end(), rows.begin(), rows.end());
     start.push_back(int(index.size()));
   }
-  for (auto* Z : {&ZK, &ZM}) {
+  for (auto* Z : {ZK, ZM}) {
+    if (!Z) continue;
     Z->resize(unknowns, unknowns);
     Z->makeCompressed();
     Z->resizeNonZeros(Eigen::Index(index.size()));
@@ -135,8 +138,10 @@ void project(const Real& K, const Real& M, const std::vector<Coupling<Scalar>>& 
       sumM[std::size_t(u)] += st * m[p];
     });
     for (int e = start[std::size_t(q)]; e < start[std::size_t(q) + 1]; ++e) {
-      ZK.valuePtr()[e] = sumK[std::size_t(index[std::size_t(e)])];
-      ZM.valuePtr()[e] = sumM[std::size_t(index[std::size_t(e)])];
+      const int u = index[std::size_t(e)];
+      if (ZK) ZK->valuePtr()[e] = sumK[std::size_t(u)];
+      if (ZM) ZM->valuePtr()[e] = sumM[std::size_t(u)];
+      if (normMSquared) *normMSquared += (u == q ? 1.0 : 2.0) * std::norm(sumM[std::size_t(u)]);
     }
   }
 }
@@ -211,9 +216,48 @@ struct HarmonicForm::Impl {
   long long size = 0;
   Real K, M;      // real form, lower triangles
   Complex ZK, ZM; // complex form, lower triangles
+  double normK = 0, normM = 0;
   FactorCache own;
   FactorCache::Impl* factors = nullptr;  // own's or a caller's
+  // After releaseProjections: the products through the sector's matrices.
+  const SectorMatrices* sector = nullptr;
+  std::vector<Coupling<double>> realCouplings;
+  Coupling<std::complex<double>> complexCoupling;
+  bool released = false;
 };
+
+namespace {
+
+// y = T^H A T x for one column, T given by a coupling: u = T x gathered per DOF, w = A u
+// (A real, both triangles), y scattered per unknown with the conjugate coefficients;
+// added into y.
+template <class Scalar>
+void productThroughSector(const Real& A, const Coupling<Scalar>& c, const Scalar* x, Scalar* y,
+                          std::vector<Scalar>& u, std::vector<Scalar>& w) {
+  const Eigen::Index dofs = A.rows();
+  u.assign(std::size_t(dofs), Scalar(0));
+  w.assign(std::size_t(dofs), Scalar(0));
+  for (Eigen::Index i = 0; i < dofs; ++i)
+    for (int b = c.dofStart[std::size_t(i)]; b < c.dofStart[std::size_t(i) + 1]; ++b)
+      u[std::size_t(i)] += c.byDof[std::size_t(b)].value * x[c.byDof[std::size_t(b)].index];
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const double* value = A.valuePtr();
+  for (Eigen::Index j = 0; j < dofs; ++j) {
+    const Scalar uj = u[std::size_t(j)];
+    if (uj == Scalar(0)) continue;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) w[std::size_t(inner[p])] += value[p] * uj;
+  }
+  const std::size_t unknowns = c.unknownStart.size() - 1;
+  for (std::size_t q = 0; q < unknowns; ++q) {
+    Scalar sum(0);
+    for (int a = c.unknownStart[q]; a < c.unknownStart[q + 1]; ++a)
+      sum += conjugate(c.byUnknown[std::size_t(a)].value) * w[std::size_t(c.byUnknown[std::size_t(a)].index)];
+    y[q] += sum;
+  }
+}
+
+}  // namespace
 
 HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform& transform)
     : impl_(std::make_unique<Impl>()) {
@@ -223,13 +267,21 @@ HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform&
   if (!std::equal(sector.K.outerIndexPtr(), sector.K.outerIndexPtr() + sector.K.cols() + 1, sector.M.outerIndexPtr()) ||
       !std::equal(sector.K.innerIndexPtr(), sector.K.innerIndexPtr() + sector.K.nonZeros(), sector.M.innerIndexPtr()))
     throw Error("HarmonicForm: the sector's K and M must share one pattern");
+  I.sector = &sector;
   if (I.complexForm) {
-    project<std::complex<double>>(sector.K, sector.M, {complexCoupling(transform)}, int(I.size / 2), I.ZK, I.ZM);
+    I.complexCoupling = complexCoupling(transform);
+    // Only K is formed: M is applied through the sector's matrices (and formed only for
+    // a shifted factor), so the factorization's peak does not hold it.
+    double normM2 = 0;
+    project<std::complex<double>>(sector.K, sector.M, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr, &normM2);
+    // The real form [[P, -Q], [Q, P]] holds every entry of P + iQ twice.
+    I.normK = std::sqrt(2.0) * hermitianNorm(I.ZK), I.normM = std::sqrt(2.0 * normM2);
     return;
   }
-  std::vector<Coupling<double>> copies;
-  for (int copy = 0; copy < transform.copies(); ++copy) copies.push_back(realCoupling(transform, copy));
-  project<double>(sector.K, sector.M, copies, int(I.size), I.K, I.M);
+  for (int copy = 0; copy < transform.copies(); ++copy) I.realCouplings.push_back(realCoupling(transform, copy));
+  double normM2 = 0;
+  project<double>(sector.K, sector.M, I.realCouplings, int(I.size), &I.K, nullptr, &normM2);
+  I.normK = hermitianNorm(I.K), I.normM = std::sqrt(normM2);
 }
 
 HarmonicForm::~HarmonicForm() = default;
@@ -239,16 +291,49 @@ HarmonicForm& HarmonicForm::operator=(HarmonicForm&&) noexcept = default;
 bool HarmonicForm::complexForm() const { return impl_->complexForm; }
 long long HarmonicForm::size() const { return impl_->size; }
 
+namespace {
+
+void applyThroughSector(bool complexForm, const Coupling<std::complex<double>>& complexCoupling,
+                        const std::vector<Coupling<double>>& realCouplings, const Real& A, const Eigen::MatrixXd& x,
+                        Eigen::MatrixXd& y) {
+  y.setZero(x.rows(), x.cols());
+  if (complexForm) {
+    std::vector<std::complex<double>> u, w;
+    const Eigen::Index n = x.rows() / 2;
+    for (Eigen::Index j = 0; j < x.cols(); ++j)
+      productThroughSector(A, complexCoupling, asComplex(x) + j * n, asComplex(y) + j * n, u, w);
+    return;
+  }
+  std::vector<double> u, w;
+  for (Eigen::Index j = 0; j < x.cols(); ++j)
+    for (const auto& c : realCouplings) productThroughSector(A, c, x.data() + j * x.rows(), y.data() + j * x.rows(), u, w);
+}
+
+}  // namespace
+
 void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  const auto& I = *impl_;
+  if (I.released) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->K, x, y);
   y.resize(x.rows(), x.cols());
   if (impl_->complexForm) hermitianProduct(impl_->ZK, asComplex(x), asComplex(y), x.cols());
   else hermitianProduct(impl_->K, x.data(), y.data(), x.cols());
 }
 
 void HarmonicForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  const auto& I = *impl_;
+  // M is formed only for a shifted factor, and then only until the projections are released.
+  if (I.released || (I.complexForm ? I.ZM.nonZeros() == 0 : I.M.nonZeros() == 0))
+    return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->M, x, y);
   y.resize(x.rows(), x.cols());
   if (impl_->complexForm) hermitianProduct(impl_->ZM, asComplex(x), asComplex(y), x.cols());
   else hermitianProduct(impl_->M, x.data(), y.data(), x.cols());
+}
+
+void HarmonicForm::releaseProjections() {
+  auto& I = *impl_;
+  if (!I.factors) throw Error("HarmonicForm::releaseProjections: factor first");
+  I.K = Real(), I.M = Real(), I.ZK = Complex(), I.ZM = Complex();
+  I.released = true;
 }
 
 void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
@@ -259,13 +344,8 @@ void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   }
 }
 
-// The real form [[P, -Q], [Q, P]] holds every entry of P + iQ twice.
-double HarmonicForm::normK() const {
-  return impl_->complexForm ? std::sqrt(2.0) * hermitianNorm(impl_->ZK) : hermitianNorm(impl_->K);
-}
-double HarmonicForm::normM() const {
-  return impl_->complexForm ? std::sqrt(2.0) * hermitianNorm(impl_->ZM) : hermitianNorm(impl_->M);
-}
+double HarmonicForm::normK() const { return impl_->normK; }
+double HarmonicForm::normM() const { return impl_->normM; }
 
 void HarmonicForm::factor(double sigma) { factor(sigma, impl_->own); }
 
@@ -277,6 +357,14 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
   if (I.complexForm) slots.real.reset();
   else slots.complex.reset();
   // At sigma = 0 (a constrained sector, the usual case) K itself, without a copy.
+  if (I.released) throw Error("HarmonicForm::factor: the projections were released");
+  // A shift needs M formed: projected now (the same pattern as K).
+  if (sigma != 0.0) {
+    if (I.complexForm && I.ZM.nonZeros() == 0)
+      project<std::complex<double>>(I.sector->K, I.sector->M, {I.complexCoupling}, int(I.size / 2), nullptr, &I.ZM);
+    if (!I.complexForm && I.M.nonZeros() == 0)
+      project<double>(I.sector->K, I.sector->M, I.realCouplings, int(I.size), nullptr, &I.M);
+  }
   if (I.complexForm) {
     if (sigma == 0.0) factorInto(slots.complex, I.ZK);
     else factorInto(slots.complex, Complex(I.ZK - sigma * I.ZM));
