@@ -276,14 +276,6 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
   return branch;
 }
 
-// A curve both engines leave incomplete is traced again with twice the AFT samples,
-// then four times, where the system has elements whose sampled law has corners (those
-// that recommend a sample count: friction). The residual of a sampled friction law has a
-// corner wherever a stick-slip instant crosses a sample, and the corners shrink with the
-// samples: the thin 8-sector disc's H = 1 curve (256 samples) had a start at the range's
-// end and a kink at 582 Hz that neither engine passed, and is traced whole with 512 or
-// 1024 (docs/decisions.md, 2026-11-26). The finer system becomes setup.system (the
-// curve's points belong to it); where no retrace completes, the first curve stays.
 // Where an incomplete curve's sweeps stopped: the first sweep's farthest parameter from
 // the range's start and the sweep from the end's farthest towards the start (NaN where
 // there is none). Empty where the first sweep did not start at the range's start or
@@ -316,6 +308,14 @@ bool sameStops(const std::optional<std::pair<double, double>>& a, const std::opt
   return same(a->first, b->first) && same(a->second, b->second);
 }
 
+// A curve both engines leave incomplete is traced again with twice the AFT samples,
+// then four times, where the system has elements whose sampled law has corners (those
+// that recommend a sample count: friction). The residual of a sampled friction law has a
+// corner wherever a stick-slip instant crosses a sample, and the corners shrink with the
+// samples: the thin 8-sector disc's H = 1 curve (256 samples) had a start at the range's
+// end and a kink at 582 Hz that neither engine passed, and is traced whole with 512 or
+// 1024 (docs/decisions.md, 2026-11-26). The finer system becomes setup.system (the
+// curve's points belong to it); where no retrace completes, the first curve stays.
 continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuation::Branch first) {
   bool cornered = false;
   for (const auto& e : setup.system->elements()) cornered = cornered || e.element->recommendedSamples() > 0;
@@ -330,6 +330,7 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
   setup.continuation.checkpoints = nullptr;
   if (setup.fallback) setup.fallback->checkpoints = nullptr;
   std::ostringstream tried;
+  std::string notRetried;  // why four times was not tried
   for (const int factor : {2, 4}) {
     setup.system = hbm::withHarmonics(*original, original->aft().harmonics(), factor * samples);
     log::info("forced response: incomplete with " + std::to_string(samples) + " AFT samples; traced again with " +
@@ -346,27 +347,21 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
     // A sampling corner shrinks and moves with the samples; stops that stay where they
     // were with twice the samples are the curve's own (the default disc at H = 5: 1394.4
     // and 1394.0 Hz with 256 and 512), and four times would only cost more.
-    const double span = std::abs(continuationBefore.to - continuationBefore.from);
     const auto before = sweepStops(first, continuationBefore), now = sweepStops(again, continuationBefore);
-    if (factor == 2 && sameStops(before, now, span)) {
+    if (factor == 2 && sameStops(before, now, std::abs(continuationBefore.to - continuationBefore.from))) {
       std::ostringstream why;
       why << " (its first sweep stopped at p = " << now->first << " against " << before->first << " with " << samples
           << (std::isnan(now->second) ? "" : ", the sweep from the end at the same place too")
           << ": not a sampling corner, four times not tried)";
-      tried << why.str();
-      setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
-      setup.system = std::move(original);
-      setup.apply(setup.continuation.from);
-      first.stopReason += "; traced again with 2 times the " + std::to_string(samples) + " AFT samples, incomplete too" +
-                          why.str();
-      return first;
+      notRetried = why.str();
+      break;
     }
   }
   setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
   setup.system = std::move(original);
   setup.apply(setup.continuation.from);
-  first.stopReason += "; traced again with 2 and 4 times the " + std::to_string(samples) +
-                      " AFT samples, incomplete too";
+  first.stopReason += (notRetried.empty() ? "; traced again with 2 and 4 times the " : "; traced again with 2 times the ") +
+                      std::to_string(samples) + " AFT samples, incomplete too" + notRetried;
   return first;
 }
 

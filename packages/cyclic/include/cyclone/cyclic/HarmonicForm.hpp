@@ -68,11 +68,10 @@ public:
   /// The same, keeping the factor in `cache` (reusing its symbolic analysis when the
   /// pattern matches): solveShifted then holds until the cache factors another form.
   void factor(double sigma, FactorCache& cache);
-  /// Frees the projected K and M (after factor: the factor no longer needs them) and
-  /// applies K and M from then on through the sector's matrices, T^H (A (T x)): the
-  /// same products to rounding at about the same cost, without the projections'
-  /// storage during the eigen-solution (62 MB of a 686 MB peak on the built-in sector
-  /// at mesh size 2.8). `sector` must outlive the form.
+  /// Frees the projected K (and M, formed only for a shift) after factor, which no
+  /// longer needs them; K and M are applied from then on through the sector's
+  /// matrices, T^H (A (T x)): the same products to rounding at about the same cost.
+  /// `sector` must outlive the form.
   void releaseProjections();
   bool factored() const;
   /// y = (K - sigma M)^{-1} x after factor().
