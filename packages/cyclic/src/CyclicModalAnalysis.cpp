@@ -108,6 +108,7 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
   Timer timer;
   const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
   HarmonicForm form(matrices, transform);
+  releaseFreedMemory();  // the projection's work, before the factor's peak
   NodalDiameterModes hm;
   hm.nodalDiameter = k;
   hm.copies = transform.copies();

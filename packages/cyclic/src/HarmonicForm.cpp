@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "cyclone/core/Error.hpp"
@@ -196,17 +197,19 @@ FactorCache::~FactorCache() = default;
 
 namespace {
 
-// A factor of A, the cached one refactored when A has its pattern.
+// A factor of A, the cached one refactored when A has its pattern. A is handed over:
+// its storage is released once CHOLMOD's permuted copy is made, before the numeric
+// factorization.
 template <class Scalar, class Matrix>
-void factorInto(std::unique_ptr<solvers::SparseCholesky<Scalar>>& slot, const Matrix& A) {
+void factorInto(std::unique_ptr<solvers::SparseCholesky<Scalar>>& slot, Matrix&& A) {
   try {
-    if (slot && slot->refactor(A)) return;
+    if (slot && slot->refactor(std::move(A))) return;
   } catch (...) {
     slot.reset();  // a failed numeric factorization leaves no usable factor
     throw;
   }
   slot.reset();  // free the old factor before the new one is built
-  slot = std::make_unique<solvers::SparseCholesky<Scalar>>(A);
+  slot = std::make_unique<solvers::SparseCholesky<Scalar>>(std::move(A));
 }
 
 }  // namespace
@@ -313,7 +316,8 @@ void applyThroughSector(bool complexForm, const Coupling<std::complex<double>>& 
 
 void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& I = *impl_;
-  if (I.released) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->K, x, y);
+  // K is handed to the factor at sigma = 0 (not kept beside it).
+  if (I.released || (I.complexForm ? I.ZK.nonZeros() == 0 : I.K.nonZeros() == 0)) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->K, x, y);
   y.resize(x.rows(), x.cols());
   if (impl_->complexForm) hermitianProduct(impl_->ZK, asComplex(x), asComplex(y), x.cols());
   else hermitianProduct(impl_->K, x.data(), y.data(), x.cols());
@@ -356,8 +360,14 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
   // One factor at a time: the other kind's (a real nodal diameter's among pairs) goes.
   if (I.complexForm) slots.real.reset();
   else slots.complex.reset();
-  // At sigma = 0 (a constrained sector, the usual case) K itself, without a copy.
+  // At sigma = 0 (a constrained sector, the usual case) K itself, handed over: released
+  // once CHOLMOD has its permuted copy, so the factorization holds one copy of K.
   if (I.released) throw Error("HarmonicForm::factor: the projections were released");
+  // K went to an earlier factor (at sigma = 0): projected again.
+  if (I.complexForm && I.ZK.nonZeros() == 0)
+    project<std::complex<double>>(I.sector->K, I.sector->M, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr);
+  if (!I.complexForm && I.K.nonZeros() == 0)
+    project<double>(I.sector->K, I.sector->M, I.realCouplings, int(I.size), &I.K, nullptr);
   // A shift needs M formed: projected now (the same pattern as K).
   if (sigma != 0.0) {
     if (I.complexForm && I.ZM.nonZeros() == 0)
@@ -366,10 +376,10 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
       project<double>(I.sector->K, I.sector->M, I.realCouplings, int(I.size), nullptr, &I.M);
   }
   if (I.complexForm) {
-    if (sigma == 0.0) factorInto(slots.complex, I.ZK);
+    if (sigma == 0.0) factorInto(slots.complex, std::move(I.ZK));
     else factorInto(slots.complex, Complex(I.ZK - sigma * I.ZM));
   } else {
-    if (sigma == 0.0) factorInto(slots.real, I.K);
+    if (sigma == 0.0) factorInto(slots.real, std::move(I.K));
     else factorInto(slots.real, Real(I.K - sigma * I.M));
   }
   I.factors = &slots;

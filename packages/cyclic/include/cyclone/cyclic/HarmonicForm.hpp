@@ -15,7 +15,8 @@
 // Only K is projected (what the factor needs; M too where a shift needs K - sigma M);
 // M, and K once the projections are released after the factor, are applied through
 // the sector's matrices as T^H (A (T x)): the factorization's memory peak holds one
-// projection, the eigen-solution none.
+// projection (K at sigma = 0 is handed to the factor, which releases it once it has
+// its permuted copy), the eigen-solution none.
 #include <complex>
 #include <memory>
 

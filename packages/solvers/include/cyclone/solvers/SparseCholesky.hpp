@@ -21,6 +21,9 @@ public:
   /// Factors A (only its lower triangle is read). Throws SolverError when A is not
   /// positive definite (including a factor whose pivots span more than 1e24).
   explicit SparseCholesky(const Matrix& A);
+  /// The same, A's storage released once its permuted copy is made (before the
+  /// numeric factorization, whose peak then holds one copy of the matrix, not two).
+  explicit SparseCholesky(Matrix&& A);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -29,6 +32,9 @@ public:
   /// matrix, when A has exactly its pattern (compressed); false, and nothing changed,
   /// otherwise. Throws SolverError like the constructor.
   bool refactor(const Matrix& A);
+  /// The same, releasing A as the constructor does when it is refactored (A is left
+  /// untouched when false).
+  bool refactor(Matrix&& A);
 
   /// A^{-1} b, all columns at once.
   Dense solve(const Dense& b) const;
@@ -42,6 +48,8 @@ public:
   double factorFlops() const;     ///< CHOLMOD's flop count of the factorization
 
 private:
+  SparseCholesky(const Matrix& A, Matrix* release);
+  bool samePattern(const Matrix& A) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
