@@ -283,7 +283,7 @@ void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
     EXPECT_LE(peak, 1.05 * traced);
     for (std::size_t i = 1; i < rows.size(); ++i) {
       ASSERT_EQ(std::sscanf(rows[i].c_str(), "%d,%d", &H, &found), 2) << rows[i];
-      EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), 8) << "9 cells, the note's commas escaped: " << rows[i];
+      EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), 9) << "10 cells, the note's commas escaped: " << rows[i];
       EXPECT_EQ(H, int(i) + 1);
       if (!found) {
         EXPECT_EQ(i + 1, rows.size()) << "a level not found ends the list";
@@ -1796,7 +1796,8 @@ TEST(Scenes, HarmonicsCheckComparesPeaksFoundBySearchWithTheReferences) {
                                             Tpetra::getDefaultComm());
   o.outputDirectory = dirH3.string();
   scenes::runSceneText(scene("3", ""), "h3.yaml", o, Tpetra::getDefaultComm());
-  // Columns: max_harmonic, found, peak, freq_hz, relative_change, frequency_change, solves, seconds, note
+  // Columns: max_harmonic, found, peak, freq_hz, relative_change, frequency_change, force_beyond_h, solves,
+  // seconds, note
   const auto levels = readCsv(dirLow / "frc_harmonics.csv"), own = readCsv(dirH3 / "frc_harmonics.csv");
   ASSERT_EQ(levels.size(), 3u);
   for (int i = 0; i < 3; ++i) {

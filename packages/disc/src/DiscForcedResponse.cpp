@@ -20,12 +20,23 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   line.precision(6);
   line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
        << best.maxHarmonic;
+  // What the harmonics leave out of the contact forces at that peak: where it is not small
+  // the last change of the peak understates the truncation error (TruncatedForce.hpp).
+  std::string dropped;
+  if (best.truncated.known) {
+    std::ostringstream d;
+    d.precision(3);
+    d << "; the contact forces' harmonics above " << best.maxHarmonic << " are " << 100 * best.truncated.share
+      << " % of those kept (harmonic " << best.truncated.largestDropped << " alone "
+      << 100 * best.truncated.largestDroppedShare << " %)";
+    dropped = d.str();
+  }
   const auto& target = curve.harmonicsTarget;
   if (target.tolerance > 0 && target.reached >= 0) {  // harmonics by an error target, met (two raises)
     headline.converged = true;
     line << "; converged in the harmonics to " << 100 * target.tolerance << " % (each of the last two raises of H "
          << "changed it by at most " << 100 * target.change << " %; the curve traced whole with H = " << target.reached
-         << ")";
+         << ")" << dropped;
     headline.text = line.str();
     return headline;
   }
@@ -43,6 +54,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   if (best.notFoundHarmonic >= 0)
     line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
          << "the last change";
+  line << dropped;
   if (target.tolerance > 0)
     line << "; the error target " << 100 * target.tolerance << " % on the harmonics (harmonics: auto) was not met";
   headline.text = line.str();

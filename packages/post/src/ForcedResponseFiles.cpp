@@ -30,12 +30,12 @@ void writeHarmonicsLevelsCsv(const response::HarmonicsCheck& check, const std::s
   std::ofstream out(file.tempPath());
   out.precision(10);
   out << "max_harmonic,found,peak_max_abs_dof" << dof
-      << ",freq_hz,relative_change,frequency_change,solves,seconds,note\n";
+      << ",freq_hz,relative_change,frequency_change,force_beyond_h,solves,seconds,note\n";
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const auto& l = levels[i];
     out << l.maxHarmonic << "," << (l.peak.found ? 1 : 0) << ",";
     if (l.peak.x.size() == 0) {  // no solution at all: nothing to compare
-      out << ",,,," << l.peak.solves << "," << l.seconds << "," << csvCell(l.peak.reason) << "\n";
+      out << ",,,,," << l.peak.solves << "," << l.seconds << "," << csvCell(l.peak.reason) << "\n";
       continue;
     }
     out << l.peak.value << "," << l.peak.parameter << ",";
@@ -45,6 +45,8 @@ void writeHarmonicsLevelsCsv(const response::HarmonicsCheck& check, const std::s
     } else {
       out << ",";
     }
+    out << ",";
+    if (l.truncated.known) out << l.truncated.share;
     std::string note = l.peak.reason;
     if (i > 0 && l.startHz != levels[i - 1].peak.parameter) {
       std::ostringstream from;

@@ -221,6 +221,7 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
         level.peak.reason += ", nor from the level below's solutions on its flank";
       }
     }
+    if (level.peak.found) level.truncated = hbm::truncatedForce(*system, level.peak.x, 2 * M_PI * level.peak.parameter);
     level.seconds = timer.seconds();
     levels.push_back(level);
     if (!level.peak.found) break;
@@ -326,6 +327,7 @@ HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Br
       best.maxHarmonic = levels[reached].maxHarmonic, best.value = levels[reached].peak.value,
       best.hz = levels[reached].peak.parameter;
       best.x = levels[reached].peak.x, best.harmonics = levels[reached].harmonics, best.samples = levels[reached].samples;
+      best.truncated = levels[reached].truncated;
     }
     if (best.found && reached < levels.size()) best.notFoundHarmonic = levels[reached].maxHarmonic;
     if (j >= 1) {

@@ -14,6 +14,7 @@
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 #include "cyclone/continuation/PeakSearch.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/TruncatedForce.hpp"
 #include "cyclone/response/ForcedResponseSetup.hpp"
 
 namespace cyclone::response {
@@ -36,6 +37,8 @@ struct HarmonicsLevel {
   continuation::PeakSearchResult peak;  ///< its parameter is the frequency in Hz
   double seconds = 0;
   double startHz = 0;  ///< where the search started (the level below's peak, or its flank)
+  /// The elements' force the level's harmonics leave out, at its peak (when found).
+  hbm::TruncatedForce truncated;
 };
 
 /// The peak at the highest harmonic count the check reached, with the change from the
@@ -52,6 +55,7 @@ struct HarmonicsConvergedPeak {
   Eigen::VectorXd x;
   std::vector<int> harmonics;
   int samples = 0;
+  hbm::TruncatedForce truncated;  ///< the elements' force its harmonics leave out
 };
 
 struct HarmonicsCheck {
