@@ -127,6 +127,10 @@ int expectNoStableMiddleBranch(const fs::path& dir) {
       flag.push_back(fl < long(cells.size()) ? cells[fl] : "");
       segment.push_back(sg < long(cells.size()) ? cells[sg] : "");
     }
+    // A curve whose system is too large for Hill's method by default (stability: auto,
+    // n nc > 1500: the demo's H = 6 curves) has no verdict at any point; otherwise every
+    // point has one.
+    if (std::all_of(verdict.begin(), verdict.end(), [](const std::string& v) { return v.empty(); })) continue;
     for (std::size_t i = 0; i < hz.size(); ++i)
       EXPECT_TRUE(verdict[i] == "0" || verdict[i] == "1" || verdict[i] == "2") << name << " point " << i << ": '" << verdict[i] << "'";
     // Backward: against the sweep's direction, within one sweep (the first sweeps up; a
@@ -188,10 +192,9 @@ namespace {
 void checkFollowedPeaks(const fs::path& dir) {
   // The peak followed over the preload (peak_studies): at the value-list study's
   // preloads it meets the peaks of the frequency curves traced there, to what those
-  // curves resolve of their flat, friction-damped tops: at 50 N the curve steps 1.35 Hz
-  // across its top (1490.40 -> 1491.75 Hz) and the search finds a point 2.3e-3 higher
-  // between (its frequency 3.5e-4 away); 2e-4 .. 7e-4 elsewhere, 4e-4 on the default
-  // disc at mesh size 6.
+  // curves resolve of their flat, friction-damped tops (a curve's largest point, which a
+  // study reports, against the search's located peak: up to 2.3e-3 on the 12 mm disc of
+  // earlier demos at 50 N, whose curve stepped 1.35 Hz across its top).
   {
     auto rows = [&](const char* name) {
       std::ifstream in(dir / name);
@@ -207,7 +210,7 @@ void checkFollowedPeaks(const fs::path& dir) {
       return out;
     };
     const auto followed = rows("peak_preload.csv"), swept = rows("study_preload.csv");
-    ASSERT_GE(followed.size(), 16u);
+    ASSERT_GE(followed.size(), 5u);  // the range's 5 values, the scene's and the study's preloads inside it
     int optima = 0, compared = 0;
     for (std::size_t i = 0; i < followed.size(); ++i) {
       optima += followed[i][4] == 1;
@@ -251,9 +254,11 @@ void checkReportSections(const fs::path& dir) {
 }
 
 void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
-  // The harmonics check's peaks (harmonics_check_to: 5): the H = 1 level, found by the
-  // search from the curve's largest point, lies at or just above that point (the curve
-  // samples the continuous peak); the levels above are there, found or with a reason.
+  // The harmonics check's peaks (harmonics: auto up to 7): the H = 1 level, found by the
+  // search from the H = 1 curve's largest point, lies at or just above that point (the
+  // curve samples the continuous peak); the levels above are there, found or with a
+  // reason. Where the target is met, disc_frc is the curve traced again with the last
+  // level's harmonics: that level's peak then lies at or just above its largest point.
   {
     std::ifstream curve(dir / "disc_frc.csv");
     std::string line, header;
@@ -272,12 +277,21 @@ void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
     std::vector<std::string> rows;
     while (std::getline(levels, line)) rows.push_back(line);
     ASSERT_GE(rows.size(), 2u);  // a level not found ends the list
-    ASSERT_LE(rows.size(), 5u);
+    ASSERT_LE(rows.size(), 7u);
     int H = 0, found = 0;
     double peak = 0, hz = 0;
     ASSERT_EQ(std::sscanf(rows[0].c_str(), "%d,%d,%lf,%lf", &H, &found, &peak, &hz), 4) << rows[0];
     EXPECT_EQ(H, 1);
     EXPECT_EQ(found, 1);
+    {  // the target met (each of the last two changes at most 1 %): the curve is the last level's
+      double c1 = -1, c2 = -1;
+      const bool lastFound = std::sscanf(rows.back().c_str(), "%*d,%d,%*f,%*f,%lf", &found, &c1) == 2 && found == 1;
+      const bool beforeFound = rows.size() >= 3 &&
+                               std::sscanf(rows[rows.size() - 2].c_str(), "%*d,%d,%*f,%*f,%lf", &found, &c2) == 2 &&
+                               found == 1;
+      if (lastFound && beforeFound && c1 <= 1e-2 && c2 <= 1e-2)
+        ASSERT_EQ(std::sscanf(rows.back().c_str(), "%d,%d,%lf,%lf", &H, &found, &peak, &hz), 4) << rows.back();
+    }
     std::printf("demo peak: traced %.6e, searched %.6e at %.2f Hz\n", traced, peak, hz);
     EXPECT_GE(peak, traced * (1 - 1e-9));
     EXPECT_LE(peak, 1.05 * traced);
@@ -293,12 +307,12 @@ void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
     // The report's headline is the highest level found, with its change from the level
     // below: converged (to 1 %) or labelled an estimate.
     int lastH = 0, notFoundH = -1;
-    double lastPeak = 0, lastHz = 0, lastChange = -1;
+    double lastPeak = 0, lastHz = 0, lastChange = -1, changeBefore = -1;
     for (const auto& row : rows) {
       int h = 0, f = 0;
       double v = 0, z = 0, c = -1;
       const int cells = std::sscanf(row.c_str(), "%d,%d,%lf,%lf,%lf", &h, &f, &v, &z, &c);
-      if (cells >= 4 && f == 1) lastH = h, lastPeak = v, lastHz = z, lastChange = c;
+      if (cells >= 4 && f == 1) changeBefore = lastChange, lastH = h, lastPeak = v, lastHz = z, lastChange = c;
       if (cells >= 2 && f == 0) notFoundH = h;
     }
     std::ifstream report(dir / "report.md");
@@ -315,9 +329,13 @@ void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
     EXPECT_NEAR(headHz, lastHz, 1e-5 * lastHz);
     const std::string headline = text.substr(at, text.find('\n', at) - at);
     std::printf("%s\n", headline.c_str());
-    EXPECT_NE(headline.find(lastChange >= 0 && lastChange <= 1e-2 ? "converged in the harmonics to 1 %" : "an estimate"),
-              std::string::npos)
-        << headline;
+    // The demo asks for harmonics by an error target (1 %): converged when each of the
+    // last two raises changed the peak by at most that, and the curve is then the one
+    // traced whole with those harmonics.
+    const bool met = lastChange >= 0 && lastChange <= 1e-2 && changeBefore >= 0 && changeBefore <= 1e-2;
+    EXPECT_NE(headline.find(met ? "converged in the harmonics to 1 %" : "an estimate"), std::string::npos) << headline;
+    if (met)
+      EXPECT_NE(headline.find("the curve traced whole with H = " + std::to_string(lastH)), std::string::npos) << headline;
     // A level tried above the headline's and not found is said: the last change then
     // does not bound the error.
     if (notFoundH >= 0)

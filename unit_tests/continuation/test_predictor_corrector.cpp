@@ -2,6 +2,7 @@
 // curves traced whole, in few points.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -69,6 +70,65 @@ TEST(PredictorCorrector, LightlyDampedLinearResonanceWholeInFewPoints) {
     EXPECT_NEAR(peak.value / Apeak, 1.0, 1e-6);
     EXPECT_NEAR(s.x.norm() / Apeak, 1.0, 0.02);
   }
+}
+
+// The same resonance (Q = 1000) beside a large static offset, as a preloaded contact's
+// mean deformation beside the vibration: a third unknown x0 = Fs / k0, constant along
+// the curve, 1e3 times the peak amplitude. In one scale group x0 is the yardstick and
+// the steps leap over the resonance (printed); with the mean and the oscillation in
+// groups of their own (ContinuationProblem::scaleGroups, as the harmonic balance sets
+// them), the curve is traced through it and its peak located to 1e-6 of the closed form.
+TEST(PredictorCorrector, ResonanceBesideALargeStaticOffsetIsNotSteppedOver) {
+  const double m = 1, k = 1, Q = 1000, zeta = 1 / (2 * Q), c = 2 * zeta, P = 1;
+  const double Apeak = P / (2 * zeta * k * std::sqrt(1 - zeta * zeta)), Wpeak = std::sqrt(1 - 2 * zeta * zeta);
+  const double k0 = 1, Fs = 1e3 * Apeak;
+  const auto linear = oscillator(m, c, k, 0, P);
+  continuation::ContinuationProblem problem;
+  problem.size = 3;
+  problem.residual = [&](const Eigen::VectorXd& x, double W, Eigen::VectorXd& F) {
+    Eigen::VectorXd f;
+    linear.residual(x.tail(2), W, f);
+    F.resize(3);
+    F << k0 * x(0) - Fs, f;
+  };
+  problem.jacobian = [&](const Eigen::VectorXd& x, double W, Eigen::MatrixXd& J) {
+    Eigen::MatrixXd j;
+    linear.jacobian(x.tail(2), W, j);
+    J = Eigen::MatrixXd::Zero(3, 3);
+    J(0, 0) = k0;
+    J.bottomRightCorner(2, 2) = j;
+  };
+  // max |x(t)| = x0 + amplitude, as a disc's measure holds the mean deformation
+  problem.measure = [](const Eigen::VectorXd& x) { return std::abs(x(0)) + x.tail(2).norm(); };
+  continuation::ContinuationOptions o;  // defaults but the engine and the range
+  o.engine = continuation::ContinuationOptions::Engine::PredictorCorrector;
+  o.from = 0.5, o.to = 1.5;
+  auto highest = [&](const continuation::Branch& b) {  // the largest amplitude on the curve
+    double top = 0;
+    for (const auto& pt : b.points) top = std::max(top, pt.x.tail(2).norm());
+    return top;
+  };
+  auto inBand = [&](const continuation::Branch& b) {  // points within the half-power band
+    int count = 0;
+    for (const auto& pt : b.points) count += std::abs(pt.parameter - 1) <= zeta;
+    return count;
+  };
+  const auto oneGroup = continuation::traceBranch(problem, Eigen::VectorXd::Zero(3), o);
+  problem.scaleGroups = {0, 1, 1};
+  const auto grouped = continuation::traceBranch(problem, Eigen::VectorXd::Zero(3), o);
+  ASSERT_TRUE(grouped.finished) << grouped.stopReason;
+  std::printf("one scale group: %zu points (%d in the half-power band), highest amplitude %.10g of the peak; mean "
+              "and oscillation apart: %zu points (%d in the band), highest %.10g (closed form %.10g)\n",
+              oneGroup.points.size(), inBand(oneGroup), highest(oneGroup) / Apeak, grouped.points.size(),
+              inBand(grouped), highest(grouped), Apeak);
+  EXPECT_LE(grouped.points.size(), 300u);
+  EXPECT_GE(inBand(grouped), 8);  // the resonance drawn, not a spike between far points
+  EXPECT_NEAR(highest(grouped) / Apeak, 1.0, 1e-6);
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < grouped.points.size(); ++i)
+    if (grouped.points[i].x.tail(2).norm() > grouped.points[top].x.tail(2).norm()) top = i;
+  EXPECT_NEAR(grouped.points[top].parameter, Wpeak, 1e-6);
+  EXPECT_NEAR(grouped.points[top].x(0), Fs / k0, 1e-9 * Fs);
 }
 
 // The hardening Duffing curve (m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18) with the

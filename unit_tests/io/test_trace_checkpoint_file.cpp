@@ -26,7 +26,7 @@ continuation::TraceState unfinishedState() {
   s.branch.statistics.newtonIterations = 17, s.branch.statistics.residuals = 123456789012L;
   s.branch.statistics.seconds = 1.25;
   s.directionX = Eigen::VectorXd::Random(7), s.directionP = -0.7, s.step = 3.3e-4;
-  s.scaleX = 2.5, s.scaleP = 1.5, s.largestNorm = 3.1, s.scaleFloor = 1e-9;
+  s.scaleX = {2.5, 0.7}, s.scaleP = 1.5, s.largestNorm = {3.1, 0.9}, s.scaleFloor = {1e-9, 2e-9};
   s.retractions = 4, s.anchor = 3, s.creepChecked = 2;
   return s;
 }
@@ -63,6 +63,7 @@ TEST(TraceCheckpointFile, AnUnfinishedStateReadsBackExactly) {
   EXPECT_EQ(r->step, s.step);
   EXPECT_EQ(r->scaleX, s.scaleX);
   EXPECT_EQ(r->scaleFloor, s.scaleFloor);
+  EXPECT_EQ(r->largestNorm, s.largestNorm);
   EXPECT_EQ(r->retractions, 4);
   EXPECT_EQ(r->anchor, 3);
   EXPECT_EQ(r->creepChecked, 2);

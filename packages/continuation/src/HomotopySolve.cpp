@@ -65,6 +65,7 @@ HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::Vector
   }
   ContinuationProblem homotopy;
   homotopy.size = problem.size;
+  homotopy.scaleGroups = problem.scaleGroups;
   homotopy.residual = [&problem, &added, x0, c, p](const Eigen::VectorXd& y, double s, Eigen::VectorXd& G) {
     problem.residual(y, p, G);
     for (int i : added) G(i) = s * G(i) + (1 - s) * c * (y(i) - x0(i));

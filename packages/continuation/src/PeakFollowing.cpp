@@ -20,6 +20,7 @@ ContinuationProblem atParameter(const PeakTrackingProblem& P, double p) {
   f.residual = [P, p](const Eigen::VectorXd& x, double w, Eigen::VectorXd& R) { P.residual(x, w, p, R); };
   f.jacobian = [P, p](const Eigen::VectorXd& x, double w, Eigen::MatrixXd& J) { P.jacobian(x, w, p, J); };
   f.measure = P.measure;
+  f.scaleGroups = P.scaleGroups;
   return f;
 }
 

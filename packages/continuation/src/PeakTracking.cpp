@@ -1,5 +1,6 @@
 #include "cyclone/continuation/PeakTracking.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cyclone/continuation/DenseLu.hpp"
@@ -68,6 +69,10 @@ ContinuationProblem peakCondition(const PeakTrackingProblem& P) {
     throw InputError("peak tracking", "the problem needs its size, residual, Jacobian and measure with derivatives");
   ContinuationProblem out;
   out.size = P.size + 1;
+  if (!P.scaleGroups.empty()) {  // the frequency unknown in a group of its own
+    out.scaleGroups = P.scaleGroups;
+    out.scaleGroups.push_back(*std::max_element(P.scaleGroups.begin(), P.scaleGroups.end()) + 1);
+  }
   const int n = P.size;
   const double unit = P.frequencyUnit;
   if (P.solutionStep > 0) {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "cyclone/continuation/DenseLu.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/continuation/TraceCheckpoint.hpp"
+#include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 
@@ -32,9 +34,14 @@ struct Point {
 };
 
 // Distances in the scaled space: ||dx||^2 / sx^2 + dp^2 / sp^2.
+// The arclength's inner product: each unknown divided by its group's scale, the
+// parameter by the range. w holds 1 / scale^2 per unknown.
 struct Metric {
-  double sx = 1, sp = 1;
-  double dot(const Point& a, const Point& b) const { return a.x.dot(b.x) / (sx * sx) + a.p * b.p / (sp * sp); }
+  Eigen::VectorXd w;
+  double sp = 1;
+  double dot(const Point& a, const Point& b) const {
+    return (a.x.array() * b.x.array() * w.array()).sum() + a.p * b.p / (sp * sp);
+  }
   double norm(const Point& a) const { return std::sqrt(dot(a, a)); }
   Point difference(const Point& a, const Point& b) const { return {a.x - b.x, a.p - b.p}; }
 };
@@ -55,6 +62,7 @@ public:
          const TraceCheckpointing* checkpointing)
       : problem_(problem), o_(o), branch_(branch), n_(problem.size), checkpointing_(checkpointing) {
     cornerStep_ = std::max(16 * o.minStep, 1e-3);
+    makeGroups();
   }
 
   void run(const Eigen::VectorXd& guess);
@@ -123,7 +131,7 @@ private:
     Eigen::VectorXd F;
     Eigen::MatrixXd A;
     if (!residual(z, F) || !jacobian(z, F, A)) return false;
-    A.bottomLeftCorner(1, n_) = (along.x / (metric_.sx * metric_.sx)).transpose();
+    A.bottomLeftCorner(1, n_) = along.x.cwiseProduct(metric_.w).transpose();
     A(n_, n_) = along.p / (metric_.sp * metric_.sp);
     DenseLu lu;
     factor(A, lu);
@@ -173,7 +181,23 @@ private:
   Branch& branch_;
   const int n_;
   Metric metric_;
-  double largestNorm_ = 0, sxFloor_ = 0;
+  // Per scale group (problem.scaleGroups): its unknowns, current scale, largest norm
+  // seen and floor.
+  std::vector<std::vector<int>> groups_;
+  std::vector<double> groupScale_, largestNorm_, sxFloor_;
+  void setWeights();
+  void makeGroups() {
+    const auto& g = problem_.scaleGroups;
+    if (!g.empty() && int(g.size()) != n_)
+      throw InputError("continuation", "scale groups: one per unknown expected, got " + std::to_string(g.size()));
+    std::map<int, std::vector<int>> byId;
+    for (int i = 0; i < n_; ++i) byId[g.empty() ? 0 : g[std::size_t(i)]].push_back(i);
+    for (auto& [id, members] : byId) groups_.push_back(std::move(members));
+    groupScale_.assign(groups_.size(), 1.0);
+    largestNorm_.assign(groups_.size(), 0.0);
+    sxFloor_.assign(groups_.size(), 0.0);
+    setWeights();
+  }
   std::vector<double> measures_;  // problem_.measure at each point
   static constexpr int kMaxRetractions = 200;  // a bound on retaken steps (each shortens the step)
   int retractions_ = 0;
@@ -197,7 +221,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
   Correction c;
   const Point predictor{z0.x + ds * t0.x, z0.p + ds * t0.p};
   Point z = predictor;
-  const double sx2 = metric_.sx * metric_.sx, sp2 = metric_.sp * metric_.sp;
+  const double sp2 = metric_.sp * metric_.sp;
   auto constraint = [&](const Point& y) {
     if (kind == Constraint::Plane) return metric_.dot(t0, metric_.difference(y, predictor));
     const double r = metric_.norm(metric_.difference(y, z0));
@@ -234,10 +258,10 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
     ++stats().newtonIterations;
     if (!jacobian(z, F, A)) return c;
     if (kind == Constraint::Plane) {
-      A.bottomLeftCorner(1, n_) = (t0.x / sx2).transpose();
+      A.bottomLeftCorner(1, n_) = t0.x.cwiseProduct(metric_.w).transpose();
       A(n_, n_) = t0.p / sp2;
     } else {
-      A.bottomLeftCorner(1, n_) = ((z.x - z0.x) / (sx2 * ds)).transpose();
+      A.bottomLeftCorner(1, n_) = ((z.x - z0.x).cwiseProduct(metric_.w) / ds).transpose();
       A(n_, n_) = (z.p - z0.p) / (sp2 * ds);
     }
     factor(A, c.lu);
@@ -434,9 +458,20 @@ bool Tracer::passCreep(Point& z, Point& t, double dir) {
 // response grows, and a response passing near zero does not make every corner
 // there a hairpin.
 void Tracer::rescale(const Point& z) {
-  const double norm = z.x.norm();
-  largestNorm_ = std::max(largestNorm_, norm);
-  metric_.sx = std::max({norm, 0.1 * largestNorm_, sxFloor_});
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    double norm2 = 0;
+    for (int i : groups_[g]) norm2 += z.x(i) * z.x(i);
+    const double norm = std::sqrt(norm2);
+    largestNorm_[g] = std::max(largestNorm_[g], norm);
+    groupScale_[g] = std::max({norm, 0.1 * largestNorm_[g], sxFloor_[g]});
+  }
+  setWeights();
+}
+
+void Tracer::setWeights() {
+  metric_.w.resize(n_);
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    for (int i : groups_[g]) metric_.w(i) = 1.0 / (groupScale_[g] * groupScale_[g]);
 }
 
 // The branch left the range between `inside` and `outside`: its point at p, by
@@ -477,7 +512,7 @@ void Tracer::save(const Point& t, double ds) {
   }
   s.measures = measures_;
   s.directionX = t.x, s.directionP = t.p, s.step = ds;
-  s.scaleX = metric_.sx, s.scaleP = metric_.sp, s.largestNorm = largestNorm_, s.scaleFloor = sxFloor_;
+  s.scaleX = groupScale_, s.scaleP = metric_.sp, s.largestNorm = largestNorm_, s.scaleFloor = sxFloor_;
   s.retractions = retractions_, s.anchor = long(anchor_), s.creepChecked = long(creepChecked_);
   checkpointing_->save(s);
   sinceSave_.restart();
@@ -490,7 +525,11 @@ void Tracer::restore(const TraceState& s, Point& z, Point& t, double& ds) {
   for (std::size_t i = 0; i < s.tangentX.size(); ++i) tangents_.push_back({s.tangentX[i], s.tangentP[i]});
   measures_ = s.measures;
   t = {s.directionX, s.directionP}, ds = s.step;
-  metric_.sx = s.scaleX, metric_.sp = s.scaleP, largestNorm_ = s.largestNorm, sxFloor_ = s.scaleFloor;
+  if (s.scaleX.size() != groups_.size() || s.largestNorm.size() != groups_.size() ||
+      s.scaleFloor.size() != groups_.size())
+    throw InputError("continuation", "a saved trace's scale groups do not match the problem's");
+  groupScale_ = s.scaleX, metric_.sp = s.scaleP, largestNorm_ = s.largestNorm, sxFloor_ = s.scaleFloor;
+  setWeights();
   retractions_ = int(s.retractions), anchor_ = std::size_t(s.anchor), creepChecked_ = std::size_t(s.creepChecked);
   z = {branch_.points.back().x, branch_.points.back().parameter};
 }
@@ -514,7 +553,12 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   }
   // The first tangent: dp = dir, J dx = -dF/dp dp; the unknowns' floor scale from it
   // (the change of x over the range at the start's slope), for a start from rest.
-  metric_.sx = std::max(z.x.norm(), 1e-300);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    double norm2 = 0;
+    for (int i : groups_[g]) norm2 += z.x(i) * z.x(i);
+    groupScale_[g] = std::max(std::sqrt(norm2), 1e-300);
+  }
+  setWeights();
   Eigen::VectorXd F;
   Eigen::MatrixXd A;
   if (!residual(z, F) || !jacobian(z, F, A)) {
@@ -532,7 +576,14 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
     branch_.stopReason = "singular Jacobian at the start of the range";
     return false;
   }
-  sxFloor_ = std::max(1e-3 * v.head(n_).norm() * metric_.sp, 1e-300);
+  // Each group's floor from its own slope, and at least 1e-2 of the whole's: a group that
+  // stays at zero (the mean of a symmetric system) does not make round-off a step.
+  const double whole = std::max(1e-3 * v.head(n_).norm() * metric_.sp, 1e-300);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    double norm2 = 0;
+    for (int i : groups_[g]) norm2 += v(i) * v(i);
+    sxFloor_[g] = std::max(1e-3 * std::sqrt(norm2) * metric_.sp, 1e-2 * whole);
+  }
   rescale(z);
   t = {v.head(n_), v(n_)};
   const double norm = metric_.norm(t);

@@ -40,7 +40,30 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     headline.text = line.str();
     return headline;
   }
-  if (target.tolerance > 0) headline.converged = false;  // not met: said below, as without a target
+  if (target.tolerance > 0) {  // not met: an estimate whatever the last raise alone did
+    headline.converged = false;
+    line << "; an estimate: the error target " << 100 * target.tolerance
+         << " % on the harmonics (harmonics: auto) was not met, each of the last two raises of H must change it "
+            "by at most that";
+    std::vector<const response::HarmonicsLevel*> found;
+    for (const auto& level : curve.harmonicsCheck.levels)
+      if (level.peak.found) found.push_back(&level);
+    std::vector<std::string> raises;  // the last two raises found
+    for (std::size_t i = found.size() >= 3 ? found.size() - 2 : 1; i < found.size(); ++i) {
+      std::ostringstream r;
+      r.precision(3);
+      r << "H " << found[i - 1]->maxHarmonic << " -> " << found[i]->maxHarmonic << " changed it by "
+        << 100 * std::abs(found[i]->peak.value / found[i - 1]->peak.value - 1) << " %";
+      raises.push_back(r.str());
+    }
+    for (std::size_t i = 0; i < raises.size(); ++i) line << (i == 0 ? " (" : ", ") << raises[i];
+    if (!raises.empty()) line << ")";
+    if (best.notFoundHarmonic >= 0)
+      line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found";
+    line << dropped;
+    headline.text = line.str();
+    return headline;
+  }
   if (best.change < 0)
     line << "; an estimate: its convergence in the harmonics is not known (no level below it to compare)";
   else if (best.change <= kConverged)
@@ -55,8 +78,6 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
          << "the last change";
   line << dropped;
-  if (target.tolerance > 0)
-    line << "; the error target " << 100 * target.tolerance << " % on the harmonics (harmonics: auto) was not met";
   headline.text = line.str();
   return headline;
 }

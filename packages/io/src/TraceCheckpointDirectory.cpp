@@ -93,10 +93,10 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
       writeRows(h5, "direction_x", {s.directionX}, std::size_t(s.directionX.size()));
       writeDoubleAttribute(h5, "direction_p", s.directionP);
       writeDoubleAttribute(h5, "step", s.step);
-      writeDoubleAttribute(h5, "scale_x", s.scaleX);
+      writeVector(h5, "scale_x", s.scaleX, H5::PredType::NATIVE_DOUBLE);  // per scale group
       writeDoubleAttribute(h5, "scale_p", s.scaleP);
-      writeDoubleAttribute(h5, "largest_norm", s.largestNorm);
-      writeDoubleAttribute(h5, "scale_floor", s.scaleFloor);
+      writeVector(h5, "largest_norm", s.largestNorm, H5::PredType::NATIVE_DOUBLE);
+      writeVector(h5, "scale_floor", s.scaleFloor, H5::PredType::NATIVE_DOUBLE);
       writeLong(h5, "retractions", s.retractions);
       writeLong(h5, "anchor", s.anchor);
       writeLong(h5, "creep_checked", s.creepChecked);
@@ -153,10 +153,12 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
       s.directionX = std::move(direction[0]);
       s.directionP = readDoubleAttribute(h5, "direction_p");
       s.step = readDoubleAttribute(h5, "step");
-      s.scaleX = readDoubleAttribute(h5, "scale_x");
+      s.scaleX = readVector<double>(h5, "scale_x", H5::PredType::NATIVE_DOUBLE);
       s.scaleP = readDoubleAttribute(h5, "scale_p");
-      s.largestNorm = readDoubleAttribute(h5, "largest_norm");
-      s.scaleFloor = readDoubleAttribute(h5, "scale_floor");
+      s.largestNorm = readVector<double>(h5, "largest_norm", H5::PredType::NATIVE_DOUBLE);
+      s.scaleFloor = readVector<double>(h5, "scale_floor", H5::PredType::NATIVE_DOUBLE);
+      if (s.scaleX.empty() || s.largestNorm.size() != s.scaleX.size() || s.scaleFloor.size() != s.scaleX.size())
+        throw Error("scale groups of inconsistent length");
       s.retractions = readLong(h5, "retractions");
       s.anchor = readLong(h5, "anchor");
       s.creepChecked = readLong(h5, "creep_checked");

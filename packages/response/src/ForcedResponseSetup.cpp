@@ -31,6 +31,18 @@ Eigen::VectorXd forceScale(const hbm::HarmonicBalanceSystem& hb, double excitati
     for (int a = 0; a < n; ++a) D(a * nc + H.cosIndex(0)) = f0;
   return D;
 }
+
+// The continuation's scale groups, split the same way: the mean coefficients (0) and the
+// oscillating ones (1). A preload's static deformation is then not the yardstick of the
+// vibration's change along the path (a stuck shroud's sharp resonance was stepped over).
+std::vector<int> meanAndOscillation(const hbm::HarmonicBalanceSystem& hb) {
+  const auto& H = hb.aft().harmonics();
+  const int n = hb.numDofs(), nc = hb.numCoefficients();
+  std::vector<int> groups(std::size_t(n * nc), 1);
+  if (H.contains(0))
+    for (int a = 0; a < n; ++a) groups[std::size_t(a * nc + H.cosIndex(0))] = 0;
+  return groups;
+}
 }  // namespace
 
 continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalanceSystem& hb,
@@ -41,6 +53,7 @@ continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalance
   const bool byForce = parameter == ForcedResponseSetup::Parameter::ForceScale;
   continuation::ContinuationProblem problem;
   problem.size = hb.numUnknowns();
+  problem.scaleGroups = meanAndOscillation(hb);
   const double s = excitationScale;
   const Eigen::VectorXd f = forceScale(hb, byForce ? 1.0 : s);
   problem.residual = [&hb, byForce, omega, s, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
@@ -101,6 +114,7 @@ std::pair<double, double> ForcedResponseSetup::apply(double p) {
 continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup) {
   continuation::ContinuationProblem problem;
   problem.size = setup.system->numUnknowns();
+  problem.scaleGroups = meanAndOscillation(*setup.system);
   const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
   const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
   problem.residual = [&setup, f](const Eigen::VectorXd& X, double p, Eigen::VectorXd& R) {
@@ -132,6 +146,7 @@ continuation::PeakTrackingProblem peakFollowingProblem(ForcedResponseSetup& setu
   if (setup.outputDofs.empty()) throw InputError("peak following", "needs an output DOF (its max |x(t)| is the peak)");
   continuation::PeakTrackingProblem problem;
   problem.size = setup.system->numUnknowns();
+  problem.scaleGroups = meanAndOscillation(*setup.system);
   const bool byForce = setup.parameter == ForcedResponseSetup::Parameter::ForceScale;
   const Eigen::VectorXd f = forceScale(*setup.system, byForce ? 1.0 : setup.excitationScale);
   problem.residual = [&setup, f](const Eigen::VectorXd& X, double w, double p, Eigen::VectorXd& R) {

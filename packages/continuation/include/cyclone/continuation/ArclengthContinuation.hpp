@@ -30,6 +30,12 @@ struct ContinuationProblem {
   /// the steps around it and adds it as a point: a curve's peak is then a solution,
   /// not the best of its samples.
   std::function<double(const Eigen::VectorXd& x)> measure;
+  /// Optional, per unknown: the group whose own size scales it in the predictor-
+  /// corrector's arclength (empty: one group). A harmonic balance puts its mean
+  /// coefficients in one group and the oscillating ones in another: a preload's static
+  /// deformation is no longer the yardstick of the vibration, so a step cannot leap
+  /// over a sharp resonance whose motion is small beside it.
+  std::vector<int> scaleGroups;
 };
 
 struct ContinuationOptions {

@@ -39,6 +39,7 @@ struct PeakTrackingProblem {
   /// solutions at w (1 +- h) from x, a function of w alone on the curve, continuous; its
   /// Jacobian row [0, dg/dw] by differences of the same kind.
   double solutionStep = 0;
+  std::vector<int> scaleGroups;  ///< per unknown x, as ContinuationProblem::scaleGroups (empty: one)
 };
 
 /// The extended system in y = (x, w / frequencyUnit) and p, for traceBranch.

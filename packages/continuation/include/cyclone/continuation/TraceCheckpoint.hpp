@@ -27,7 +27,8 @@ struct TraceState {
   std::vector<double> tangentP, measures;
   Eigen::VectorXd directionX;  ///< the unit tangent the next step follows
   double directionP = 0, step = 0;
-  double scaleX = 1, scaleP = 1, largestNorm = 0, scaleFloor = 0;
+  double scaleP = 1;
+  std::vector<double> scaleX, largestNorm, scaleFloor;  ///< per scale group (ContinuationProblem::scaleGroups)
   long retractions = 0, anchor = 0, creepChecked = 0;
 };
 
