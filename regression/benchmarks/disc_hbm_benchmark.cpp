@@ -1,12 +1,13 @@
 // Benchmark (a program, not a test): the default disc's friction forced response
-// (the demo's sector, reduced models and contacts: EO 3, 43 shroud pairs, 5 N
-// preload, 20 N at mid-blade) by harmonic balance with harmonics 0..H. Prints the
+// (the demo's sector, reduced models and contacts: EO 3, 43 shroud pairs, 500 N
+// preload as the demo since session 31, 20 N at mid-blade) by harmonic balance with harmonics 0..H. Prints the
 // unknowns, the time of one residual, one residual + Jacobian and one dense LU of
 // the bordered Jacobian at the band's start, then the band traced with the disc's
 // continuation defaults: points, Newton iterations, and the time split into
 // residuals, Jacobians and factorisations.
 //   build/regression/disc_hbm_benchmark [H (5)] [from Hz (1300)] [to Hz (1330)]
-//                                       [mesh size (6)] [cache dir (disc_benchmark_models)]
+//                                       [mesh size (6)] [cache dir (disc_benchmark_models)] [preload N (500)]
+// The demo's whole curve at its converged H: disc_hbm_benchmark 6 349.443 1727.63
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   const double fromHz = argc > 2 ? std::atof(argv[2]) : 1300.0, toHz = argc > 3 ? std::atof(argv[3]) : 1330.0;
   const double meshSize = argc > 4 ? std::atof(argv[4]) : 6.0;
   const std::string cache = argc > 5 ? argv[5] : "disc_benchmark_models";
+  const double preload = argc > 6 ? std::atof(argv[6]) : 500.0;
 
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
   spec.engineOrder = 3;
   spec.harmonics.clear();
   for (int h = 0; h <= H; ++h) spec.harmonics.push_back(h);
-  spec.contact.preload = 5.0;
+  spec.contact.preload = preload;
   spec.excitation.amplitude = 20.0;
   std::vector<int> levels(spec.harmonics);
   const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, levels),
