@@ -8,7 +8,8 @@
 // blocks), the dense LU of the Jacobian, and then a whole resonance curve
 // traced with default settings (only the range given) by each continuation
 // engine, with its points, Newton iterations and the time split into residuals,
-// Jacobians and factorisations.
+// Jacobians and factorisations; the predictor-corrector with its default LU (single
+// precision refined in double) and with the LU in double, in the same run.
 //   build/regression/hbm_benchmark [max H (default 7)]
 #include <cmath>
 #include <cstdio>
@@ -64,9 +65,10 @@ int main(int argc, char** argv) {
   const int maxH = argc > 1 ? std::atoi(argv[1]) : 7;
   std::printf("reduced cyclic sector: %d DOFs, %d friction3d elements across the sector boundary, EO 3 of 24\n\n",
               kDofs, kContacts);
-  // LU: Eigen's PartialPivLU and LAPACK's dgetrf (DenseLu, what the predictor-corrector uses).
-  std::printf("%3s %5s %9s | %10s %8s %8s %8s | %9s %9s\n", "H", "N", "unknowns", "R+J [s]", "elements", "linear",
-              "assembly", "Eigen LU", "LAPACK LU");
+  // LU: Eigen's PartialPivLU, LAPACK's dgetrf, and sgetrf with one solve refined in double
+  // (DenseLu's two precisions; the predictor-corrector's default is the mixed one).
+  std::printf("%3s %5s %9s | %10s %8s %8s %8s | %9s %9s %11s\n", "H", "N", "unknowns", "R+J [s]", "elements",
+              "linear", "assembly", "Eigen LU", "LAPACK LU", "mixed+solve");
   for (int H = 1; H <= maxH; H += 2)
     for (int N : {64, 128, 256, 512}) {
       if (N < 2 * H + 1) continue;
@@ -97,13 +99,18 @@ int main(int argc, char** argv) {
       const auto lu = J.partialPivLu();
       const double luTime = t.seconds();
       t.restart();
-      const continuation::DenseLu lapackLu(J);
+      const continuation::DenseLu lapackLu(J, continuation::DenseLu::Precision::Double);
       const double lapackTime = t.seconds();
-      std::printf("%3d %5d %9d | %10.4f %7.0f%% %7.0f%% %7.0f%% | %9.4f %9.4f\n", H, N, s->numUnknowns(), total,
-                  100 * elements / total, 100 * linear / total, 100 * (total - elements - linear) / total, luTime,
-                  lapackTime);
+      t.restart();
+      const continuation::DenseLu mixedLu(J, continuation::DenseLu::Precision::Mixed);
+      const Eigen::VectorXd dx = mixedLu.solve(R);
+      const double mixedTime = t.seconds();
+      std::printf("%3d %5d %9d | %10.4f %7.0f%% %7.0f%% %7.0f%% | %9.4f %9.4f %11.4f%s\n", H, N, s->numUnknowns(),
+                  total, 100 * elements / total, 100 * linear / total, 100 * (total - elements - linear) / total,
+                  luTime, lapackTime, mixedTime, mixedLu.doubleFallbacks() > 0 ? " (fell back to double)" : "");
       (void)lu;
       (void)lapackLu;
+      (void)dx;
     }
 
   std::printf("\nresonance curve, EO 3 (nodal diameter 3), omega 0.9 -> 1.6:\n");
@@ -118,11 +125,14 @@ int main(int argc, char** argv) {
       s->residual(X, p, R, &J);
     };
     using Engine = continuation::ContinuationOptions::Engine;
-    for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+    for (const int run : {0, 1, 2}) {
+      const Engine engine = run == 2 ? Engine::Loca : Engine::PredictorCorrector;
       // Each engine with its own default steps (their units differ).
       continuation::ContinuationOptions o =
           engine == Engine::Loca ? continuation::locaOptions() : continuation::ContinuationOptions{};
       o.from = 0.9, o.to = 1.6;
+      o.mixedPrecisionLu = run == 0;
+      const char* name = run == 0 ? "predictor-corrector" : run == 1 ? "the same, LU in double" : "LOCA";
       Timer t;
       const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
       const double secs = t.seconds();
@@ -130,15 +140,16 @@ int main(int argc, char** argv) {
       for (const auto& pt : branch.points)
         if (s->amplitude(pt.x, 0, 1) > peak) peak = s->amplitude(pt.x, 0, 1), peakW = pt.parameter;
       const auto& st = branch.statistics;
-      std::printf("  H = %d, N = %d, %-19s: %4zu points in %6.2f s (%.4f s per point), peak |x1| of DOF 0 %.5f at "
+      std::printf("  H = %d, N = %d, %-22s: %4zu points in %6.2f s (%.4f s per point), peak |x1| of DOF 0 %.5f at "
                   "%.4f; %s\n",
-                  H, N, engine == Engine::Loca ? "LOCA" : "predictor-corrector", branch.points.size(), secs,
+                  H, N, name, branch.points.size(), secs,
                   secs / std::max<std::size_t>(1, branch.points.size()), peak, peakW, branch.stopReason.c_str());
       if (engine == Engine::PredictorCorrector)
         std::printf("      %d Newton iterations (%.2f per point), %d steps cut; residuals %.2f s, Jacobians %.2f s, "
-                    "factorisations %.2f s\n",
+                    "factorisations %.2f s (%ld, %ld again in double), solves %.2f s\n",
                     st.newtonIterations, double(st.newtonIterations) / std::max<std::size_t>(1, branch.points.size()),
-                    st.rejectedSteps, st.residualSeconds, st.jacobianSeconds, st.factorSeconds);
+                    st.rejectedSteps, st.residualSeconds, st.jacobianSeconds, st.factorSeconds, st.factorizations,
+                    st.doubleFallbacks, st.solveSeconds);
     }
   }
   return 0;

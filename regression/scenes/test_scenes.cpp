@@ -293,7 +293,11 @@ void checkHarmonicsLevelsAndHeadline(const fs::path& dir) {
         ASSERT_EQ(std::sscanf(rows.back().c_str(), "%d,%d,%lf,%lf", &H, &found, &peak, &hz), 4) << rows.back();
     }
     std::printf("demo peak: traced %.6e, searched %.6e at %.2f Hz\n", traced, peak, hz);
-    EXPECT_GE(peak, traced * (1 - 1e-9));
+    // The search's peak is a local maximum, so no point of the curve lies above it by
+    // more than what the solves leave: both are solutions to a residual of 1e-8 of the
+    // forces (the disc's Newton tolerance), which near a resonance of quality Q is an
+    // error of up to about Q x 1e-8 in the response (3.4e-6 measured, Q ~ 300).
+    EXPECT_GE(peak, traced * (1 - 1e-5));
     EXPECT_LE(peak, 1.05 * traced);
     for (std::size_t i = 1; i < rows.size(); ++i) {
       ASSERT_EQ(std::sscanf(rows[i].c_str(), "%d,%d", &H, &found), 2) << rows[i];

@@ -193,6 +193,8 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
                     o.stopWhereItTurnsBack, o.restartWhereTheCorrectorJumps);
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
     group->setParams(p);
+    if (o.locaParameterPerturbation != 1e-6)
+      group->setDerivUtils(Teuchos::rcp(new LOCA::DerivUtils(globalData, o.locaParameterPerturbation)));
     auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
     tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::NormF(o.tolerance)));
     tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(o.maxNewtonIterations)));

@@ -92,7 +92,7 @@ private:
   // [J, dF/dp] at z (dF/dp by a forward difference from F = F(z)).
   bool jacobian(const Point& z, const Eigen::VectorXd& F, Eigen::MatrixXd& A) {
     ++stats().jacobians;
-    Eigen::MatrixXd J;
+    Eigen::MatrixXd& J = jacobianWork_;  // kept: a fresh n x n block per call is page faults
     if (!guarded(stats().jacobianSeconds, [&] {
           problem_.jacobian(z.x, z.p, J);
           return J.allFinite();
@@ -106,19 +106,35 @@ private:
     A.topRightCorner(n_, 1) = (Fe - F) / eps;
     return true;
   }
-  void factor(const Eigen::MatrixXd& A, DenseLu& lu) {
+  // Takes A's storage (A is refilled by jacobian() before its next use).
+  void factor(Eigen::MatrixXd& A, DenseLu& lu) {
     Timer t;
     ++stats().factorizations;
-    lu.compute(A);
+    lu.computeTaking(A, o_.mixedPrecisionLu ? DenseLu::Precision::Auto : DenseLu::Precision::Double);
     stats().factorSeconds += t.seconds();
+  }
+  // lu's solve, timed; a solve that made the factorisation again in double (DenseLu's
+  // fallback from single precision) is counted with the factorisations.
+  Eigen::VectorXd solve(const DenseLu& lu, const Eigen::VectorXd& rhs) {
+    const int before = lu.doubleFallbacks();
+    Timer t;
+    Eigen::VectorXd x = lu.solve(rhs);
+    const double seconds = t.seconds();
+    if (lu.doubleFallbacks() > before) {
+      ++stats().doubleFallbacks;
+      stats().factorSeconds += seconds;
+    } else {
+      stats().solveSeconds += seconds;
+    }
+    return x;
   }
   ContinuationStatistics& stats() { return branch_.statistics; }
 
   // The unit tangent at z (metric_), oriented along `along` (a direction in (x, p)).
-  bool tangentFrom(const DenseLu& lu, const Point& along, Point& t) const {
+  bool tangentFrom(const DenseLu& lu, const Point& along, Point& t) {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
     rhs(n_) = 1;
-    const Eigen::VectorXd v = lu.solve(rhs);
+    const Eigen::VectorXd v = solve(lu, rhs);
     if (!v.allFinite()) return false;
     t = {v.head(n_), v(n_)};
     const double norm = metric_.norm(t);
@@ -178,6 +194,7 @@ private:
 
   const ContinuationProblem& problem_;
   const ContinuationOptions& o_;
+  Eigen::MatrixXd jacobianWork_;
   Branch& branch_;
   const int n_;
   Metric metric_;
@@ -242,7 +259,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
       // residual of 1e-10 is an error of 1e-7 in x.
       if (c.factored) {
         rhs << -F, -g;
-        const Eigen::VectorXd d = c.lu.solve(rhs);
+        const Eigen::VectorXd d = solve(c.lu, rhs);
         const Point polished{z.x + d.head(n_), z.p + d(n_)};
         if (d.allFinite() && residual(polished, Ft) && Ft.norm() < F.norm()) z = polished;
       }
@@ -267,7 +284,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
     factor(A, c.lu);
     c.factored = true;
     rhs << -F, -g;
-    const Eigen::VectorXd d = c.lu.solve(rhs);
+    const Eigen::VectorXd d = solve(c.lu, rhs);
     if (!d.allFinite()) return c;
     Point next;
     bool decreased = false;
@@ -571,7 +588,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   factor(A, lu);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
   rhs(n_) = dir;
-  const Eigen::VectorXd v = lu.solve(rhs);
+  const Eigen::VectorXd v = solve(lu, rhs);
   if (!v.allFinite()) {
     branch_.stopReason = "singular Jacobian at the start of the range";
     return false;
@@ -774,7 +791,9 @@ void Tracer::logSummary() const {
   msg << "continuation: " << branch_.points.size() << " points, " << s.newtonIterations << " Newton iterations ("
       << s.rejectedSteps << " steps cut, " << s.sphericalSteps << " spherical), " << s.seconds << " s: residuals "
       << s.residualSeconds << " s (" << s.residuals << "), Jacobians " << s.jacobianSeconds << " s (" << s.jacobians
-      << "), factorisations " << s.factorSeconds << " s (" << s.factorizations << ")";
+      << "), factorisations " << s.factorSeconds << " s (" << s.factorizations;
+  if (s.doubleFallbacks > 0) msg << ", " << s.doubleFallbacks << " again in double";
+  msg << "), solves " << s.solveSeconds << " s";
   log::info(msg.str());
 }
 

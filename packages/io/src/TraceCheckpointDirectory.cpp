@@ -77,9 +77,11 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
     writeLong(h5, "residuals", st.residuals);
     writeLong(h5, "jacobians", st.jacobians);
     writeLong(h5, "factorizations", st.factorizations);
+    writeLong(h5, "double_fallbacks", st.doubleFallbacks);
     writeDoubleAttribute(h5, "residual_seconds", st.residualSeconds);
     writeDoubleAttribute(h5, "jacobian_seconds", st.jacobianSeconds);
     writeDoubleAttribute(h5, "factor_seconds", st.factorSeconds);
+    writeDoubleAttribute(h5, "solve_seconds", st.solveSeconds);
     writeDoubleAttribute(h5, "seconds", st.seconds);
     if (!s.complete) {
       if (s.tangentX.size() != P || s.tangentP.size() != P || s.measures.size() != P)
@@ -133,9 +135,11 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
     st.residuals = readLong(h5, "residuals");
     st.jacobians = readLong(h5, "jacobians");
     st.factorizations = readLong(h5, "factorizations");
+    st.doubleFallbacks = readLong(h5, "double_fallbacks");
     st.residualSeconds = readDoubleAttribute(h5, "residual_seconds");
     st.jacobianSeconds = readDoubleAttribute(h5, "jacobian_seconds");
     st.factorSeconds = readDoubleAttribute(h5, "factor_seconds");
+    st.solveSeconds = readDoubleAttribute(h5, "solve_seconds");
     st.seconds = readDoubleAttribute(h5, "seconds");
     if (!s.complete) {
       if (b.points.empty()) throw Error("an unfinished trace without points");

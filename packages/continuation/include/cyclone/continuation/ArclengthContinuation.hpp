@@ -59,6 +59,11 @@ struct ContinuationOptions {
   /// (radians). A half circle of the response (the phase through a resonance) takes
   /// about pi / turnAngle points.
   double turnAngle = 0.25;
+  /// PredictorCorrector: the bordered Jacobian's LU in single precision with every
+  /// solve refined in double (DenseLu's mixed precision, from n = 200): the same
+  /// iterates to rounding, the LU about 1.9x faster; a matrix single precision cannot
+  /// serve is factored again in double (ContinuationStatistics::doubleFallbacks).
+  bool mixedPrecisionLu = true;
   /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
@@ -75,6 +80,11 @@ struct ContinuationOptions {
   /// and restart from the last point with a quarter of the step; after 6 restarts
   /// without progress the curve ends there with that reason.
   bool restartWhereTheCorrectorJumps = true;  // Loca only
+  /// LOCA's dF/dp: a forward difference of step perturbation (perturbation + |p|)
+  /// (LOCA::DerivUtils; LOCA's own is 1e-6). A residual that is continuous but only
+  /// piecewise smooth in p at a fine scale (a peak condition through sampled friction
+  /// laws) needs a step that spans its pieces (continuePeak).
+  double locaParameterPerturbation = 1e-6;  // Loca only
   /// NOX's line search in LOCA's corrector. Full steps are LOCA's default; a
   /// backtracking or polynomial line search can keep Newton from cycling at the
   /// kinks of many friction contacts (docs/scenes.md: the default disc at H = 3).
@@ -95,7 +105,10 @@ struct ContinuationStatistics {
   int rejectedSteps = 0;     ///< corrections that failed or were refused (the step was cut)
   int sphericalSteps = 0;    ///< steps taken by the spherical corrector (sharp turns)
   long residuals = 0, jacobians = 0, factorizations = 0;
-  double residualSeconds = 0, jacobianSeconds = 0, factorSeconds = 0, seconds = 0;
+  /// Factorisations made again in double where the single-precision LU's refinement
+  /// did not reach a double LU's accuracy (DenseLu); their time is in factorSeconds.
+  long doubleFallbacks = 0;
+  double residualSeconds = 0, jacobianSeconds = 0, factorSeconds = 0, solveSeconds = 0, seconds = 0;
 };
 
 struct BranchPoint {
