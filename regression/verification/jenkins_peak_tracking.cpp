@@ -91,20 +91,6 @@ std::pair<double, double> closedFormOptimum(double bestMeasure, double bestFrequ
   return {fs, closedAt(fs)};
 }
 
-// The 1024-sample bounds of both tests: every peak on the describing function's, the
-// optimum, and the linear limits (a 1e-5 slip force still damps the free peak a little).
-template <class Peak>
-void expectTheDescribingFunctionsPeaks(double worstA, double worstW, const Peak& best,
-                                       std::pair<double, double> optimum, const Peak& free, const Peak& stuck) {
-  EXPECT_LT(worstA, 1e-4);
-  EXPECT_LT(worstW, 1e-3);
-  EXPECT_NEAR(std::sqrt(best.measure) / optimum.second, 1.0, 1e-4);
-  EXPECT_NEAR(best.parameter / optimum.first, 1.0, 1e-2);
-  EXPECT_NEAR(std::sqrt(free.measure) / (P / c), 1.0, 5e-3);
-  EXPECT_NEAR(std::sqrt(stuck.measure) / (P / (c * std::sqrt(2.0))), 1.0, 1e-4);
-  EXPECT_NEAR(stuck.frequency, std::sqrt(2.0), 1e-4);
-}
-
 struct Oscillator {
   std::shared_ptr<hbm::HarmonicBalanceSystem> system;
   explicit Oscillator(int samples) {
@@ -137,6 +123,50 @@ continuation::PeakTrackingProblem problemOf(const Oscillator& o) {
   return T;
 }
 
+// Every peak of `curve` against the describing function's (Newton on its two peak
+// equations from the computed point), its optimum against the closed form's minimum over
+// fs, the linear limits; printed with the run time, asserted at 1024 samples (the AFT's
+// 1 / N^2: the stick-slip instants fall between samples, 2.4e-5 of the amplitude; the
+// frequency of a flat, friction-damped top is fixed only to sqrt(that / its curvature):
+// with an equivalent damping ratio of 0.1 (fs 0.04) about 1.4e-3).
+void checkAgainstTheDescribingFunction(const continuation::FollowedPeakCurve& curve, const char* how, double from,
+                                       double to, double seconds, const char* work, int samples) {
+  double worstA = 0, worstW = 0;
+  int jumps = 0;
+  for (const auto& pt : curve.points) {
+    double a = std::sqrt(pt.measure), w = pt.frequency;
+    ASSERT_TRUE(closedFormPeak(pt.parameter, a, w)) << "fs " << pt.parameter;
+    if (std::getenv("CYCLONE_VERBOSE"))
+      std::printf("fs %.6g: %.8f at %.8f, closed form %.8f at %.8f%s\n", pt.parameter, std::sqrt(pt.measure),
+                  pt.frequency, a, w, pt.jump ? " (jump)" : "");
+    worstA = std::max(worstA, std::abs(std::sqrt(pt.measure) / a - 1));
+    worstW = std::max(worstW, std::abs(pt.frequency / w - 1));
+    jumps += pt.jump;
+  }
+  ASSERT_TRUE(curve.optimumLocated);
+  const auto& best = curve.points[std::size_t(curve.optimum)];
+  const auto [optimumFs, optimumA] = closedFormOptimum(best.measure, best.frequency, best.parameter);
+  const auto& free = curve.points.front();
+  const auto& stuck = curve.points.back();
+  std::printf(
+      "%zu peaks over fs %.0e .. %.1f (%d jump), %.2f s (%s)\n"
+      "  against the describing function: amplitude %.1e, frequency %.1e\n"
+      "  optimum: %s %.8f at fs %.6f; closed form %.8f at fs %.6f\n"
+      "  limits: free %.6f at %.6f (P / (c w) = %.6f at 1), stuck %.6f at %.6f (%.6f at sqrt 2)\n",
+      curve.points.size(), from, to, jumps, seconds, work, worstA, worstW, how, std::sqrt(best.measure),
+      best.parameter, optimumA, optimumFs, std::sqrt(free.measure), free.frequency, P / c, std::sqrt(stuck.measure),
+      stuck.frequency, P / (c * std::sqrt(2.0)));
+  if (samples < 1024) return;
+  EXPECT_LT(worstA, 1e-4);
+  EXPECT_LT(worstW, 1e-3);
+  EXPECT_NEAR(std::sqrt(best.measure) / optimumA, 1.0, 1e-4);
+  EXPECT_NEAR(best.parameter / optimumFs, 1.0, 1e-2);
+  // The limits (the linear peaks; a 1e-5 slip force still damps the free one a little).
+  EXPECT_NEAR(std::sqrt(free.measure) / (P / c), 1.0, 5e-3);
+  EXPECT_NEAR(std::sqrt(stuck.measure) / (P / (c * std::sqrt(2.0))), 1.0, 1e-4);
+  EXPECT_NEAR(stuck.frequency, std::sqrt(2.0), 1e-4);
+}
+
 }  // namespace
 
 TEST(PeakFollowing, JenkinsPeakOverTheSlipForceAgainstTheDescribingFunction) {
@@ -155,42 +185,11 @@ TEST(PeakFollowing, JenkinsPeakOverTheSlipForceAgainstTheDescribingFunction) {
     Timer timer;
     const auto curve = continuation::followPeak(T, Eigen::VectorXd(), 0, f);
     ASSERT_TRUE(curve.complete) << curve.stopReason;
-    double worstA = 0, worstW = 0;
-    int jumps = 0;
-    for (const auto& pt : curve.points) {
-      double a = std::sqrt(pt.measure), w = pt.frequency;
-      ASSERT_TRUE(closedFormPeak(pt.parameter, a, w)) << "fs " << pt.parameter;
-      if (std::getenv("CYCLONE_VERBOSE"))
-        std::printf("fs %.6g: %.8f at %.8f, closed form %.8f at %.8f%s\n", pt.parameter, std::sqrt(pt.measure),
-                    pt.frequency, a, w, pt.jump ? " (jump)" : "");
-      worstA = std::max(worstA, std::abs(std::sqrt(pt.measure) / a - 1));
-      worstW = std::max(worstW, std::abs(pt.frequency / w - 1));
-      jumps += pt.jump;
-    }
-    // The optimum of the closed form: golden section on its peak over fs around
-    // the followed one (each from the followed optimum's peak).
-    ASSERT_TRUE(curve.optimumLocated);
-    const auto& best = curve.points[std::size_t(curve.optimum)];
-    const auto [optimumFs, optimumA] = closedFormOptimum(best.measure, best.frequency, best.parameter);
-    const auto& free = curve.points.front();
-    const auto& stuck = curve.points.back();
-    std::printf(
-        "%zu peaks over fs %.0e .. %.1f (%d jump), %.2f s (%d sweeps, %d "
-        "searches, %d Newton solves)\n"
-        "  against the describing function: amplitude %.1e, frequency %.1e\n"
-        "  optimum: followed %.8f at fs %.6f; closed form %.8f at fs %.6f\n"
-        "  limits: free %.6f at %.6f (P / (c w) = %.6f at 1), stuck %.6f at "
-        "%.6f (%.6f at sqrt 2)\n",
-        curve.points.size(), f.parameters.front(), f.parameters.back(), jumps, timer.seconds(), curve.sweeps, curve.searches, curve.solves, worstA,
-        worstW, std::sqrt(best.measure), best.parameter, optimumA, optimumFs, std::sqrt(free.measure), free.frequency,
-        P / c, std::sqrt(stuck.measure), stuck.frequency, P / (c * std::sqrt(2.0)));
-    if (samples < 1024) continue;
-    // AFT with 1024 samples against the exact describing function: the
-    // stick-slip instants fall between samples (2.4e-5 of the amplitude
-    // measured). The frequency of a flat, friction-damped top is fixed only to
-    // sqrt(that / its curvature): with an equivalent damping ratio of 0.1 (fs
-    // 0.04) about 1.4e-3 (2.8e-4 measured).
-    expectTheDescribingFunctionsPeaks(worstA, worstW, best, {optimumFs, optimumA}, free, stuck);
+    char work[128];
+    std::snprintf(work, sizeof work, "%d sweeps, %d searches, %d Newton solves", curve.sweeps, curve.searches,
+                  curve.solves);
+    checkAgainstTheDescribingFunction(curve, "followed", f.parameters.front(), f.parameters.back(), timer.seconds(),
+                                      work, samples);
   }
 }
 
@@ -220,31 +219,8 @@ TEST(PeakContinuation, JenkinsPeakCurveByLocaAgainstTheDescribingFunction) {
       ASSERT_LT(samples, 1024) << curve.stopReason;
       continue;
     }
-    double worstA = 0, worstW = 0;
-    for (const auto& pt : curve.points) {
-      double a = std::sqrt(pt.measure), w = pt.frequency;
-      ASSERT_TRUE(closedFormPeak(pt.parameter, a, w)) << "fs " << pt.parameter;
-      if (std::getenv("CYCLONE_VERBOSE"))
-        std::printf("fs %.6g: %.8f at %.8f, closed form %.8f at %.8f\n", pt.parameter, std::sqrt(pt.measure),
-                    pt.frequency, a, w);
-      worstA = std::max(worstA, std::abs(std::sqrt(pt.measure) / a - 1));
-      worstW = std::max(worstW, std::abs(pt.frequency / w - 1));
-    }
-    ASSERT_TRUE(curve.optimumLocated);
-    const auto& best = curve.points[std::size_t(curve.optimum)];
-    const auto [optimumFs, optimumA] = closedFormOptimum(best.measure, best.frequency, best.parameter);
-    const auto& free = curve.points.front();
-    const auto& stuck = curve.points.back();
-    std::printf(
-        "%zu peaks over fs %.0e .. %.1f, %.2f s (%d LOCA steps, %d Newton solves)\n"
-        "  against the describing function: amplitude %.1e, frequency %.1e\n"
-        "  optimum: continued %.8f at fs %.6f; closed form %.8f at fs %.6f\n"
-        "  limits: free %.6f at %.6f (P / (c w) = %.6f at 1), stuck %.6f at %.6f (%.6f at sqrt 2)\n",
-        curve.points.size(), f.from, f.to, timer.seconds(), curve.searches, curve.solves, worstA, worstW,
-        std::sqrt(best.measure), best.parameter, optimumA, optimumFs, std::sqrt(free.measure), free.frequency, P / c,
-        std::sqrt(stuck.measure), stuck.frequency, P / (c * std::sqrt(2.0)));
-    if (samples < 1024) continue;
-    // The same bounds as the peak search's above (the AFT's 1 / N^2 at 1024 samples).
-    expectTheDescribingFunctionsPeaks(worstA, worstW, best, {optimumFs, optimumA}, free, stuck);
+    char work[128];
+    std::snprintf(work, sizeof work, "%d LOCA steps, %d Newton solves", curve.searches, curve.solves);
+    checkAgainstTheDescribingFunction(curve, "continued", f.from, f.to, timer.seconds(), work, samples);
   }
 }
