@@ -18,6 +18,7 @@
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/fe/Environment.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "DemoDisc.hpp"
 
 using namespace cyclone;
 
@@ -32,15 +33,8 @@ int main(int argc, char** argv) {
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
   const auto mesh = mesh::generateShroudedSector(p);
-  disc::DiscModelSpec models;
-  models.sectors = p.sectors;
-  models.rpm = 10000;
-  disc::DiscResponseSpec spec;
-  spec.engineOrder = 3;
-  spec.harmonics.clear();
-  for (int h = 0; h <= H; ++h) spec.harmonics.push_back(h);
-  spec.contact.preload = preload;
-  spec.excitation.amplitude = 20.0;
+  const disc::DiscModelSpec models = demo_disc::demoDiscModels(p);
+  const disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(H, preload);
   std::vector<int> levels(spec.harmonics);
   const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, levels),
                                                     cache, env.comm());

@@ -14,6 +14,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
+#include "DemoDisc.hpp"
 
 using namespace cyclone;
 
@@ -22,14 +23,8 @@ TEST(DiscHarmonicsTarget, ConvergedPeakMeetsACurveWithTwoHarmonicsMore) {
   mesh::ShroudedSectorParameters p;  // the demo's disc
   p.meshSize = 6.0;
   const auto mesh = mesh::generateShroudedSector(p);
-  disc::DiscModelSpec models;
-  models.sectors = p.sectors;
-  models.rpm = 10000;
-  disc::DiscResponseSpec spec;
-  spec.engineOrder = 3;
-  spec.harmonics = {0, 1};
-  spec.contact.preload = 500.0;
-  spec.excitation.amplitude = 20.0;
+  const disc::DiscModelSpec models = demo_disc::demoDiscModels(p);
+  const disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(1);
   constexpr int kMax = 7, kAbove = 2;
   constexpr double kTolerance = 0.01;
   std::vector<int> all;
