@@ -58,14 +58,14 @@ void DenseLu::factorHeldMatrix(Precision precision) {
     info = -1;
   if (info != 0) {  // singular in single precision, or not representable: double decides
     singleFactors_.resize(0, 0);
-    factors_ = matrix_;
     factorInDouble();
   }
 }
 
+// The double LU into factors_ (mixed: of a copy of A, which the refinement keeps).
 void DenseLu::factorInDouble() const {
+  if (mixed_) factors_ = matrix_;
   const int n = int(factors_.rows());
-  if (mixed_ && factors_.rows() != matrix_.rows()) factors_ = matrix_;
   pivots_.resize(std::size_t(n));
   Teuchos::LAPACK<int, double>().GETRF(n, n, factors_.data(), std::max(n, 1), pivots_.data(), &info_);
   doubleFactored_ = true;
@@ -109,7 +109,6 @@ Eigen::VectorXd DenseLu::solveWith(char trans, const Eigen::VectorXd& b) const {
   if (mixed_ && !doubleFactored_) {
     Eigen::VectorXd x;
     if (refinedSolve(trans, b, x)) return x;
-    factors_ = matrix_;
     factorInDouble();
   }
   if (info_ != 0) return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cyclone/continuation/DenseLu.hpp"
+#include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -37,46 +38,37 @@ public:
   double parameterOf(double q) const { return o_.logarithmic ? std::exp(q) : q; }
   double coordinateOf(double p) const { return o_.logarithmic ? std::log(p) : p; }
 
-  // The solution at (w, p) by Newton from x with backtracking; the last iteration's LU
-  // in `lu`. Throws where it does not converge (a failed evaluation: LOCA cuts its step).
-  Eigen::VectorXd solve(Eigen::VectorXd x, double w, double p, DenseLu& lu) {
+  // The solution at (w, p) by Newton from x (NewtonSolve: backtracking, no stall test:
+  // near a stick-slip corner Newton can take many slow iterations before it settles on a
+  // piece, and a solve given up there stopped the continuation). Throws where it does not
+  // converge (a failed evaluation: LOCA cuts its step).
+  Eigen::VectorXd solve(Eigen::VectorXd x, double w, double p) {
     ++out_.solves;
-    Eigen::VectorXd R, Rt;
-    Eigen::MatrixXd J;
-    P_.residual(x, w, p, R);
-    // No stall test: near a stick-slip corner Newton can take many slow iterations before
-    // it settles on a piece, and a solve given up there stopped the continuation (a
-    // Jenkins element at its stick limit at the peak).
-    for (int it = 0; it <= o_.maxNewtonIterations && R.allFinite(); ++it) {
-      lastSolveIterations_ = it;
-      if (R.norm() <= o_.tolerance) return x;
-      P_.jacobian(x, w, p, J);
-      lu.compute(J);
-      const Eigen::VectorXd d = lu.solve(R);
-      if (!d.allFinite()) break;
-      bool decreased = false;
-      for (double a = 1; a >= 1.0 / 64; a *= 0.5) {
-        P_.residual(x - a * d, w, p, Rt);
-        if (Rt.allFinite() && Rt.norm() < R.norm()) {
-          x -= a * d, R = Rt, decreased = true;
-          break;
-        }
-      }
-      if (!decreased) break;
-    }
-    throw SolverError("peak continuation: no solution at " + std::to_string(w) + " rad/s, parameter " +
-                      std::to_string(p));
+    ContinuationProblem atP;  // in w, at p
+    atP.size = P_.size;
+    atP.residual = [this, p](const Eigen::VectorXd& y, double wy, Eigen::VectorXd& R) { P_.residual(y, wy, p, R); };
+    atP.jacobian = [this, p](const Eigen::VectorXd& y, double wy, Eigen::MatrixXd& J) { P_.jacobian(y, wy, p, J); };
+    if (!solveNewton(atP, x, w, o_.tolerance, o_.maxNewtonIterations).converged)
+      throw SolverError("peak continuation: no solution at " + std::to_string(w) + " rad/s, parameter " +
+                        std::to_string(p));
+    return x;
+  }
+
+  // Distance between two solved points: a relative frequency change of 1 % weighs as the
+  // whole range in q.
+  double distance(double lnw1, double q1, double lnw2, double q2) const {
+    return std::hypot((lnw1 - lnw2) / 0.01, (q1 - q2) / qSpan_);
   }
 
   // The solution at (ln w, q) from `start`: first from the secant through start and the
   // solution made nearest to it (a continuation's steps are long beside the solves'
   // reach on a friction system), then from start itself.
-  Eigen::VectorXd solveFrom(const Solved& start, double lnw, double q, DenseLu& lu) {
+  Eigen::VectorXd solveFrom(const Solved& start, double lnw, double q) {
     const double w = std::exp(lnw), p = parameterOf(q);
     const Solved* before = nullptr;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (const auto& s : solved_) {
-      const double d = std::hypot((start.lnw - s.lnw) / 0.01, (start.q - s.q) / qSpan_);
+      const double d = distance(start.lnw, start.q, s.lnw, s.q);
       if (&s != &start && d > 1e-9 && d < bestDistance) bestDistance = d, before = &s;
     }
     if (before) {
@@ -85,12 +77,12 @@ public:
       const double t = (a[0] * b[0] + a[1] * b[1]) / (a[0] * a[0] + a[1] * a[1]);
       if (t > 1e-6 && t < 4) {
         try {
-          return solve(start.x + t * (start.x - before->x), w, p, lu);
+          return solve(start.x + t * (start.x - before->x), w, p);
         } catch (const SolverError&) {
         }
       }
     }
-    return solve(start.x, w, p, lu);
+    return solve(start.x, w, p);
   }
 
   // The nearest solution made so far: where a solve at (ln w, q) starts.
@@ -98,8 +90,7 @@ public:
     const Solved* best = nullptr;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (const auto& s : solved_) {
-      // A relative frequency change of 1 % weighs as the whole range in q.
-      const double d = std::hypot((lnw - s.lnw) / 0.01, (q - s.q) / qSpan_);
+      const double d = distance(lnw, q, s.lnw, s.q);
       if (d < bestDistance) bestDistance = d, best = &s;
     }
     return best;
@@ -109,18 +100,15 @@ public:
     const double lnw = std::log(w), p = parameterOf(q);
     const Solved* start = nearest(lnw, q);
     if (!start) throw SolverError("peak continuation: no solution to start from");
-    DenseLu lu;
     Condition c;
-    c.x = solveFrom(*start, lnw, q, lu);
+    c.x = solveFrom(*start, lnw, q);
     remember(lnw, q, c.x);
     rememberCentre(w, q, c.x);
-    if (lastSolveIterations_ == 0) {
-      Eigen::MatrixXd J;  // converged at the start: no LU made yet
-      P_.jacobian(c.x, w, p, J);
-      lu.compute(J);
-    }
-    // dx/d ln w at the centre (the last iteration's LU, w dR/dw by a central difference):
-    // the sides' predictor.
+    // dx/d ln w at the centre (J there, w dR/dw by a central difference): the sides'
+    // predictor.
+    Eigen::MatrixXd J;
+    P_.jacobian(c.x, w, p, J);
+    const DenseLu lu(J);
     const double e = 1e-6;
     Eigen::VectorXd Rp, Rm;
     P_.residual(c.x, w * (1 + e), p, Rp);
@@ -130,16 +118,15 @@ public:
     // ln m at ln w + {-3, -1, 1, 3} h / 2, each side solved from the centre along z.
     const double h = o_.frequencyStep;
     double L[4];
-    DenseLu sideLu;
     Eigen::VectorXd side;
     for (int i = 0; i < 4; ++i) {
       const double u = 0.5 * h * double(2 * i - 3);
       // From the tangent's prediction; where that fails (z from an LU on the other side
       // of a stick-slip corner), from the centre itself.
       try {
-        side = solve(c.x + u * z, w * std::exp(u), p, sideLu);
+        side = solve(c.x + u * z, w * std::exp(u), p);
       } catch (const SolverError&) {
-        side = solve(c.x, w * std::exp(u), p, sideLu);
+        side = solve(c.x, w * std::exp(u), p);
       }
       const double m = P_.measure(side);
       if (!(m > 0)) throw SolverError("peak continuation: the response measure is zero (no response to follow)");
@@ -197,7 +184,6 @@ private:
   std::deque<Solved> solved_;
   std::map<std::pair<double, double>, Eigen::VectorXd> centres_;
   double qSpan_ = 1, lastPeakW_ = 0;
-  int lastSolveIterations_ = 0;
 };
 
 }  // namespace
