@@ -77,3 +77,16 @@ TEST(PeakContinuation, RefusesNonsenseWithTheReason) {
   o.frequencyStep = 0.5;
   EXPECT_THROW(continuation::continuePeak(P, x0, 1.0, o), InputError);
 }
+
+TEST(ContinuationOptions, LocaParameterPerturbationOutsideItsRangeIsRefused) {
+  continuation::ContinuationProblem f;
+  f.size = 1;
+  f.residual = [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) { F = x.array() - p; };
+  f.jacobian = [](const Eigen::VectorXd&, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Identity(1, 1); };
+  continuation::ContinuationOptions o;
+  o.engine = continuation::ContinuationOptions::Engine::Loca;
+  for (double bad : {0.0, -1e-6, 1.0, std::nan("")}) {
+    o.locaParameterPerturbation = bad;
+    EXPECT_THROW(continuation::traceBranch(f, Eigen::VectorXd::Zero(1), o), InputError) << bad;
+  }
+}

@@ -4,6 +4,7 @@
 #include "ContinuationEngines.hpp"
 #include "cyclone/continuation/TraceCheckpoint.hpp"
 #include "cyclone/core/ContentHash.hpp"
+#include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 
 namespace cyclone::continuation {
@@ -67,6 +68,10 @@ void saveQuietly(TraceCheckpoints& store, const std::string& key, const TraceSta
 
 Branch traceBranch(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   const bool loca = o.engine == ContinuationOptions::Engine::Loca;
+  if (!(o.locaParameterPerturbation > 0 && o.locaParameterPerturbation < 1))
+    throw InputError("continuation/locaParameterPerturbation",
+                     "must lie in (0, 1) (LOCA's relative difference step for dF/dp), not " +
+                         std::to_string(o.locaParameterPerturbation));
   if (!o.checkpoints) return loca ? traceBranchWithLoca(problem, guess, o) : traceBranchWithPredictorCorrector(problem, guess, o);
   TraceCheckpoints& store = *o.checkpoints;
   const std::string key = traceKey(problem, guess, o);
