@@ -138,6 +138,7 @@ ContinuationProblem peakCondition(const PeakTrackingProblem& P) {
 }
 
 void useSquaredAmplitude(PeakTrackingProblem& P, int c, int s) {
+  P.phaseCosIndex = c, P.phaseSinIndex = s;
   P.measure = [c, s](const Eigen::VectorXd& x) { return x(c) * x(c) + x(s) * x(s); };
   P.measureGradient = [c, s](const Eigen::VectorXd& x) {
     Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());

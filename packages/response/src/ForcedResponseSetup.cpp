@@ -165,6 +165,10 @@ continuation::PeakTrackingProblem peakFollowingProblem(ForcedResponseSetup& setu
   problem.measure = [harmonics, dof, nc](const Eigen::VectorXd& X) {
     return hbm::peakMagnitude(harmonics, Eigen::VectorXd(X.segment(dof * nc, nc)));
   };
+  if (harmonics.contains(1)) {  // the output DOF's fundamental: its phase turns through the resonance
+    problem.phaseCosIndex = dof * nc + harmonics.cosIndex(1);
+    problem.phaseSinIndex = dof * nc + harmonics.sinIndex(1);
+  }
   return problem;
 }
 

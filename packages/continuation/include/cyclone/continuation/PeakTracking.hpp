@@ -40,13 +40,18 @@ struct PeakTrackingProblem {
   /// Jacobian row [0, dg/dw] by differences of the same kind.
   double solutionStep = 0;
   std::vector<int> scaleGroups;  ///< per unknown x, as ContinuationProblem::scaleGroups (empty: one)
+  /// The cos and sin coefficients (indices into x) of the response whose phase
+  /// atan2(x_s, x_c) parametrises the frequency curve near the peak (continuePeak): it
+  /// turns monotonically through a resonance, also where the curve folds in w.
+  int phaseCosIndex = -1, phaseSinIndex = -1;
 };
 
 /// The extended system in y = (x, w / frequencyUnit) and p, for traceBranch.
 ContinuationProblem peakCondition(const PeakTrackingProblem& problem);
 
 /// The measure m(x) = (x_c^2 + x_s^2) of two coefficients (a DOF's cos and sin of one
-/// harmonic): squared amplitude, with its gradient and Hessian.
+/// harmonic): squared amplitude, with its gradient and Hessian; their phase is the
+/// problem's phase (phaseCosIndex, phaseSinIndex).
 void useSquaredAmplitude(PeakTrackingProblem& problem, int cosIndex, int sinIndex);
 
 struct TrackedPeak {
