@@ -43,20 +43,20 @@ TEST(PeakContinuation, LinearPeakOverTheDampingOnTheClosedForm) {
   ASSERT_GE(curve.points.size(), 5u);
   EXPECT_NEAR(curve.points.front().parameter, 0.01, 1e-12);
   EXPECT_NEAR(curve.points.back().parameter, 1.0, 1e-9);
-  // The peak condition is a difference over the phase theta (h = 0.1 rad): with
-  // |x| = sin(theta) / (c w) and ln w ~ (c / 2)(theta - pi / 2) near the peak, ln m =
-  // 2 ln sin(theta) - c (theta - pi / 2) + const, whose third derivative there is about
-  // 2c; the stencil (L(3h/2) + L(h/2) - L(-h/2) - L(-3h/2)) / 4h carries (7/24) h^2 of it,
-  // so the zero is off by (7/24) h^2 c in phase over a curvature of -2, i.e. dtheta =
-  // (7/24) h^2 c, and by dtheta c / 2 = (7/48) h^2 c^2 in ln w (0.2 h^2 c^2 asserted); m,
-  // flat there, is off by about dtheta^2 (measure bound (0.3 h^2 c)^2).
+  // The peak condition is a difference over the phase theta, (L(theta + h) - L(theta -
+  // h)) / 2h with h = 0.15 rad: with |x| = sin(theta) / (c w) and ln w ~ (c / 2)(theta -
+  // pi / 2) near the peak, L = ln m = 2 ln sin(theta) - c (theta - pi / 2) + const, whose
+  // third derivative there is about 2c; the difference carries h^2 / 6 of it, so its zero
+  // is off by (h^2 c / 3) / |L''| = h^2 c / 6 in phase (L'' = -2) and by that times c / 2,
+  // h^2 c^2 / 12, in ln w (0.1 h^2 c^2 asserted); m, flat there, by about (h^2 c / 6)^2
+  // ((0.2 h^2 c)^2 asserted).
   const double h = o.phaseStep;
   double worstW = 0, worstM = 0;
   for (const auto& pt : curve.points) {
     const double c = pt.parameter, w = std::sqrt(1 - c * c / 2), m = 1 / (c * c * (1 - c * c / 4));
     const double errorW = std::abs(pt.frequency / w - 1), errorM = std::abs(pt.measure / m - 1);
-    EXPECT_LT(errorW, 0.2 * h * h * c * c + 1e-9) << "c = " << c;
-    EXPECT_LT(errorM, std::pow(0.3 * h * h * c, 2) + 1e-9) << "c = " << c;
+    EXPECT_LT(errorW, 0.1 * h * h * c * c + 1e-9) << "c = " << c;
+    EXPECT_LT(errorM, std::pow(0.2 * h * h * c, 2) + 1e-9) << "c = " << c;
     worstW = std::max(worstW, errorW);
     worstM = std::max(worstM, errorM);
   }

@@ -25,10 +25,16 @@ struct Solved {
   Eigen::VectorXd x;
 };
 
-// G and its derivative in the phase at (phi, q), with the centre's solution.
+// A solution at phase phi with ln m there and its derivative along the curve.
+struct Slope {
+  double phi = 0, L = 0, dL = 0, w = 0;
+  Eigen::VectorXd x, z;  // the solution and the curve's tangent d(x, ln w)/d phi there
+};
+
+// G and its derivative in the phase at (phi, q), from the sides phi -+ h.
 struct Condition {
-  double G = 0, dGdphi = 0, measure = 0, w = 0;
-  Eigen::VectorXd x;
+  double G = 0, dGdphi = 0;
+  Slope minus, plus;
 };
 
 class ReducedPeakCondition {
@@ -63,29 +69,40 @@ public:
     return std::hypot((phi1 - phi2) / 0.1, (q1 - q2) / qSpan_);
   }
 
-  // The solution at (phi, q) from `start`: first from the secant through start and the
-  // solution made nearest to it (a continuation's steps are long beside the solves'
-  // reach on a friction system), then from start itself.
-  std::pair<Eigen::VectorXd, double> solveFrom(const Solved& start, double phi, double q) {
+  // The solution at (phi, q) from the nearest solution made so far: first from the
+  // secant through it and the solution nearest to that (a continuation's steps are long
+  // beside the solves' reach on a friction system), then from it; where both fail, the
+  // midpoint first (to a depth of 4 halvings), each solution kept.
+  std::pair<Eigen::VectorXd, double> solveFromNearest(double phi, double q, int depth = 0) {
+    const Solved* start = nearest(phi, q);
+    if (!start) throw SolverError("peak continuation: no solution to start from");
     const double p = parameterOf(q);
     const Solved* before = nullptr;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (const auto& s : solved_) {
-      const double d = distance(start.phi, start.q, s.phi, s.q);
-      if (&s != &start && d > 1e-9 && d < bestDistance) bestDistance = d, before = &s;
+      const double d = distance(start->phi, start->q, s.phi, s.q);
+      if (&s != start && d > 1e-9 && d < bestDistance) bestDistance = d, before = &s;
     }
     if (before) {
-      const double a[2] = {(start.phi - before->phi) / 0.1, (start.q - before->q) / qSpan_};
-      const double b[2] = {(phi - start.phi) / 0.1, (q - start.q) / qSpan_};
+      const double a[2] = {(start->phi - before->phi) / 0.1, (start->q - before->q) / qSpan_};
+      const double b[2] = {(phi - start->phi) / 0.1, (q - start->q) / qSpan_};
       const double t = (a[0] * b[0] + a[1] * b[1]) / (a[0] * a[0] + a[1] * a[1]);
       if (t > 1e-6 && t < 4) {
         try {
-          return solve(start.x + t * (start.x - before->x), start.w * std::pow(start.w / before->w, t), phi, p);
+          return solve(start->x + t * (start->x - before->x), start->w * std::pow(start->w / before->w, t), phi, p);
         } catch (const SolverError&) {
         }
       }
     }
-    return solve(start.x, start.w, phi, p);
+    try {
+      return solve(start->x, start->w, phi, p);
+    } catch (const SolverError&) {
+      if (depth >= 4 || distance(phi, q, start->phi, start->q) < 1e-6) throw;
+    }
+    const double midPhi = 0.5 * (phi + start->phi), midQ = 0.5 * (q + start->q);
+    const auto mid = solveFromNearest(midPhi, midQ, depth + 1);
+    remember(midPhi, midQ, mid.second, mid.first);
+    return solveFromNearest(phi, q, depth + 1);
   }
 
   // The nearest solution made so far: where a solve at (phi, q) starts.
@@ -99,48 +116,70 @@ public:
     return best;
   }
 
-  Condition at(double phi, double q) {
+  // ln m at (phi, q) and d ln m / d phi along the curve there (m by a difference along
+  // the curve's tangent). `from`: a solution near phi at the same q, whose tangent is the
+  // predictor (else the nearest solution made).
+  Slope slopeAt(double phi, double q, const Slope* from = nullptr) {
     const double p = parameterOf(q);
-    const Solved* start = nearest(phi, q);
-    if (!start) throw SolverError("peak continuation: no solution to start from");
-    Condition c;
-    std::tie(c.x, c.w) = solveFrom(*start, phi, q);
-    remember(phi, q, c.w, c.x);
-    centres_[{phi, q}] = {c.x, c.w};
-    // ln m at phi + {-3, -1, 1, 3} h / 2 and its derivative along the curve there, each
-    // side solved from the centre along the curve's tangent.
-    const Eigen::VectorXd z = tangent(c.x, c.w, phi, p);
-    const double h = o_.phaseStep;
-    double L[4], dL[4];
-    for (int i = 0; i < 4; ++i) {
-      const double u = 0.5 * h * double(2 * i - 3);
-      // From the tangent's prediction; where that fails (z from a Jacobian on the other
-      // side of a stick-slip corner), from the centre itself.
-      std::pair<Eigen::VectorXd, double> side;
+    Slope s;
+    s.phi = phi;
+    bool solved = false;
+    if (from) {
+      const double u = phi - from->phi;
       try {
-        side = solve(c.x + u * z.head(P_.size), c.w * std::exp(u * z(P_.size)), phi + u, p);
-      } catch (const SolverError&) {
-        side = solve(c.x, c.w, phi + u, p);
+        std::tie(s.x, s.w) = solve(from->x + u * from->z.head(P_.size), from->w * std::exp(u * from->z(P_.size)), phi, p);
+        solved = true;
+      } catch (const SolverError&) {  // the prediction from a Jacobian beyond a stick-slip corner
       }
-      const double m = P_.measure(side.first);
-      if (!(m > 0)) throw SolverError("peak continuation: the response measure is zero (no response to follow)");
-      L[i] = std::log(m);
-      // d ln m / d phi along the curve at the side: m by a difference along its tangent.
-      const Eigen::VectorXd zi = tangent(side.first, side.second, phi + u, p).head(P_.size);
-      const double e = 1e-6;
-      dL[i] = (std::log(P_.measure(side.first + e * zi)) - std::log(P_.measure(side.first - e * zi))) / (2 * e);
     }
-    c.measure = P_.measure(c.x);
-    // G is a difference over the sides alone, (L(3h/2) + L(h/2) - L(-h/2) - L(-3h/2)) / 4h:
-    // m has sparse kinks (a slope change of 6 in d ln m / d ln w measured on a Jenkins
-    // oscillator at 256 samples) and a stencil through the centre, or a narrow one, turned
-    // them into jumps of G's slope. Its derivative is this stencil's own (of the sides'
-    // slopes), not a second difference of L: at a friction-damped top, flat over less than
-    // h, that overstated the slope by 2.4 and LOCA's corrector converged at 0.6 per
-    // iteration.
-    c.G = (L[3] + L[2] - L[1] - L[0]) / (4 * h);
-    c.dGdphi = (dL[3] + dL[2] - dL[1] - dL[0]) / (4 * h);
+    if (!solved) std::tie(s.x, s.w) = solveFromNearest(phi, q);
+    remember(phi, q, s.w, s.x);
+    const double m = P_.measure(s.x);
+    if (!(m > 0)) throw SolverError("peak continuation: the response measure is zero (no response to follow)");
+    s.L = std::log(m);
+    s.z = tangent(s.x, s.w, phi, p);
+    const Eigen::VectorXd z = s.z.head(P_.size);
+    const double e = 1e-6;
+    s.dL = (std::log(P_.measure(s.x + e * z)) - std::log(P_.measure(s.x - e * z))) / (2 * e);
+    return s;
+  }
+
+  // G = (L(phi + h) - L(phi - h)) / 2h and its derivative, the stencil's own (of the
+  // sides' slopes): a difference over the sides spans the sparse kinks of m (a slope
+  // change of 6 in d ln m / d ln w on a Jenkins oscillator at 256 samples), where a
+  // narrow or a centred stencil turned them into jumps of G's slope; and the slope as a
+  // second difference of L overstated it by 2.4 at a friction-damped top flat over less
+  // than h, so that LOCA's corrector converged at 0.6 per iteration.
+  Condition at(double phi, double q) {
+    const double h = o_.phaseStep;
+    Condition c;
+    c.minus = slopeAt(phi - h, q);
+    c.plus = slopeAt(phi + h, q, &c.minus);
+    c.G = (c.plus.L - c.minus.L) / (2 * h);
+    c.dGdphi = (c.plus.dL - c.minus.dL) / (2 * h);
     return c;
+  }
+
+  // The solution at G's zero (phi, q), from the sides of its evaluation when given.
+  // Not the maximum of m between the sides: at low preloads the disc's top is a chain of
+  // micro-folds (a contact event crossing a time sample at each), a local maximum every
+  // 0.03-0.1 Hz and 1e-3 apart in m, and the maximum between the sides was one of those
+  // teeth; G's zero is the peak of their envelope.
+  FollowedPeak peakPoint(double phi, double q, const Condition* sides = nullptr) {
+    std::pair<Eigen::VectorXd, double> c;
+    bool solved = false;
+    if (sides) {
+      const Slope& from = sides->minus;
+      const double u = phi - from.phi;
+      try {
+        c = solve(from.x + u * from.z.head(P_.size), from.w * std::exp(u * from.z(P_.size)), phi, parameterOf(q));
+        solved = true;
+      } catch (const SolverError&) {
+      }
+    }
+    if (!solved) c = solveFromNearest(phi, q);
+    remember(phi, q, c.second, c.first);
+    return FollowedPeak{parameterOf(q), c.second, P_.measure(c.first), c.first, false};
   }
 
   // d(x, ln w)/d phi along the curve at a solution (the bordered Jacobian there).
@@ -161,11 +200,6 @@ public:
   void remember(double phi, double q, double w, const Eigen::VectorXd& x) {
     solved_.push_back({phi, q, w, x});
     if (solved_.size() > 64) solved_.pop_front();
-  }
-  // The centre solutions by their exact (phi, q): LOCA's points are where it evaluated G.
-  const std::pair<Eigen::VectorXd, double>* centre(double phi, double q) const {
-    const auto it = centres_.find({phi, q});
-    return it == centres_.end() ? nullptr : &it->second;
   }
 
   // The peak at q from phase phi: Newton on G in phi.
@@ -236,7 +270,6 @@ private:
   FollowedPeakCurve& out_;
   const int ic_, is_;
   std::deque<Solved> solved_;
-  std::map<std::pair<double, double>, std::pair<Eigen::VectorXd, double>> centres_;
   double qSpan_ = 1, lastPeakPhase_ = 0;
 };
 
@@ -295,9 +328,13 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
     double y = std::numeric_limits<double>::quiet_NaN(), q = 0, G = 0, dGdy = 0;
   };
   auto last = std::make_shared<Last>();
-  const auto evaluate = [&condition, last, phiStart](double y, double q) {
+  // The sides of every evaluation by its exact (phi, q): LOCA's points are where it
+  // evaluated G, and each is solved again at its G's zero from its sides.
+  auto evaluated = std::make_shared<std::map<std::pair<double, double>, Condition>>();
+  const auto evaluate = [&condition, last, evaluated, phiStart](double y, double q) {
     if (!(y == last->y && q == last->q)) {
       const Condition c = condition.at(phiStart + (y - 1), q);
+      (*evaluated)[{phiStart + (y - 1), q}] = c;
       // F = G / |dG/d phi|: the distance to the peak in phase to first order, so that the
       // tolerance is a phase however sharp or flat the peak.
       const double scale = std::max(std::abs(c.dGdphi), 1e-300);
@@ -339,16 +376,20 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
   out.searches = int(branch.points.size());
   out.complete = branch.finished;
   out.stopReason = branch.stopReason;
+  // Each of LOCA's points solved at its G's zero.
+  int unsolved = 0;
   for (const auto& pt : branch.points) {
     const double phi = phiStart + (pt.x(0) - 1), q = pt.parameter - offset;
-    const auto* solved = condition.centre(phi, q);
-    if (!solved) {  // not evaluated at exactly this point (never seen): the point is left out
-      log::warn("peak continuation: no solution kept at a point of the continuation; left out");
-      continue;
+    const auto it = evaluated->find({phi, q});
+    try {
+      out.points.push_back(condition.peakPoint(phi, q, it == evaluated->end() ? nullptr : &it->second));
+    } catch (const SolverError&) {  // left out, said
+      ++unsolved;
     }
-    out.points.push_back({condition.parameterOf(q), solved->second, P.measure(solved->first), solved->first, false});
   }
-  if (out.points.empty()) out.points.push_back({o.from, first.w, first.measure, first.x, false});
+  if (unsolved > 0)
+    log::warn("peak continuation: " + std::to_string(unsolved) + " of LOCA's points not solved again; left out");
+  if (out.points.empty()) out.points.push_back(condition.peakPoint(phiStart, q0, &first));
 
   // The optimum: the smallest peak; inside the range, a golden section in q between its
   // neighbours, each value's peak found from the neighbours' interpolated frequency.
@@ -370,7 +411,11 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
       }
       Condition c;
       if (!condition.peakAt(q, phi, c)) return false;
-      peak = {condition.parameterOf(q), c.w, c.measure, c.x, false};
+      try {
+        peak = condition.peakPoint(condition.lastPeakPhase(), q, &c);
+      } catch (const SolverError&) {
+        return false;
+      }
       return true;
     };
     double a = condition.coordinateOf(out.points[k - 1].parameter), b = condition.coordinateOf(out.points[k + 1].parameter);

@@ -9,6 +9,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/continuation/PeakContinuation.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 
 namespace cyclone::disc {
@@ -67,6 +68,46 @@ void followBothWays(const continuation::PeakTrackingProblem& problem,
   for (std::size_t i = 0; i < whole.points.size(); ++i)
     if (whole.optimum < 0 || out.merit(whole.points[i]) < out.merit(whole.points[std::size_t(whole.optimum)]))
       whole.optimum = int(i);
+}
+
+// The peak continued by LOCA from the reference value down to the range's start and up to
+// its end, joined in parameter order; the optimum by the result's merit over the whole
+// (located by continuePeak where it is the smallest peak inside a run).
+void continueBothWays(const continuation::PeakTrackingProblem& problem, const continuation::PeakStart& start,
+                      const DiscPeakFollowingSpec& following, bool linear, double tolerance, DiscPeakFollowing& out) {
+  Timer timer;
+  continuation::FollowedPeakCurve& whole = out.curve;
+  continuation::PeakContinuationOptions c;
+  c.logarithmic = !linear;
+  c.phaseStep = following.phaseStep;
+  c.tolerance = tolerance;
+  c.locateOptimum = !out.byForce;  // over the force the merit is the peak per unit force
+  bool located = false;
+  double locatedAt = 0;
+  for (const double end : {following.from, following.to}) {
+    if (end == out.referenceValue) continue;
+    c.from = out.referenceValue, c.to = end;
+    const auto run = continuation::continuePeak(problem, start.x, start.frequency, c);
+    whole.searches += run.searches, whole.solves += run.solves;
+    if (!run.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + run.stopReason;
+    if (run.optimumLocated && run.optimum >= 0)
+      located = true, locatedAt = run.points[std::size_t(run.optimum)].parameter;
+    auto points = run.points;
+    if (end < out.referenceValue)
+      std::reverse(points.begin(), points.end());
+    else if (!whole.points.empty() && !points.empty())
+      points.erase(points.begin());  // the reference value's peak, already there
+    whole.points.insert(whole.points.end(), points.begin(), points.end());
+  }
+  whole.seconds = timer.seconds();
+  whole.complete = whole.stopReason.empty() && !whole.points.empty();
+  for (std::size_t i = 0; i < whole.points.size(); ++i)
+    if (whole.optimum < 0 || out.merit(whole.points[i]) < out.merit(whole.points[std::size_t(whole.optimum)]))
+      whole.optimum = int(i);
+  whole.optimumLocated =
+      located && whole.optimum >= 0 && whole.points[std::size_t(whole.optimum)].parameter == locatedAt;
+  out.grid.clear();
+  for (const auto& p : whole.points) out.grid.push_back(p.parameter);
 }
 
 // The models' loss factor (one for all diameters, as the scene builds them).
@@ -134,6 +175,13 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
                                                    std::to_string(out.referenceValue));
   if (following.values < 3 || following.values > 400)
     throw InputError("peak following/" + name, "values must lie in 3..400");
+  const bool byContinuation = following.method == DiscPeakFollowingSpec::Method::Continuation;
+  if (byContinuation && (byLossFactor || bySpeed))
+    throw InputError("peak following/" + name + "/method",
+                     "continuation follows the contact parameters, the clearance and the force, not the " + name +
+                         " (its system is rebuilt per value: use the peak search)");
+  if (byContinuation && !(following.phaseStep > 0 && following.phaseStep < 0.5))
+    throw InputError("peak following/" + name + "/phase_step", "must lie in (0, 0.5) rad");
   if (referenceCurve.branch.points.empty())
     throw SolverError("peak following/" + name + ": the reference curve has no point to start from");
   // An incomplete reference (a stretch left untraced) may have no true peak among its
@@ -205,10 +253,17 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   o.locateOptimum = !out.byForce && !byLossFactor && !bySpeed;
   out.grid = followedValues(following.from, following.to, following.values, out.referenceValue, following.extraValues,
                             byClearance || bySpeed);
-  log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
-            "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
-            " Hz");
-  followBothWays(problem, starts, o, out);
+  if (byContinuation)
+    log::info("peak following over the " + name + ": the largest peak of the reference curve (" +
+              std::to_string(w0 / (2 * M_PI)) + " Hz) continued by LOCA to both ends of the range");
+  else
+    log::info("peak following over the " + name + ": " + std::to_string(out.grid.size()) + " values, from the reference "
+              "curve's " + std::to_string(starts.size()) + " peak(s), the largest at " + std::to_string(w0 / (2 * M_PI)) +
+              " Hz");
+  if (byContinuation)
+    continueBothWays(problem, starts.front(), following, byClearance, reference.continuation.tolerance, out);
+  else
+    followBothWays(problem, starts, o, out);
   setup.rebuild = nullptr;  // it refers to the caller's mesh and models; the system stays at the last value
   if (bySpeed) out.curve.optimum = -1;
   if (out.curve.points.empty()) throw SolverError("peak following/" + name + ": " + out.curve.stopReason);

@@ -11,11 +11,15 @@
 // peaks. The continuation's unknown is the peak's phase:
 //   G(phi; q) = d ln m / d phi  along the frequency curve at p = p(q)  = 0,
 // q = ln p (or p), m(x) the response measure, (x, w)(phi, p) the system's solution at
-// phase phi by Newton (the system bordered with the phase condition); G and its
-// derivative are differences of ln m over the solutions at phi +- {1, 3} h / 2, and LOCA
-// continues G / |dG / d phi| (the distance to the peak in phase, to first order). LOCA
+// phase phi by Newton (the system bordered with the phase condition); G is the
+// difference of ln m over the solutions at phi +- h, its derivative that of the sides'
+// slopes d ln m / d phi (each through the curve's tangent there), and LOCA continues G /
+// |dG / d phi| (the distance to the peak in phase, to first order). LOCA
 // (ArclengthContinuation's Loca engine) continues the one equation in (phi, q) by
-// arclength, so folds of the peak curve in p are passed.
+// arclength, so folds of the peak curve in p are passed. G's zero is the peak to the
+// stencil's bias (h^2 c^2 / 12 in ln w for a linear resonance of damping ratio c / 2),
+// and of the envelope where the top is a chain of micro-folds (the disc's shroud at
+// low preload, a local maximum every 0.03-0.1 Hz, 1e-3 apart).
 //
 // Why this and not trackPeak's bordered system in (x, w): there, Newton works on the
 // whole x and at every sample crossing the Jacobian it linearises jumps, so the
@@ -23,9 +27,9 @@
 // the range, docs/decisions.md). Here each (phi, p) is solved by a Newton of its own
 // (which passes those corners, as PeakSearch's does), and the continuation sees only G:
 // a continuous function of (phi, q) whose slope changes slightly at a crossing. The
-// price is five solves per evaluation of G (the centre and four sides); each starts
-// from the solutions already made (the centre by a secant through the two nearest, the
-// sides from the centre along the curve's tangent).
+// price is two solves and two tangents per evaluation of G; each solve starts from the
+// solutions already made (by a secant through the two nearest, or along the tangent of
+// the other side).
 #include <Eigen/Dense>
 #include <string>
 
@@ -37,9 +41,9 @@ namespace cyclone::continuation {
 struct PeakContinuationOptions {
   double from = 0, to = 0;     ///< the parameter range; the start's peak is at `from` (either direction)
   bool logarithmic = true;     ///< continued in q = ln p (p > 0; decades of a preload evenly); else in p
-  /// h (radians): G from the solutions at phi +- {1, 3} h / 2. Wide enough that G's bends
-  /// at sample crossings stay small beside its slope (about -1 at a peak), narrow beside
-  /// the peak's width of about one radian.
+  /// h (radians): G from the solutions at phi +- h. Wide enough that G's bends at sample
+  /// crossings stay small beside its slope (about -1 at a peak), narrow beside the peak's
+  /// width of about one radian.
   double phaseStep = 0.1;
   double tolerance = 1e-10;    ///< Newton at each (phi, p): ||(R, phase condition)||_2
   int maxNewtonIterations = 50;

@@ -2,7 +2,7 @@
 // The disc's resonance peak followed over a contact or excitation parameter: a peak
 // search per value (continuation::followPeaks) from the reference curve's prominent
 // peaks, down and up a grid from the reference value, instead of a frequency curve per
-// value. The shroud contacts' Jacobian jumps where a stick-slip instant crosses a time
+// value; or the largest peak continued by LOCA (continuation::continuePeak). The shroud contacts' Jacobian jumps where a stick-slip instant crosses a time
 // sample, and the peak condition's arclength tracking creeps there (docs/decisions.md):
 // a fixed-frequency Newton passes those corners.
 #include <functional>
@@ -31,6 +31,15 @@ struct DiscPeakFollowingSpec {
   std::function<DiscReducedModels(double rpm)> modelsAtSpeed;
   /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
   std::vector<double> extraValues;
+  /// PeakSearch: a peak search per value of the grid. Continuation: the peak continued by
+  /// LOCA on the peak condition (continuation::continuePeak, the frequency curve
+  /// parametrised by the response's phase) from the reference value to each end of the
+  /// range, its points where LOCA's steps fall (`values` and `extraValues` unused; the
+  /// optimum located between them). For the contact parameters, the clearance and the
+  /// force, not the loss factor or the speed (their systems are rebuilt per value).
+  enum class Method { PeakSearch, Continuation };
+  Method method = Method::PeakSearch;
+  double phaseStep = 0.1;  ///< continuePeak's h (radians)
 };
 
 struct DiscPeakFollowing {
