@@ -22,7 +22,7 @@ namespace cyclone::scenes {
 namespace {
 
 void writePeakStudy(const std::string& name, const std::string& unit, const continuation::FollowedPeakCurve& curve,
-                    const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed,
+                    const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed, bool continued,
                     const std::string& outDir, SceneSummary& summary) {
   {
     // Every peak's whole solution (the response-curve schema: /parameter, /omega at
@@ -58,11 +58,11 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
   // The clearance on a linear axis (zero and interference are values of it), the others in log.
   const bool linear = name == "clearance" || name == "speed";
   auto axis = [linear](double v) { return linear ? v : std::log10(v); };
-  post::SvgPlot plot("Resonance peak against the " + name + " (followed)",
+  post::SvgPlot plot("Resonance peak against the " + name + (continued ? " (one LOCA continuation)" : " (followed)"),
                      linear ? name + unit : "log10(" + name + unit + ")", "peak max |x(t)|");
   std::vector<double> x, y;
   for (const auto& p : curve.points) x.push_back(axis(p.parameter)), y.push_back(p.measure);
-  plot.addLine(x, y, post::SvgPlot::palette(0), "followed peak");
+  plot.addLine(x, y, post::SvgPlot::palette(0), continued ? "continued peak" : "followed peak");
   if (!listed.empty()) {
     std::vector<double> lx, ly;
     for (const auto& s : listed) lx.push_back(axis(s.value)), ly.push_back(s.peak);
@@ -93,9 +93,14 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
   for (const auto& p : whole.points) jumps += p.jump;
   std::ostringstream line;
   line.precision(6);
-  line << "peak following over the " << name << " " << range[0] << ".." << range[1] << ": " << whole.points.size()
-       << " values in " << whole.seconds << " s (" << whole.searches << " peak searches, " << whole.solves
-       << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); ";
+  if (f.continued)
+    line << "peak continued over the " << name << " " << range[0] << ".." << range[1] << " by LOCA: "
+         << whole.points.size() << " points in " << whole.seconds << " s (" << whole.searches << " LOCA steps, "
+         << whole.solves << " Newton solves); ";
+  else
+    line << "peak following over the " << name << " " << range[0] << ".." << range[1] << ": " << whole.points.size()
+         << " values in " << whole.seconds << " s (" << whole.searches << " peak searches, " << whole.solves
+         << " Newton solves, " << whole.sweeps << " band sweeps, " << jumps << " jumps to another peak); ";
   if (whole.optimum < 0) {  // the speed: an operating condition, its largest peak
     std::size_t top = 0;
     for (std::size_t i = 0; i < whole.points.size(); ++i)
@@ -148,6 +153,13 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     }
     const int values = s.getInt("values", 24);
     if (values < 3 || values > 400) throw InputError(s.where("values"), "must lie in 3..400");
+    const std::string method = s.getString("method", "peak_search");
+    if (method != "peak_search" && method != "continuation")
+      throw InputError(s.where("method"), "must be peak_search (a peak search per value) or continuation (one LOCA "
+                                          "continuation of the peak), not '" + method + "'");
+    if (method == "continuation" && (name == "loss_factor" || name == "speed"))
+      throw InputError(s.where("method"), "continuation follows the contact parameters, the clearance and the force; "
+                                          "the " + name + " rebuilds the system per value: use peak_search");
     s.rejectUnknownKeys();
     // force: the excitation's scale (times disc_response/excitation/amplitude), as the studies';
     // contact_stiffness: kn = kt together, so the scene's two must be equal.
@@ -162,7 +174,7 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     if (!(refValue >= range[0] && refValue <= range[1]))
       throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
                                              "): the following starts at the reference curve's peak");
-    out.push_back({name, range[0], range[1], values});
+    out.push_back({name, range[0], range[1], values, method == "continuation"});
   }
   peakStudies.rejectUnknownKeys();
   return out;
@@ -178,6 +190,7 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     disc::DiscPeakFollowingSpec following;
     following.parameter = *disc::discStudyParameterFromName(name);
     following.from = study.from, following.to = study.to, following.values = study.values;
+    if (study.continuation) following.method = disc::DiscPeakFollowingSpec::Method::Continuation;
     const auto listedHere = listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{};
     for (const auto& p : listedHere) following.extraValues.push_back(p.value);
     // The speed: the scene's reduced models (same kind, nodal diameters and cache) at each speed.
@@ -196,14 +209,18 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
                              : name == "clearance"         ? " / mm"
                              : name == "speed"             ? " / rpm"
                                                            : "";
-    if (comm->getRank() == 0) writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, outDir, summary);
+    if (comm->getRank() == 0)
+      writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, study.continuation, outDir, summary);
     std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     for (const auto& w : f.warnings) line += "; warning: " + w;
     summary.computed.push_back(line);
     log::info(line);
     summary.stages.push_back(
         {"peak following (" + name + ")", f.curve.seconds,
-         std::string("each peak by a peak search to 1e-7 of its frequency; the harmonics are the reference curve's") +
+         std::string(study.continuation ? "the peak continued by LOCA on the peak condition (the frequency curve "
+                                          "parametrised by the response's phase)"
+                                        : "each peak by a peak search to 1e-7 of its frequency") +
+             "; the harmonics are the reference curve's" +
              (name == "speed" ? "; the reduced models built again at each speed (no interpolation between speeds)"
                               : "")});
   }

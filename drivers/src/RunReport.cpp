@@ -115,8 +115,13 @@ void studySections(std::ostringstream& r, const std::string& outDir, const Scene
     if (name.rfind("peak_", 0) != 0 || std::filesystem::path(path).extension() != ".svg") continue;
     const std::string base = name.substr(0, name.size() - 4);
     if (!studies) r << "## Parameter studies\n\n", studies = true;
-    r << "### " << base.substr(5) << ": the peak followed\n\nOne peak search per value from the reference curve's "
-      << "peak (`" << base << ".csv`; the optimum, the smallest peak, is marked; the frequency curves' peaks of the "
+    const std::string parameter = base.substr(5);
+    bool continued = false;  // said by the study's summary line
+    for (const auto& line : summary.computed) continued |= line.rfind("peak continued over the " + parameter + " ", 0) == 0;
+    r << "### " << parameter << ": the peak followed\n\n"
+      << (continued ? "The reference curve's peak continued over the range by one LOCA continuation"
+                    : "One peak search per value from the reference curve's peak")
+      << " (`" << base << ".csv`; the optimum, the smallest peak, is marked; the frequency curves' peaks of the "
       << "study at the same values beside it):\n\n![" << base << "](" << name << ")\n\n";
     if (exists(outDir, base + ".csv")) r << csvTable(outDir + "/" + base + ".csv", 50) << "\n";
   }

@@ -141,6 +141,7 @@ struct PeakStudySpec {
   std::string name;  ///< preload, mu, contact_stiffness, force, loss_factor, clearance or speed
   double from = 0, to = 0;
   int values = 24;
+  bool continuation = false;  ///< method: continuation (one LOCA continuation), else a peak search per value
 };
 
 /// Reads and checks disc_response/peak_studies before any work (InputError naming the

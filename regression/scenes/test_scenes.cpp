@@ -689,6 +689,12 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   EXPECT_NE(msg.find("0 < from < to"), std::string::npos) << msg;
   msg = peakStudy("      mu: {range: [0.1, 0.8], values: 2}\n");
   EXPECT_NE(msg.find("peak_studies/mu/values"), std::string::npos) << msg;
+  msg = peakStudy("      preload: {range: [1.0, 200.0], method: bisection}\n");
+  EXPECT_NE(msg.find("peak_studies/preload/method"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be peak_search"), std::string::npos) << msg;
+  msg = peakStudy("      loss_factor: {range: [0.001, 0.05], method: continuation}\n");
+  EXPECT_NE(msg.find("peak_studies/loss_factor/method"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("use peak_search"), std::string::npos) << msg;
   msg = peakStudy("      stiffness: {range: [1.0, 2.0]}\n");
   EXPECT_NE(msg.find("stiffness"), std::string::npos) << msg;
   // The contact stiffness is followed as kn = kt: a scene with kn != kt is refused.

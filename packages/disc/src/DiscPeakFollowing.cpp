@@ -176,6 +176,7 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   if (following.values < 3 || following.values > 400)
     throw InputError("peak following/" + name, "values must lie in 3..400");
   const bool byContinuation = following.method == DiscPeakFollowingSpec::Method::Continuation;
+  out.continued = byContinuation;
   if (byContinuation && (byLossFactor || bySpeed))
     throw InputError("peak following/" + name + "/method",
                      "continuation follows the contact parameters, the clearance and the force, not the " + name +

@@ -53,6 +53,7 @@ struct DiscPeakFollowing {
   /// force (the most friction damping); otherwise the smallest peak. Over the speed, an
   /// operating condition and not a design choice, none (curve.optimum = -1).
   bool byForce = false;
+  bool continued = false;  ///< by one LOCA continuation (Method::Continuation), else a peak search per value
   double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
 };
 
