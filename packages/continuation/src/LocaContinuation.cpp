@@ -36,6 +36,41 @@ struct CorrectorJumped : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// dF/dp from the problem (ContinuationProblem::parameterDerivative) where LOCA would take
+// a difference in p: each such difference is a whole evaluation of F, once per Newton
+// iteration of LOCA's arclength corrector.
+class ProblemParameterDerivative : public LOCA::DerivUtils {
+public:
+  ProblemParameterDerivative(const Teuchos::RCP<LOCA::GlobalData>& globalData, const ContinuationProblem& problem)
+      : LOCA::DerivUtils(globalData), problem_(problem) {}
+  Teuchos::RCP<LOCA::DerivUtils> clone(NOX::CopyType) const override {
+    return Teuchos::rcp(new ProblemParameterDerivative(*this));
+  }
+  NOX::Abstract::Group::ReturnType computeDfDp(LOCA::MultiContinuation::AbstractGroup& grp,
+                                               const std::vector<int>& paramIds, NOX::Abstract::MultiVector& result,
+                                               bool isValidF) const override {
+    if (!isValidF) {
+      if (grp.computeF() != NOX::Abstract::Group::Ok) return NOX::Abstract::Group::Failed;
+      result[0] = grp.getF();
+    }
+    try {
+      const auto& x = dynamic_cast<const NOX::LAPACK::Vector&>(grp.getX());
+      Eigen::VectorXd X(x.length()), dFdp;
+      for (int i = 0; i < x.length(); ++i) X(i) = x(i);
+      problem_.parameterDerivative(X, grp.getParam(paramIds.at(0)), dFdp);
+      if (!dFdp.allFinite() || dFdp.size() != X.size()) return NOX::Abstract::Group::Failed;
+      auto& column = dynamic_cast<NOX::LAPACK::Vector&>(result[1]);
+      for (int i = 0; i < x.length(); ++i) column(i) = dFdp(i);
+      return NOX::Abstract::Group::Ok;
+    } catch (...) {
+      return NOX::Abstract::Group::Failed;
+    }
+  }
+
+private:
+  const ContinuationProblem& problem_;
+};
+
 class Interface : public LOCA::LAPACK::Interface {
 public:
   /// before: the branch's points before x0 when LOCA resumes a branch (empty at
@@ -193,7 +228,9 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
                     o.stopWhereItTurnsBack, o.restartWhereTheCorrectorJumps);
     auto group = Teuchos::rcp(new LOCA::LAPACK::Group(globalData, iface));
     group->setParams(p);
-    if (o.locaParameterPerturbation != 1e-6)
+    if (problem.parameterDerivative)
+      group->setDerivUtils(Teuchos::rcp(new ProblemParameterDerivative(globalData, problem)));
+    else if (o.locaParameterPerturbation != 1e-6)
       group->setDerivUtils(Teuchos::rcp(new LOCA::DerivUtils(globalData, o.locaParameterPerturbation)));
     auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
     tests->addStatusTest(Teuchos::rcp(new NOX::StatusTest::NormF(o.tolerance)));

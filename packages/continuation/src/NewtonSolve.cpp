@@ -7,7 +7,7 @@
 namespace cyclone::continuation {
 
 NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance,
-                         int maxIterations) {
+                         int maxIterations, DenseLu* lastFactors) {
   NewtonResult r;
   Eigen::VectorXd F, Ft;
   Eigen::MatrixXd J;
@@ -18,7 +18,10 @@ NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x,
       problem.jacobian(x, p, J);
       // Partial pivoting (LAPACK, several times faster than full pivoting at the
       // harmonic balance's sizes); full pivoting only when J is singular to it.
-      Eigen::VectorXd dx = DenseLu(J).solve(-F);
+      DenseLu local;
+      DenseLu& lu = lastFactors ? *lastFactors : local;
+      lu.compute(J);
+      Eigen::VectorXd dx = lu.solve(-F);
       if (!dx.allFinite()) dx = J.fullPivLu().solve(-F);
       double step = 1.0;
       for (int k = 0;; ++k, step *= 0.5) {  // backtracking: accept the first sufficient decrease

@@ -27,13 +27,13 @@ struct Solved {
 
 // A solution at phase phi with ln m there and its derivative along the curve.
 struct Slope {
-  double phi = 0, L = 0, dL = 0, w = 0;
+  double phi = 0, L = 0, dL = 0, dLdq = 0, w = 0;
   Eigen::VectorXd x, z;  // the solution and the curve's tangent d(x, ln w)/d phi there
 };
 
 // G and its derivative in the phase at (phi, q), from the sides phi -+ h.
 struct Condition {
-  double G = 0, dGdphi = 0;
+  double G = 0, dGdphi = 0, dGdq = 0;
   Slope minus, plus;
 };
 
@@ -57,7 +57,9 @@ public:
     const ContinuationProblem bordered = borderedAt(w, phi, p, amplitudeOf(x));
     Eigen::VectorXd y(P_.size + 1);
     y << x, 0.0;
-    if (!solveNewton(bordered, y, 0.0, o_.tolerance, o_.maxNewtonIterations).converged)
+    const NewtonResult r = solveNewton(bordered, y, 0.0, o_.tolerance, o_.maxNewtonIterations, &lastFactors_);
+    lastIterations_ = r.iterations;
+    if (!r.converged)
       throw SolverError("peak continuation: no solution at phase " + std::to_string(phi) + " near " +
                         std::to_string(w) + " rad/s, parameter " + std::to_string(p));
     return {y.head(P_.size), w * std::exp(y(P_.size))};
@@ -137,10 +139,26 @@ public:
     const double m = P_.measure(s.x);
     if (!(m > 0)) throw SolverError("peak continuation: the response measure is zero (no response to follow)");
     s.L = std::log(m);
-    s.z = tangent(s.x, s.w, phi, p);
-    const Eigen::VectorXd z = s.z.head(P_.size);
+    // The tangent by the LU of Newton's last iteration (the bordered Jacobian one step
+    // before the solution: the slope it gives is LOCA's Jacobian and the other side's
+    // predictor, neither of which needs it exact), else by the Jacobian at the solution.
+    if (lastIterations_ == 0) factorBordered(s.x, s.w, phi, p, lastFactors_);
+    s.z = tangentBy(lastFactors_, s.x, phi);
     const double e = 1e-6;
-    s.dL = (std::log(P_.measure(s.x + e * z)) - std::log(P_.measure(s.x - e * z))) / (2 * e);
+    const auto slopeAlong = [&](const Eigen::VectorXd& d) {
+      return (std::log(P_.measure(s.x + e * d)) - std::log(P_.measure(s.x - e * d))) / (2 * e);
+    };
+    s.dL = slopeAlong(s.z.head(P_.size));
+    // d ln m / dq at a fixed phase (the same factors, R's derivative in q by a central
+    // difference): LOCA's dG/dq, which it would otherwise take as a difference of G.
+    const double dq = o_.logarithmic ? e : e * qSpan_;
+    Eigen::VectorXd Rp, Rm;
+    P_.residual(s.x, s.w, parameterOf(q + dq), Rp);
+    P_.residual(s.x, s.w, parameterOf(q - dq), Rm);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(P_.size + 1);
+    b.head(P_.size) = -(Rp - Rm) / (2 * dq);
+    const Eigen::VectorXd zq = lastFactors_.solve(b);
+    s.dLdq = zq.allFinite() ? slopeAlong(zq.head(P_.size)) : 0.0;
     return s;
   }
 
@@ -157,6 +175,7 @@ public:
     c.plus = slopeAt(phi + h, q, &c.minus);
     c.G = (c.plus.L - c.minus.L) / (2 * h);
     c.dGdphi = (c.plus.dL - c.minus.dL) / (2 * h);
+    c.dGdq = (c.plus.dLdq - c.minus.dLdq) / (2 * h);
     return c;
   }
 
@@ -182,17 +201,21 @@ public:
     return FollowedPeak{parameterOf(q), c.second, P_.measure(c.first), c.first, false};
   }
 
-  // d(x, ln w)/d phi along the curve at a solution (the bordered Jacobian there).
-  Eigen::VectorXd tangent(const Eigen::VectorXd& x, double w, double phi, double p) const {
-    const double amplitude = amplitudeOf(x);
-    const ContinuationProblem bordered = borderedAt(w, phi, p, amplitude);
+  // The bordered Jacobian at a solution, factored.
+  void factorBordered(const Eigen::VectorXd& x, double w, double phi, double p, DenseLu& factors) const {
+    const ContinuationProblem bordered = borderedAt(w, phi, p, amplitudeOf(x));
     Eigen::VectorXd y(P_.size + 1);
     y << x, 0.0;
     Eigen::MatrixXd K;
     bordered.jacobian(y, 0.0, K);
+    factors.computeTaking(K);
+  }
+
+  // d(x, ln w)/d phi along the curve at a solution, by factors of the bordered Jacobian.
+  Eigen::VectorXd tangentBy(const DenseLu& factors, const Eigen::VectorXd& x, double phi) const {
     Eigen::VectorXd b = Eigen::VectorXd::Zero(P_.size + 1);
-    b(P_.size) = -(x(ic_) * std::cos(phi) + x(is_) * std::sin(phi)) / amplitude;  // -d(condition)/d phi
-    Eigen::VectorXd z = DenseLu(K).solve(b);
+    b(P_.size) = -(x(ic_) * std::cos(phi) + x(is_) * std::sin(phi)) / amplitudeOf(x);
+    Eigen::VectorXd z = factors.solve(b);
     if (!z.allFinite()) z.setZero(P_.size + 1);
     return z;
   }
@@ -269,6 +292,8 @@ private:
   const PeakContinuationOptions& o_;
   FollowedPeakCurve& out_;
   const int ic_, is_;
+  DenseLu lastFactors_;     // the last solve's last Newton LU
+  int lastIterations_ = 0;  // and its iterations (0: no LU made)
   std::deque<Solved> solved_;
   double qSpan_ = 1, lastPeakPhase_ = 0;
 };
@@ -325,7 +350,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
   // G and dG/dy at the last (y, q) evaluated: LOCA asks for the Jacobian where it has
   // just had the residual.
   struct Last {
-    double y = std::numeric_limits<double>::quiet_NaN(), q = 0, G = 0, dGdy = 0;
+    double y = std::numeric_limits<double>::quiet_NaN(), q = 0, G = 0, dGdy = 0, dGdq = 0;
   };
   auto last = std::make_shared<Last>();
   // The sides of every evaluation by its exact (phi, q): LOCA's points are where it
@@ -338,7 +363,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
       // F = G / |dG/d phi|: the distance to the peak in phase to first order, so that the
       // tolerance is a phase however sharp or flat the peak.
       const double scale = std::max(std::abs(c.dGdphi), 1e-300);
-      *last = {y, q, c.G / scale, c.dGdphi / scale};
+      *last = {y, q, c.G / scale, c.dGdphi / scale, c.dGdq / scale};
     }
   };
   // LOCA's parameter s = q + offset lies in [span, 2 span], so that its difference step
@@ -358,6 +383,11 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
     evaluate(y(0), q);
     J.resize(1, 1);
     J(0, 0) = last->dGdy;
+  };
+  reduced.parameterDerivative = [evaluate, last, offset](const Eigen::VectorXd& y, double s, Eigen::VectorXd& d) {
+    evaluate(y(0), s - offset);
+    d.resize(1);
+    d(0) = last->dGdq;
   };
   ContinuationOptions loca;
   loca.engine = ContinuationOptions::Engine::Loca;

@@ -36,6 +36,9 @@ struct ContinuationProblem {
   /// deformation is no longer the yardstick of the vibration, so a step cannot leap
   /// over a sharp resonance whose motion is small beside it.
   std::vector<int> scaleGroups;
+  /// Optional dF/dp(x; p): LOCA's engine uses it instead of its difference in p (one
+  /// evaluation of F per Newton iteration of its corrector).
+  std::function<void(const Eigen::VectorXd& x, double p, Eigen::VectorXd& dFdp)> parameterDerivative;
 };
 
 struct ContinuationOptions {

@@ -6,6 +6,8 @@
 
 namespace cyclone::continuation {
 
+class DenseLu;
+
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;
@@ -16,7 +18,9 @@ struct NewtonResult {
 /// so does a stagnation: no step along the Newton direction (down to 2^-30 of it)
 /// decreases ||F|| (a spurious local minimum at the kinks of a nonsmooth system,
 /// which more iterations do not leave).
+/// lastFactors (optional): the LU of the last Jacobian factored (empty when x was
+/// already a solution), for the caller's solves at the solution (e.g. a tangent).
 NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance = 1e-10,
-                         int maxIterations = 200);
+                         int maxIterations = 200, DenseLu* lastFactors = nullptr);
 
 }  // namespace cyclone::continuation
