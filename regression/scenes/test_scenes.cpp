@@ -190,11 +190,12 @@ namespace {
 
 // The demo's checks, one product each (DemoSceneWritesSaneProducts runs them in turn).
 void checkFollowedPeaks(const fs::path& dir) {
-  // The peak followed over the preload (peak_studies): at the value-list study's
-  // preloads it meets the peaks of the frequency curves traced there, to what those
+  // The peak continued over the preload (peak_studies, one LOCA continuation): at the
+  // value-list study's preloads (the range's ends and the scene's preload, points of the
+  // continuation) it meets the peaks of the frequency curves traced there, to what those
   // curves resolve of their flat, friction-damped tops (a curve's largest point, which a
-  // study reports, against the search's located peak: up to 2.3e-3 on the 12 mm disc of
-  // earlier demos at 50 N, whose curve stepped 1.35 Hz across its top).
+  // study reports: up to 2.3e-3 on the 12 mm disc of earlier demos at 50 N, whose curve
+  // stepped 1.35 Hz across its top; tops of micro-folds 1.1e-3 deep at 300 N).
   {
     auto rows = [&](const char* name) {
       std::ifstream in(dir / name);
@@ -210,7 +211,7 @@ void checkFollowedPeaks(const fs::path& dir) {
       return out;
     };
     const auto followed = rows("peak_preload.csv"), swept = rows("study_preload.csv");
-    ASSERT_GE(followed.size(), 5u);  // the range's 5 values, the scene's and the study's preloads inside it
+    ASSERT_GE(followed.size(), 5u);  // LOCA's points, the range's ends and the scene's preload among them
     int optima = 0, compared = 0;
     for (std::size_t i = 0; i < followed.size(); ++i) {
       optima += followed[i][4] == 1;

@@ -59,31 +59,32 @@ TEST(DiscPeakContinuation, PreloadPeakCurveMeetsTracedCurvesAtFiveValues) {
     EXPECT_GT(cc.points[i].parameter, cc.points[i - 1].parameter) << "in parameter order";
 
   // Five of the continued points, spread over the curve, each against a frequency curve
-  // traced at its preload over 1 % about the continued peak's frequency (the peak is 0.1 %
-  // wide at most; the reference's whole range took 19 s a curve).
+  // traced at its preload over 2 % about the continued peak's frequency.
   double worstM = 0, worstW = 0, tracedSeconds = 0;
   for (int k = 0; k < 5; ++k) {
     const auto& a = cc.points[std::size_t(k * (cc.points.size() - 1) / 4)];
-    disc::DiscResponseSpec at = spec;
-    at.contact.preload = a.parameter;
-    disc::DiscSweepOptions over = sweep;
-    over.fromHz = 0.99 * a.frequency / (2 * M_PI), over.toHz = 1.01 * a.frequency / (2 * M_PI);
     timer.restart();
-    const auto curve = disc::solveDiscForcedResponse(mesh, reduced, at, over);
+    const auto curve = demo_disc::curveAboutPeak(mesh, reduced, spec, a.parameter, a.frequency, sweep);
     tracedSeconds += timer.seconds();
     ASSERT_TRUE(curve.curve.branch.finished) << a.parameter << " N: " << curve.curve.branch.stopReason;
     const auto& traced = curve.curve;
     const double dm = std::abs(a.measure / traced.peak - 1), dw = std::abs(a.frequency / traced.peakOmega - 1);
-    // The continued peak is a solution on this curve, so at most its largest point (both to
-    // the Newton tolerance: 1e-8 of the forces, Q x 1e-8 ~ 1e-5 of a response near the
-    // resonance), and at least that less the top's own resolution: at low preloads the top
-    // is a chain of micro-folds (a contact event crossing a time sample at each), whose
-    // successive local maxima and minima differ by up to 1.1e-3 at 300 N, and at 282 N its
-    // largest point moves by 1.2e-3 from 256 to 1024 samples (probes, docs/decisions.md).
-    // Its frequency lies where the traced curve is within that of its largest point (to
-    // the traced points: between the nearest points outside that band).
-    EXPECT_LE(a.measure, traced.peak * (1 + 1e-5)) << a.parameter << " N";
-    EXPECT_GE(a.measure, traced.peak * (1 - 1e-3)) << a.parameter << " N";
+    // The traced peak is defined to its top's resolution at 256 samples: at low preloads
+    // the top is a chain of micro-folds (a contact event crossing a time sample at each;
+    // successive maxima and minima 1.1e-3 apart at 300 N, the largest point moving 1.2e-3
+    // from 256 to 1024 samples at 282 N, and two traces of the 500 N curve over different
+    // ranges located their peaks 5e-5 apart: probes, docs/decisions.md), whose envelope
+    // the continued peak follows while the traced one is the largest tooth its path
+    // passed. So both agree to 1e-3 (the continued stencil's own bias, about h^2 c^2 / 12
+    // on a linear top, 1e-8 here, is below that on the asymmetric friction-damped tops
+    // too: 3.9e-5 to 1.8e-4 at 510-523 N, tops with one maximum). Its frequency lies where the traced
+    // curve is within 1e-3 of its largest point (to the traced points: between the
+    // nearest points outside that band).
+    int maxima = 0;  // local maxima on the top (printed: the teeth)
+    for (std::size_t i = 1; i + 1 < traced.measure.size(); ++i)
+      maxima += traced.measure[i] >= traced.measure[i - 1] && traced.measure[i] >= traced.measure[i + 1] &&
+                traced.measure[i] >= traced.peak * (1 - 1e-3);
+    EXPECT_LE(dm, 1e-3) << a.parameter << " N, " << maxima << " maxima on the top";
     double topFrom = traced.peakOmega, topTo = traced.peakOmega;
     for (std::size_t i = 0; i < traced.measure.size(); ++i)
       if (traced.measure[i] >= traced.peak * (1 - 1e-3)) {
@@ -93,9 +94,9 @@ TEST(DiscPeakContinuation, PreloadPeakCurveMeetsTracedCurvesAtFiveValues) {
     EXPECT_GE(a.frequency, topFrom) << a.parameter << " N";
     EXPECT_LE(a.frequency, topTo) << a.parameter << " N";
     std::printf("preload %8.2f N: continued %.6f mm at %.4f Hz, traced %.6f mm at %.4f Hz (%.1e, %.1e; %zu points, "
-                "%.1f s)\n",
+                "%.1f s, %d maxima on its top)\n",
                 a.parameter, a.measure, a.frequency / (2 * M_PI), curve.curve.peak, curve.curve.peakOmega / (2 * M_PI), dm,
-                dw, curve.curve.branch.points.size(), timer.seconds());
+                dw, curve.curve.branch.points.size(), timer.seconds(), maxima);
     worstM = std::max(worstM, dm), worstW = std::max(worstW, dw);
   }
   std::printf("continued: %zu points over 300..2000 N in %.1f s (%d LOCA steps, %d solves); 5 frequency curves in "

@@ -82,6 +82,10 @@ void continueBothWays(const continuation::PeakTrackingProblem& problem, const co
   c.phaseStep = following.phaseStep;
   c.tolerance = tolerance;
   c.locateOptimum = !out.byForce;  // over the force the merit is the peak per unit force
+  // Steps of at most a twelfth of the whole range, not of each run's part: a part of a
+  // tenth of the range (400..500 N of 400..4000) took 13 steps of its own twelfth.
+  c.maxStep = linear ? std::abs(following.to - following.from) / 12
+                     : std::abs(std::log(following.to) - std::log(following.from)) / 12;
   bool located = false;
   double locatedAt = 0;
   for (const double end : {following.from, following.to}) {
