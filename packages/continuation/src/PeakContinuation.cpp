@@ -366,33 +366,26 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
       *last = {y, q, c.G / scale, c.dGdphi / scale, c.dGdq / scale};
     }
   };
-  // LOCA's parameter s = q + offset lies in [span, 2 span], so that its difference step
-  // for dG/dq (perturbation x |s|) is 0.7e-4 to 1.4e-4 of the range whatever q's value
-  // (LOCA's 1e-6 |q| vanishes at q = 0, p = 1): G is continuous but bends where a
-  // stick-slip instant crosses a time sample, and a step over such bends gives their
-  // mean slope.
-  const double span = std::abs(q1 - q0), offset = span - std::min(q0, q1);
-  reduced.residual = [evaluate, last, offset](const Eigen::VectorXd& y, double s, Eigen::VectorXd& F) {
-    const double q = s - offset;
+  // LOCA continues in q itself; its dF/dq is the sides' (parameterDerivative), not a
+  // difference of G in q.
+  reduced.residual = [evaluate, last](const Eigen::VectorXd& y, double q, Eigen::VectorXd& F) {
     evaluate(y(0), q);
     F.resize(1);
     F(0) = last->G;
   };
-  reduced.jacobian = [evaluate, last, offset](const Eigen::VectorXd& y, double s, Eigen::MatrixXd& J) {
-    const double q = s - offset;
+  reduced.jacobian = [evaluate, last](const Eigen::VectorXd& y, double q, Eigen::MatrixXd& J) {
     evaluate(y(0), q);
     J.resize(1, 1);
     J(0, 0) = last->dGdy;
   };
-  reduced.parameterDerivative = [evaluate, last, offset](const Eigen::VectorXd& y, double s, Eigen::VectorXd& d) {
-    evaluate(y(0), s - offset);
+  reduced.parameterDerivative = [evaluate, last](const Eigen::VectorXd& y, double q, Eigen::VectorXd& d) {
+    evaluate(y(0), q);
     d.resize(1);
     d(0) = last->dGdq;
   };
   ContinuationOptions loca;
   loca.engine = ContinuationOptions::Engine::Loca;
-  loca.from = q0 + offset, loca.to = q1 + offset;
-  loca.locaParameterPerturbation = 7e-5;
+  loca.from = q0, loca.to = q1;
   loca.tolerance = o.conditionTolerance;
   loca.initialStep = o.initialStep;
   loca.minStep = o.minStep;
@@ -409,7 +402,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
   // Each of LOCA's points solved at its G's zero.
   int unsolved = 0;
   for (const auto& pt : branch.points) {
-    const double phi = phiStart + (pt.x(0) - 1), q = pt.parameter - offset;
+    const double phi = phiStart + (pt.x(0) - 1), q = pt.parameter;
     const auto it = evaluated->find({phi, q});
     try {
       out.points.push_back(condition.peakPoint(phi, q, it == evaluated->end() ? nullptr : &it->second));
