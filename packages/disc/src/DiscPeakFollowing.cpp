@@ -86,6 +86,7 @@ void continueBothWays(const continuation::PeakTrackingProblem& problem, const co
   // tenth of the range (400..500 N of 400..4000) took 13 steps of its own twelfth.
   c.maxStep = linear ? std::abs(following.to - following.from) / 12
                      : std::abs(std::log(following.to) - std::log(following.from)) / 12;
+  c.initialStep = c.maxStep / 2;
   bool located = false;
   double locatedAt = 0;
   for (const double end : {following.from, following.to}) {
