@@ -54,7 +54,8 @@ public:
   // where it does not converge (a failed evaluation: LOCA cuts its step).
   std::pair<Eigen::VectorXd, double> solve(const Eigen::VectorXd& x, double w, double phi, double p) {
     ++out_.solves;
-    const ContinuationProblem bordered = borderedAt(w, phi, p, amplitudeOf(x));
+    lastAmplitude_ = amplitudeOf(x);
+    const ContinuationProblem bordered = borderedAt(w, phi, p, lastAmplitude_);
     Eigen::VectorXd y(P_.size + 1);
     y << x, 0.0;
     const NewtonResult r = solveNewton(bordered, y, 0.0, o_.tolerance, o_.maxNewtonIterations, &lastFactors_);
@@ -143,7 +144,7 @@ public:
     // before the solution: the slope it gives is LOCA's Jacobian and the other side's
     // predictor, neither of which needs it exact), else by the Jacobian at the solution.
     if (lastIterations_ == 0) factorBordered(s.x, s.w, phi, p, lastFactors_);
-    s.z = tangentBy(lastFactors_, s.x, phi);
+    s.z = tangentBy(lastFactors_, s.x, phi);  // the factors' phase row scaled by lastAmplitude_
     const double e = 1e-6;
     const auto slopeAlong = [&](const Eigen::VectorXd& d) {
       return (std::log(P_.measure(s.x + e * d)) - std::log(P_.measure(s.x - e * d))) / (2 * e);
@@ -202,8 +203,9 @@ public:
   }
 
   // The bordered Jacobian at a solution, factored.
-  void factorBordered(const Eigen::VectorXd& x, double w, double phi, double p, DenseLu& factors) const {
-    const ContinuationProblem bordered = borderedAt(w, phi, p, amplitudeOf(x));
+  void factorBordered(const Eigen::VectorXd& x, double w, double phi, double p, DenseLu& factors) {
+    lastAmplitude_ = amplitudeOf(x);
+    const ContinuationProblem bordered = borderedAt(w, phi, p, lastAmplitude_);
     Eigen::VectorXd y(P_.size + 1);
     y << x, 0.0;
     Eigen::MatrixXd K;
@@ -211,10 +213,11 @@ public:
     factors.computeTaking(K);
   }
 
-  // d(x, ln w)/d phi along the curve at a solution, by factors of the bordered Jacobian.
+  // d(x, ln w)/d phi along the curve at a solution, by factors of the bordered Jacobian
+  // (its phase row divided by lastAmplitude_, as the right-hand side here).
   Eigen::VectorXd tangentBy(const DenseLu& factors, const Eigen::VectorXd& x, double phi) const {
     Eigen::VectorXd b = Eigen::VectorXd::Zero(P_.size + 1);
-    b(P_.size) = -(x(ic_) * std::cos(phi) + x(is_) * std::sin(phi)) / amplitudeOf(x);
+    b(P_.size) = -(x(ic_) * std::cos(phi) + x(is_) * std::sin(phi)) / lastAmplitude_;
     Eigen::VectorXd z = factors.solve(b);
     if (!z.allFinite()) z.setZero(P_.size + 1);
     return z;
@@ -294,6 +297,7 @@ private:
   const int ic_, is_;
   DenseLu lastFactors_;     // the last solve's last Newton LU
   int lastIterations_ = 0;  // and its iterations (0: no LU made)
+  double lastAmplitude_ = 1;  // the amplitude its phase row was divided by
   std::deque<Solved> solved_;
   double qSpan_ = 1, lastPeakPhase_ = 0;
 };
