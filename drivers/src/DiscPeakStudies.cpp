@@ -157,6 +157,8 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     if (method != "peak_search" && method != "continuation")
       throw InputError(s.where("method"), "must be peak_search (a peak search per value) or continuation (one LOCA "
                                           "continuation of the peak), not '" + method + "'");
+    if (method == "continuation" && s.has("values"))
+      throw InputError(s.where("values"), "is not used by method continuation (LOCA's steps are the points): drop it");
     if (method == "continuation" && (name == "loss_factor" || name == "speed"))
       throw InputError(s.where("method"), "continuation follows the contact parameters, the clearance and the force; "
                                           "the " + name + " rebuilds the system per value: use peak_search");

@@ -693,6 +693,9 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   msg = peakStudy("      preload: {range: [1.0, 200.0], method: bisection}\n");
   EXPECT_NE(msg.find("peak_studies/preload/method"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must be peak_search"), std::string::npos) << msg;
+  msg = peakStudy("      preload: {range: [1.0, 200.0], values: 8, method: continuation}\n");
+  EXPECT_NE(msg.find("peak_studies/preload/values"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("is not used by method continuation"), std::string::npos) << msg;
   msg = peakStudy("      loss_factor: {range: [0.001, 0.05], method: continuation}\n");
   EXPECT_NE(msg.find("peak_studies/loss_factor/method"), std::string::npos) << msg;
   EXPECT_NE(msg.find("use peak_search"), std::string::npos) << msg;
