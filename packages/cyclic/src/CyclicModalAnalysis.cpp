@@ -314,8 +314,9 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   const auto matrices = assembleSectorMatrices(mesh, problem.material, problem.prestress.get());
   {
     std::ostringstream msg;
-    msg << "sector matrices (every nodal diameter's element work): " << matrices.K.rows() << " DOFs, "
-        << matrices.K.nonZeros() << " nonzeros, " << matrices.seconds << " s";
+    msg << "sector matrices (every nodal diameter's element work): " << matrices.dofs() << " DOFs, "
+        << matrices.nonzeros() << " nonzeros (K and M as lower 3 x 3 blocks on one pattern, " << matrices.bytes() / 1e6
+        << " MB), " << matrices.seconds << " s";
     log::info(msg.str());
   }
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());

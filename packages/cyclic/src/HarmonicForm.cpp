@@ -89,25 +89,22 @@ std::complex<double> conjugate(const std::complex<double>& z) { return std::conj
 // factorization. ZK or ZM may be null (not formed); normMSquared, when given, gets the
 // squared Frobenius norm of the Hermitian T^H M T whether ZM is formed or not.
 template <class Scalar>
-void project(const Real& K, const Real& M, const std::vector<Coupling<Scalar>>& copies, int unknowns,
+void project(const SectorMatrices& sector, const std::vector<Coupling<Scalar>>& copies, int unknowns,
              Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>* ZK, Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>* ZM,
              double* normMSquared = nullptr) {
-  const int* outer = K.outerIndexPtr();
-  const int* inner = K.innerIndexPtr();
-  const double* k = K.valuePtr();
-  const double* m = M.valuePtr();
-  // Every (row u >= q, DOF entry p, coefficient s t) that column q gathers.
+  const double* k = sector.k.data();
+  const double* m = sector.m.data();
+  // Every (row u >= q, entry p of the sector's matrices, coefficient s t) that column q gathers.
   auto gather = [&](int q, auto&& visit) {
     for (const auto& c : copies)
       for (int a = c.unknownStart[std::size_t(q)]; a < c.unknownStart[std::size_t(q) + 1]; ++a) {
         const auto& [j, t] = c.byUnknown[std::size_t(a)];
-        for (int p = outer[j]; p < outer[j + 1]; ++p) {
-          const int i = inner[p];
+        sector.forEachInColumn(j, [&](int i, int p) {
           for (int b = c.dofStart[std::size_t(i)]; b < c.dofStart[std::size_t(i) + 1]; ++b) {
             const auto& [u, s] = c.byDof[std::size_t(b)];
             if (u >= q) visit(u, p, conjugate(s) * t);  // the lower triangle only: the forms are Hermitian
           }
-        }
+        });
       }
   };
   // First the pattern, then the values into matrices of exactly its size: no temporary
@@ -235,22 +232,15 @@ namespace {
 // (A real, both triangles), y scattered per unknown with the conjugate coefficients;
 // added into y.
 template <class Scalar>
-void productThroughSector(const Real& A, const Coupling<Scalar>& c, const Scalar* x, Scalar* y,
-                          std::vector<Scalar>& u, std::vector<Scalar>& w) {
-  const Eigen::Index dofs = A.rows();
-  u.assign(std::size_t(dofs), Scalar(0));
-  w.assign(std::size_t(dofs), Scalar(0));
-  for (Eigen::Index i = 0; i < dofs; ++i)
-    for (int b = c.dofStart[std::size_t(i)]; b < c.dofStart[std::size_t(i) + 1]; ++b)
-      u[std::size_t(i)] += c.byDof[std::size_t(b)].value * x[c.byDof[std::size_t(b)].index];
-  const int* outer = A.outerIndexPtr();
-  const int* inner = A.innerIndexPtr();
-  const double* value = A.valuePtr();
-  for (Eigen::Index j = 0; j < dofs; ++j) {
-    const Scalar uj = u[std::size_t(j)];
-    if (uj == Scalar(0)) continue;
-    for (int p = outer[j]; p < outer[j + 1]; ++p) w[std::size_t(inner[p])] += value[p] * uj;
-  }
+void productThroughSector(const SectorMatrices& sector, const std::vector<double>& A, const Coupling<Scalar>& c,
+                          const Scalar* x, Scalar* y, std::vector<Scalar>& u, std::vector<Scalar>& w) {
+  const std::size_t dofs = std::size_t(sector.dofs());
+  u.assign(dofs, Scalar(0));
+  w.resize(dofs);
+  for (std::size_t i = 0; i < dofs; ++i)
+    for (int b = c.dofStart[i]; b < c.dofStart[i + 1]; ++b)
+      u[i] += c.byDof[std::size_t(b)].value * x[c.byDof[std::size_t(b)].index];
+  sector.multiply(A, u.data(), w.data());
   const std::size_t unknowns = c.unknownStart.size() - 1;
   for (std::size_t q = 0; q < unknowns; ++q) {
     Scalar sum(0);
@@ -267,23 +257,20 @@ HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform&
   auto& I = *impl_;
   I.size = transform.numEquations();
   I.complexForm = transform.copies() == 2 && travellingWavePaired(transform);
-  if (!std::equal(sector.K.outerIndexPtr(), sector.K.outerIndexPtr() + sector.K.cols() + 1, sector.M.outerIndexPtr()) ||
-      !std::equal(sector.K.innerIndexPtr(), sector.K.innerIndexPtr() + sector.K.nonZeros(), sector.M.innerIndexPtr()))
-    throw Error("HarmonicForm: the sector's K and M must share one pattern");
   I.sector = &sector;
   if (I.complexForm) {
     I.complexCoupling = complexCoupling(transform);
     // Only K is formed: M is applied through the sector's matrices (and formed only for
     // a shifted factor), so the factorization's peak does not hold it.
     double normM2 = 0;
-    project<std::complex<double>>(sector.K, sector.M, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr, &normM2);
+    project<std::complex<double>>(sector, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr, &normM2);
     // The real form [[P, -Q], [Q, P]] holds every entry of P + iQ twice.
     I.normK = std::sqrt(2.0) * hermitianNorm(I.ZK), I.normM = std::sqrt(2.0 * normM2);
     return;
   }
   for (int copy = 0; copy < transform.copies(); ++copy) I.realCouplings.push_back(realCoupling(transform, copy));
   double normM2 = 0;
-  project<double>(sector.K, sector.M, I.realCouplings, int(I.size), &I.K, nullptr, &normM2);
+  project<double>(sector, I.realCouplings, int(I.size), &I.K, nullptr, &normM2);
   I.normK = hermitianNorm(I.K), I.normM = std::sqrt(normM2);
 }
 
@@ -297,19 +284,19 @@ long long HarmonicForm::size() const { return impl_->size; }
 namespace {
 
 void applyThroughSector(bool complexForm, const Coupling<std::complex<double>>& complexCoupling,
-                        const std::vector<Coupling<double>>& realCouplings, const Real& A, const Eigen::MatrixXd& x,
-                        Eigen::MatrixXd& y) {
+                        const std::vector<Coupling<double>>& realCouplings, const SectorMatrices& sector,
+                        const std::vector<double>& A, const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
   y.setZero(x.rows(), x.cols());
   if (complexForm) {
     std::vector<std::complex<double>> u, w;
     const Eigen::Index n = x.rows() / 2;
     for (Eigen::Index j = 0; j < x.cols(); ++j)
-      productThroughSector(A, complexCoupling, asComplex(x) + j * n, asComplex(y) + j * n, u, w);
+      productThroughSector(sector, A, complexCoupling, asComplex(x) + j * n, asComplex(y) + j * n, u, w);
     return;
   }
   std::vector<double> u, w;
   for (Eigen::Index j = 0; j < x.cols(); ++j)
-    for (const auto& c : realCouplings) productThroughSector(A, c, x.data() + j * x.rows(), y.data() + j * x.rows(), u, w);
+    for (const auto& c : realCouplings) productThroughSector(sector, A, c, x.data() + j * x.rows(), y.data() + j * x.rows(), u, w);
 }
 
 }  // namespace
@@ -317,7 +304,7 @@ void applyThroughSector(bool complexForm, const Coupling<std::complex<double>>& 
 void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& I = *impl_;
   // K is handed to the factor at sigma = 0 (not kept beside it).
-  if (I.released || (I.complexForm ? I.ZK.nonZeros() == 0 : I.K.nonZeros() == 0)) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->K, x, y);
+  if (I.released || (I.complexForm ? I.ZK.nonZeros() == 0 : I.K.nonZeros() == 0)) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, *I.sector, I.sector->k, x, y);
   y.resize(x.rows(), x.cols());
   if (impl_->complexForm) hermitianProduct(impl_->ZK, asComplex(x), asComplex(y), x.cols());
   else hermitianProduct(impl_->K, x.data(), y.data(), x.cols());
@@ -327,7 +314,7 @@ void HarmonicForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& I = *impl_;
   // M is formed only for a shifted factor, and then only until the projections are released.
   if (I.released || (I.complexForm ? I.ZM.nonZeros() == 0 : I.M.nonZeros() == 0))
-    return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, I.sector->M, x, y);
+    return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, *I.sector, I.sector->m, x, y);
   y.resize(x.rows(), x.cols());
   if (impl_->complexForm) hermitianProduct(impl_->ZM, asComplex(x), asComplex(y), x.cols());
   else hermitianProduct(impl_->M, x.data(), y.data(), x.cols());
@@ -365,15 +352,15 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
   if (I.released) throw Error("HarmonicForm::factor: the projections were released");
   // K went to an earlier factor (at sigma = 0): projected again.
   if (I.complexForm && I.ZK.nonZeros() == 0)
-    project<std::complex<double>>(I.sector->K, I.sector->M, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr);
+    project<std::complex<double>>(*I.sector, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr);
   if (!I.complexForm && I.K.nonZeros() == 0)
-    project<double>(I.sector->K, I.sector->M, I.realCouplings, int(I.size), &I.K, nullptr);
+    project<double>(*I.sector, I.realCouplings, int(I.size), &I.K, nullptr);
   // A shift needs M formed: projected now (the same pattern as K).
   if (sigma != 0.0) {
     if (I.complexForm && I.ZM.nonZeros() == 0)
-      project<std::complex<double>>(I.sector->K, I.sector->M, {I.complexCoupling}, int(I.size / 2), nullptr, &I.ZM);
+      project<std::complex<double>>(*I.sector, {I.complexCoupling}, int(I.size / 2), nullptr, &I.ZM);
     if (!I.complexForm && I.M.nonZeros() == 0)
-      project<double>(I.sector->K, I.sector->M, I.realCouplings, int(I.size), nullptr, &I.M);
+      project<double>(*I.sector, I.realCouplings, int(I.size), nullptr, &I.M);
   }
   if (I.complexForm) {
     if (sigma == 0.0) factorInto(slots.complex, std::move(I.ZK));

@@ -11,8 +11,6 @@ namespace cyclone::cyclic {
 
 namespace {
 
-using Sparse = SectorMatrices::Sparse;
-
 // The sorted neighbours of every node (itself included) through the elements.
 std::vector<std::vector<mesh::Index>> nodeGraph(const mesh::Mesh& mesh) {
   std::vector<std::vector<mesh::Index>> adjacent(mesh.numNodes());
@@ -30,26 +28,35 @@ std::vector<std::vector<mesh::Index>> nodeGraph(const mesh::Mesh& mesh) {
   return adjacent;
 }
 
-// A zero matrix with the 3 x 3 node blocks of the graph, compressed column storage.
-Sparse blockPattern(const std::vector<std::vector<mesh::Index>>& adjacent) {
-  const int n = int(3 * adjacent.size());
-  long long nonzeros = 0;
-  for (const auto& list : adjacent) nonzeros += 9 * (long long)list.size();
-  Sparse A(n, n);
-  A.makeCompressed();
-  A.resizeNonZeros(Eigen::Index(nonzeros));
-  int* outer = A.outerIndexPtr();
-  int* inner = A.innerIndexPtr();
-  int position = 0;
-  for (std::size_t b = 0; b < adjacent.size(); ++b)
-    for (int e = 0; e < 3; ++e) {
-      outer[3 * b + e] = position;
-      for (mesh::Index a : adjacent[b])
-        for (int d = 0; d < 3; ++d) inner[position++] = int(3 * a + d);
+// The lower block pattern (neighbours a >= b of each node b) and its mirror.
+void blockPattern(const std::vector<std::vector<mesh::Index>>& adjacent, SectorMatrices& out) {
+  const std::size_t nodes = adjacent.size();
+  out.blockStart.assign(1, 0);
+  out.mirrorStart.assign(1, 0);
+  for (std::size_t b = 0; b < nodes; ++b) {
+    for (mesh::Index a : adjacent[b])
+      if (std::size_t(a) >= b) out.blockRow.push_back(int(a));
+    out.blockStart.push_back(int(out.blockRow.size()));
+  }
+  // Column a's block (b, a), b > a, mirrored into column b; columns are visited in
+  // ascending a, so each mirror list comes out ascending.
+  std::vector<int> count(nodes + 1, 0);
+  for (std::size_t a = 0; a < nodes; ++a)
+    for (int p = out.blockStart[a]; p < out.blockStart[a + 1]; ++p)
+      if (std::size_t(out.blockRow[std::size_t(p)]) != a) ++count[std::size_t(out.blockRow[std::size_t(p)]) + 1];
+  for (std::size_t b = 0; b < nodes; ++b) count[b + 1] += count[b];
+  out.mirrorStart = count;
+  out.mirrorNode.resize(std::size_t(count[nodes]));
+  out.mirrorBlock.resize(std::size_t(count[nodes]));
+  for (std::size_t a = 0; a < nodes; ++a)
+    for (int p = out.blockStart[a]; p < out.blockStart[a + 1]; ++p) {
+      const std::size_t b = std::size_t(out.blockRow[std::size_t(p)]);
+      if (b == a) continue;
+      const std::size_t q = std::size_t(count[b]++);
+      out.mirrorNode[q] = int(a), out.mirrorBlock[q] = p;
     }
-  outer[n] = position;
-  std::fill(A.valuePtr(), A.valuePtr() + nonzeros, 0.0);
-  return A;
+  out.k.assign(9 * out.blockRow.size(), 0.0);
+  out.m.assign(9 * out.blockRow.size(), 0.0);
 }
 
 fe::ElementCoords coordinates(const mesh::Mesh& mesh, const mesh::Index* nodes, int nn) {
@@ -61,17 +68,25 @@ fe::ElementCoords coordinates(const mesh::Mesh& mesh, const mesh::Index* nodes, 
 
 }  // namespace
 
+long long SectorMatrices::nonzeros() const {
+  const long long diagonal = blockStart.empty() ? 0 : (long long)blockStart.size() - 1;
+  return 9 * (2 * (long long)blockRow.size() - diagonal);
+}
+
+double SectorMatrices::bytes() const {
+  return double(sizeof(double)) * double(k.size() + m.size()) +
+         double(sizeof(int)) * double(blockStart.size() + blockRow.size() + mirrorStart.size() + mirrorNode.size() +
+                                      mirrorBlock.size());
+}
+
 SectorMatrices assembleSectorMatrices(const mesh::Mesh& mesh, const fe::IsotropicElastic& material,
                                       const PrestressState* prestress) {
   Timer timer;
-  const auto adjacent = nodeGraph(mesh);
   SectorMatrices out;
-  out.K = blockPattern(adjacent);
-  out.M = out.K;
-  const int* outer = out.K.outerIndexPtr();
-  double* k = out.K.valuePtr();
-  double* m = out.M.valuePtr();
-  std::vector<int> slot;  // per element node pair: where node a's block sits in node b's columns
+  blockPattern(nodeGraph(mesh), out);
+  double* k = out.k.data();
+  double* m = out.m.data();
+  std::vector<int> slot;  // per element node pair (i, j), nodes[i] >= nodes[j]: block of nodes[i] in nodes[j]'s column
   mesh::Index global = 0;
   for (const auto& block : mesh.blocks) {
     const int nn = mesh::nodesPerElement(block.type);
@@ -89,20 +104,22 @@ SectorMatrices assembleSectorMatrices(const mesh::Mesh& mesh, const fe::Isotropi
                                           std::to_string(err.point) + ")");
       }
       for (int j = 0; j < nn; ++j) {
-        const auto& list = adjacent[nodes[j]];
+        const auto first = out.blockRow.begin() + out.blockStart[std::size_t(nodes[j])];
+        const auto last = out.blockRow.begin() + out.blockStart[std::size_t(nodes[j]) + 1];
         for (int i = 0; i < nn; ++i)
-          slot[std::size_t(j) * nn + i] = int(std::lower_bound(list.begin(), list.end(), nodes[i]) - list.begin());
+          slot[std::size_t(j) * nn + i] =
+              nodes[i] < nodes[j] ? -1 : int(std::lower_bound(first, last, int(nodes[i])) - out.blockRow.begin());
       }
+      // The lower triangle only: the element matrices are symmetric.
       for (int j = 0; j < nn; ++j)
-        for (int c = 0; c < 3; ++c) {
-          const int column = outer[3 * nodes[j] + c];
-          for (int i = 0; i < nn; ++i) {
-            const int at = column + 3 * slot[std::size_t(j) * nn + i];
+        for (int i = 0; i < nn; ++i) {
+          const int p = slot[std::size_t(j) * nn + i];
+          if (p < 0) continue;
+          for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) {
-              k[at + r] += Ke(3 * i + r, 3 * j + c);
-              m[at + r] += Me(3 * i + r, 3 * j + c);
+              k[9 * p + 3 * c + r] += Ke(3 * i + r, 3 * j + c);
+              m[9 * p + 3 * c + r] += Me(3 * i + r, 3 * j + c);
             }
-          }
         }
     }
   }
