@@ -39,8 +39,11 @@ void expectSame(const std::vector<cyclic::NodalDiameterModes>& a, const std::vec
   for (std::size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].nodalDiameter, b[i].nodalDiameter);
     EXPECT_EQ(a[i].frequenciesHz, b[i].frequenciesHz) << "ND " << a[i].nodalDiameter;
-    EXPECT_EQ(a[i].shapeReal, b[i].shapeReal) << "ND " << a[i].nodalDiameter;
-    EXPECT_EQ(a[i].shapeImag, b[i].shapeImag) << "ND " << a[i].nodalDiameter;
+    ASSERT_EQ(a[i].shapes.size(), b[i].shapes.size()) << "ND " << a[i].nodalDiameter;
+    for (std::size_t j = 0; j < a[i].shapes.size(); ++j) {
+      EXPECT_EQ(a[i].shapes[j].real, b[i].shapes[j].real) << "ND " << a[i].nodalDiameter;
+      EXPECT_EQ(a[i].shapes[j].imag, b[i].shapes[j].imag) << "ND " << a[i].nodalDiameter;
+    }
   }
 }
 

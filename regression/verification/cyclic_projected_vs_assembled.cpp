@@ -68,6 +68,7 @@ void compare(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const c
                                     : Shape(mesh.numNodes(), {0, 0, 0}));
     }
     for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i) {
+      const auto shape = hm.shapes[i];
       const double rel = std::abs(hm.frequenciesHz[i] / ref.frequenciesHz[i] - 1);
       worstFrequency = std::max(worstFrequency, rel);
       EXPECT_LT(rel, 1e-8) << name << " ND " << hm.nodalDiameter << " mode " << i + 1;
@@ -77,14 +78,14 @@ void compare(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector, const c
       double inside = 0;
       for (std::size_t j = 0; j < ref.frequenciesHz.size(); ++j) {
         if (std::abs(ref.frequenciesHz[j] / hm.frequenciesHz[i] - 1) > 1e-6) continue;
-        const double c = massProduct(matrices, M, refA[j], refB[j], hm.shapeReal[i], hm.shapeImag[i]);
+        const double c = massProduct(matrices, M, refA[j], refB[j], shape.real, shape.imag);
         inside += c * c;
       }
-      const double self = massProduct(matrices, M, hm.shapeReal[i], hm.shapeImag[i], hm.shapeReal[i], hm.shapeImag[i]);
+      const double self = massProduct(matrices, M, shape.real, shape.imag, shape.real, shape.imag);
       const double mac = inside / self;
       // Each shape with its own frequency: the Rayleigh quotient of the physical field.
       const double quotient =
-          std::sqrt(massProduct(matrices, matrices.k, hm.shapeReal[i], hm.shapeImag[i], hm.shapeReal[i], hm.shapeImag[i]) /
+          std::sqrt(massProduct(matrices, matrices.k, shape.real, shape.imag, shape.real, shape.imag) /
                     self) / (2 * M_PI);
       worstQuotient = std::max(worstQuotient, std::abs(quotient / hm.frequenciesHz[i] - 1));
       EXPECT_LT(std::abs(quotient / hm.frequenciesHz[i] - 1), 1e-8) << name << " ND " << hm.nodalDiameter << " mode " << i + 1;

@@ -11,11 +11,11 @@ cyclic::NodalDiameterModes twoModes(int nd, double f1, int node1, double f2, int
   hm.nodalDiameter = nd;
   hm.copies = 1;
   hm.frequenciesHz = {f1, f2};
-  std::vector<std::array<double, 3>> zero(4, {0, 0, 0});
-  hm.shapeReal = {zero, zero};
-  hm.shapeImag = {zero, zero};
-  hm.shapeReal[0][node1][0] = 1;
-  hm.shapeReal[1][node2][0] = 1;
+  cyclic::ModeShape first{cyclic::NodalField(4, {0, 0, 0}), {}}, second = first;
+  first.real[node1][0] = 1;
+  second.real[node2][0] = 1;
+  hm.shapes.push_back(first);
+  hm.shapes.push_back(second);
   return hm;
 }
 }  // namespace

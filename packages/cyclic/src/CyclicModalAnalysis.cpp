@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 
@@ -88,9 +89,8 @@ NodalDiameterModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& se
   const auto result = solveNodalDiameterModes(op, problem.modesPerNodalDiameter, problem.shift, problem.method);
   hm.frequenciesHz = result.frequenciesHz;
   for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
-    hm.shapeReal.push_back(assembler.nodalField(*result.modes, int(i), 0));
-    hm.shapeImag.push_back(hm.copies == 2 ? assembler.nodalField(*result.modes, int(i), 1)
-                                          : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
+    hm.shapes.push_back({assembler.nodalField(*result.modes, int(i), 0),
+                         hm.copies == 2 ? assembler.nodalField(*result.modes, int(i), 1) : NodalField()});
   }
   hm.factorSeconds = result.factorSeconds;
   hm.solveSeconds = result.solveSeconds;
@@ -153,9 +153,8 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
   hm.frequenciesHz = result.frequenciesHz;
   for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
     const auto x = result.modes->getData(i);
-    hm.shapeReal.push_back(transform.nodalField(x.getRawPtr(), 0));
-    hm.shapeImag.push_back(hm.copies == 2 ? transform.nodalField(x.getRawPtr(), 1)
-                                          : std::vector<std::array<double, 3>>(mesh.numNodes(), {0, 0, 0}));
+    hm.shapes.push_back(
+        {transform.nodalField(x.getRawPtr(), 0), hm.copies == 2 ? transform.nodalField(x.getRawPtr(), 1) : NodalField()});
   }
   hm.solveSeconds = result.solveSeconds;
   hm.solves = result.operatorApplies;
@@ -169,9 +168,12 @@ std::vector<double> pack(const NodalDiameterModes& hm) {
                              hm.assemblySeconds, hm.factorSeconds, hm.solveSeconds, double(hm.solves),
                              double(hm.rank), double(hm.projected), double(hm.frequenciesHz.size())};
   out.insert(out.end(), hm.frequenciesHz.begin(), hm.frequenciesHz.end());
-  for (const auto* shapes : {&hm.shapeReal, &hm.shapeImag})
-    for (const auto& shape : *shapes)
-      for (const auto& node : shape) out.insert(out.end(), node.begin(), node.end());
+  // Every real part, then every imaginary part (zero for one copy): the checkpoints' format.
+  for (const bool imaginary : {false, true})
+    for (std::size_t i = 0; i < hm.shapes.size(); ++i) {
+      const auto shape = hm.shapes[i];
+      for (const auto& node : imaginary ? shape.imag : shape.real) out.insert(out.end(), node.begin(), node.end());
+    }
   return out;
 }
 
@@ -191,13 +193,18 @@ NodalDiameterModes unpack(const std::vector<double>& in, mesh::Index numNodes) {
   hm.projected = next() != 0.0;
   const std::size_t modes = std::size_t(next());
   for (std::size_t i = 0; i < modes; ++i) hm.frequenciesHz.push_back(next());
-  for (auto* shapes : {&hm.shapeReal, &hm.shapeImag})
-    for (std::size_t i = 0; i < modes; ++i) {
-      std::vector<std::array<double, 3>> shape(numNodes);
-      for (auto& node : shape)
+  std::vector<ModeShape> shapes(modes);
+  for (const bool imaginary : {false, true})
+    for (auto& shape : shapes) {
+      auto field = NodalField(std::size_t(numNodes));
+      for (auto& node : field)
         for (double& v : node) v = next();
-      shapes->push_back(std::move(shape));
+      (imaginary ? shape.imag : shape.real) = std::move(field);
     }
+  for (auto& shape : shapes) {
+    if (hm.copies == 1) shape.imag.clear();
+    hm.shapes.push_back(shape);
+  }
   return hm;
 }
 
@@ -229,6 +236,13 @@ std::string harmonicModesKey(const mesh::Mesh& mesh, const CyclicSector& sector,
 
 namespace {
 
+// A solved nodal diameter's shapes put where the problem keeps them while the others are solved.
+void keepShapes(NodalDiameterModes& hm, const CyclicModalProblem& problem) {
+  if (problem.shapeStorage != CyclicModalProblem::ShapeStorage::ScratchFile) return;
+  hm.shapes.moveToScratchFile(problem.scratchDirectory.empty() ? std::filesystem::temp_directory_path().string()
+                                                               : problem.scratchDirectory);
+}
+
 // A nodal diameter saved by an earlier run under the same inputs (`key`: where its
 // result is saved when it is solved now).
 std::optional<NodalDiameterModes> readBackModes(const mesh::Mesh& mesh, const CyclicSector& sector,
@@ -256,7 +270,7 @@ std::optional<NodalDiameterModes> readBackModes(const mesh::Mesh& mesh, const Cy
 std::vector<NodalDiameterModes> shareOwnersResults(std::vector<NodalDiameterModes>& mine,
                                                    const std::vector<std::string>& failure,
                                                    const std::vector<int>& nodalDiameters, const mesh::Mesh& mesh,
-                                                   solvers::EigenMethod method, linalg::CommPtr comm) {
+                                                   const CyclicModalProblem& problem, linalg::CommPtr comm) {
   const int ranks = comm->getSize(), rank = comm->getRank();
   std::vector<NodalDiameterModes> out;
   for (std::size_t i = 0; i < nodalDiameters.size(); ++i) {
@@ -276,7 +290,8 @@ std::vector<NodalDiameterModes> shareOwnersResults(std::vector<NodalDiameterMode
     buffer.resize(std::size_t(size));
     Teuchos::broadcast(*comm, owner, int(size), buffer.data());
     out.push_back(owner == rank ? std::move(mine[i]) : unpack(buffer, mesh.numNodes()));
-    if (owner != 0) log::info(describe(out.back(), method));
+    keepShapes(out.back(), problem);
+    if (owner != 0) log::info(describe(out.back(), problem.method));
   }
   return out;
 }
@@ -300,9 +315,11 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
       std::string key;
       if (auto hm = readBackModes(mesh, sector, problem, k, key, rank)) {
         out.push_back(std::move(*hm));
+        keepShapes(out.back(), problem);
         continue;
       }
       out.push_back(solveAssembled(mesh, sector, k, problem, comm));
+      keepShapes(out.back(), problem);
       log::info(describe(out.back(), problem.method));
       if (problem.checkpoints && rank == 0) problem.checkpoints->save(key, pack(out.back()));
     }
@@ -323,7 +340,10 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   FactorCache factors;
   auto solveOne = [&](std::size_t i) {
     std::string key;
-    if (auto saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank)) return std::move(*saved);
+    if (auto saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank)) {
+      keepShapes(*saved, problem);
+      return std::move(*saved);
+    }
     auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
     NodalDiameterModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
     hm.rank = rank;
@@ -335,6 +355,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
       log::info(describe(hm, problem.method) + memory.str());
     }
     if (problem.checkpoints) problem.checkpoints->save(key, pack(hm));
+    keepShapes(hm, problem);
     return hm;
   };
   if (ranks == 1) {
@@ -351,7 +372,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
       failure[i] = e.what();
     }
   }
-  return shareOwnersResults(mine, failure, harmonics, mesh, problem.method, comm);
+  return shareOwnersResults(mine, failure, harmonics, mesh, problem, comm);
 }
 
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {
@@ -378,10 +399,11 @@ void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rp
       mesh::ExodusResults::Step step;
       step.time = hm.frequenciesHz[i];
       step.nodal.assign(6, std::vector<double>(mesh.numNodes()));
+      const auto shape = hm.shapes[i];
       for (mesh::Index n = 0; n < mesh.numNodes(); ++n)
         for (int d = 0; d < 3; ++d) {
-          step.nodal[d][n] = hm.shapeReal[i][n][d];
-          step.nodal[3 + d][n] = hm.shapeImag[i][n][d];
+          step.nodal[d][n] = shape.real[n][d];
+          step.nodal[3 + d][n] = shape.imag[n][d];
         }
       step.global = {double(hm.nodalDiameter), double(i + 1), rpm};
       r.steps.push_back(std::move(step));

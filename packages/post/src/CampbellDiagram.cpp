@@ -18,14 +18,14 @@ namespace {
 
 // Shapes of one family (columns): [real; imaginary] parts of its eigenvectors.
 Eigen::MatrixXd familyShapes(const cyclic::NodalDiameterModes& hm, int family) {
-  const std::size_t nn = hm.shapeReal.empty() ? 0 : hm.shapeReal[0].size();
+  const std::size_t nn = hm.shapes.numNodes();
   Eigen::MatrixXd S(6 * nn, hm.copies);
   for (int c = 0; c < hm.copies; ++c) {
-    const int mode = family * hm.copies + c;
+    const auto shape = hm.shapes[std::size_t(family * hm.copies + c)];
     for (std::size_t n = 0; n < nn; ++n)
       for (int d = 0; d < 3; ++d) {
-        S(3 * n + d, c) = hm.shapeReal[mode][n][d];
-        S(3 * nn + 3 * n + d, c) = hm.shapeImag[mode][n][d];
+        S(3 * n + d, c) = shape.real[n][d];
+        S(3 * nn + 3 * n + d, c) = shape.imag[n][d];
       }
   }
   return S;

@@ -1,0 +1,103 @@
+#include "cyclone/cyclic/ModeShapes.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "cyclone/core/Error.hpp"
+
+namespace cyclone::cyclic {
+
+// An open, already unlinked file: its blocks are freed when the descriptor is closed.
+struct ModeShapes::File {
+  int fd = -1;
+  std::string directory;
+  std::size_t shapes = 0;  // written so far
+  ~File() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+namespace {
+
+void writeAll(int fd, const double* data, std::size_t count, std::size_t offset, const std::string& directory) {
+  const char* bytes = reinterpret_cast<const char*>(data);
+  std::size_t left = count * sizeof(double), at = 0;
+  while (left > 0) {
+    const ssize_t n = ::pwrite(fd, bytes + at, left, off_t(offset + at));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error("cannot write the mode shapes' scratch file in " + directory + ": " + std::strerror(errno));
+    left -= std::size_t(n), at += std::size_t(n);
+  }
+}
+
+void readAll(int fd, double* data, std::size_t count, std::size_t offset, const std::string& directory) {
+  char* bytes = reinterpret_cast<char*>(data);
+  std::size_t left = count * sizeof(double), at = 0;
+  while (left > 0) {
+    const ssize_t n = ::pread(fd, bytes + at, left, off_t(offset + at));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error("cannot read the mode shapes' scratch file in " + directory + ": " + std::strerror(errno));
+    left -= std::size_t(n), at += std::size_t(n);
+  }
+}
+
+}  // namespace
+
+void ModeShapes::push_back(const ModeShape& shape) {
+  if (count_ == 0) nodes_ = shape.real.size(), withImag_ = !shape.imag.empty();
+  if (shape.real.size() != nodes_ || (!shape.imag.empty() && shape.imag.size() != nodes_) ||
+      shape.imag.empty() == withImag_)
+    throw Error("ModeShapes: every shape of a nodal diameter has its number of nodes and the same parts");
+  std::vector<double> values;
+  values.reserve(valuesPerShape());
+  for (const auto& node : shape.real) values.insert(values.end(), node.begin(), node.end());
+  for (const auto& node : shape.imag) values.insert(values.end(), node.begin(), node.end());
+  if (file_) {
+    if (file_.use_count() > 1) throw Error("ModeShapes: a store that shares its scratch file is read-only");
+    writeAll(file_->fd, values.data(), values.size(), count_ * valuesPerShape() * sizeof(double), file_->directory);
+  } else {
+    memory_.insert(memory_.end(), values.begin(), values.end());
+  }
+  ++count_;
+}
+
+ModeShape ModeShapes::operator[](std::size_t i) const {
+  if (i >= count_) throw Error("ModeShapes: shape " + std::to_string(i) + " of " + std::to_string(count_));
+  std::vector<double> read;
+  const double* values = nullptr;
+  if (file_) {
+    read.resize(valuesPerShape());
+    readAll(file_->fd, read.data(), read.size(), i * valuesPerShape() * sizeof(double), file_->directory);
+    values = read.data();
+  } else {
+    values = memory_.data() + i * valuesPerShape();
+  }
+  ModeShape s;
+  s.real.resize(nodes_);
+  s.imag.assign(nodes_, {0, 0, 0});
+  for (std::size_t n = 0; n < nodes_; ++n)
+    for (int d = 0; d < 3; ++d) s.real[n][std::size_t(d)] = values[3 * n + std::size_t(d)];
+  if (withImag_)
+    for (std::size_t n = 0; n < nodes_; ++n)
+      for (int d = 0; d < 3; ++d) s.imag[n][std::size_t(d)] = values[3 * nodes_ + 3 * n + std::size_t(d)];
+  return s;
+}
+
+void ModeShapes::moveToScratchFile(const std::string& directory) {
+  if (file_) return;
+  auto file = std::make_shared<File>();
+  file->directory = directory.empty() ? std::string(".") : directory;
+  std::string path = file->directory + "/cyclone-mode-shapes-XXXXXX";
+  file->fd = ::mkstemp(path.data());
+  if (file->fd < 0)
+    throw Error("cannot create a scratch file for mode shapes in " + file->directory + ": " + std::strerror(errno));
+  ::unlink(path.c_str());  // nameless from now on: gone with the descriptor, also after a crash
+  writeAll(file->fd, memory_.data(), memory_.size(), 0, file->directory);
+  file_ = std::move(file);
+  std::vector<double>().swap(memory_);
+}
+
+}  // namespace cyclone::cyclic
