@@ -87,12 +87,12 @@ void writePrestressExodus(const std::string& path, const mesh::Mesh& mesh, const
 namespace {
 
 // The element's displacements gathered from a nodal field.
-Eigen::VectorXd elementDisplacement(const mesh::Mesh& mesh, mesh::Index e,
-                                    const std::vector<std::array<double, 3>>& field) {
+fe::ElementVector elementDisplacement(const mesh::Mesh& mesh, mesh::Index e,
+                                      const std::vector<std::array<double, 3>>& field) {
   auto [b, le] = mesh.locateElement(e);
   const auto& block = mesh.blocks[b];
   const int n = mesh::nodesPerElement(block.type);
-  Eigen::VectorXd ue(3 * n);
+  fe::ElementVector ue(3 * n);
   for (int a = 0; a < n; ++a)
     for (int d = 0; d < 3; ++d) ue(3 * a + d) = field[block.element(le)[a]][d];
   return ue;
@@ -134,7 +134,7 @@ private:
   Teuchos::RCP<linalg::Matrix> tangent(const linalg::MultiVector& u, double lambda) const {
     const auto field = A_.nodalField(u);
     return A_.assemble([&](mesh::Index e, fe::ElementType t, const fe::ElementCoords& X) {
-      Eigen::MatrixXd Ke = fe::elementTotalLagrangian(t, X, material_, elementDisplacement(mesh_, e, field), true).tangent;
+      fe::ElementMatrix Ke = fe::elementTotalLagrangian(t, X, material_, elementDisplacement(mesh_, e, field), true).tangent;
       Ke -= lambda * fe::elementSpinSoftening(t, X, material_.rho, omega_, axis_, material_.massQuadrature);
       return Ke;
     });
@@ -252,18 +252,32 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
   return NonlinearPrestressSolver(mesh, transform, material, speedRpm, axis, comm).solve(opt);
 }
 
-Eigen::MatrixXd tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,
-                                     const fe::ElementCoords& X, const fe::IsotropicElastic& material,
-                                     const PrestressState* prestress) {
-  if (!prestress || prestress->omega == 0) return fe::elementStiffness(type, X, material);
-  Eigen::MatrixXd K =
-      prestress->nonlinear
-          ? fe::elementTotalLagrangian(type, X, material, elementDisplacement(mesh, e, prestress->displacement), true)
-                .tangent
-          : Eigen::MatrixXd(fe::elementStiffness(type, X, material) +
-                            fe::elementGeometricStiffness(type, X, prestress->stress[e]));
-  K -= fe::elementSpinSoftening(type, X, material.rho, prestress->omega, prestress->axis,
-                                material.massQuadrature);
+void modalElementMatrices(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type, const fe::ElementCoords& X,
+                          const fe::IsotropicElastic& material, const PrestressState* prestress, fe::ElementMatrix& K,
+                          fe::ElementMatrix* M) {
+  fe::ElementPrestress p;
+  fe::PointStresses stress;
+  fe::ElementVector displacement;
+  if (prestress && prestress->omega != 0) {
+    p.omega = prestress->omega, p.axis = prestress->axis;
+    if (prestress->nonlinear) {
+      p.kind = fe::ElementPrestress::Kind::Nonlinear;
+      displacement = elementDisplacement(mesh, e, prestress->displacement);
+      p.displacement = &displacement;
+    } else {
+      p.kind = fe::ElementPrestress::Kind::Linear;
+      stress = prestress->stress[std::size_t(e)];
+      p.stress = &stress;
+    }
+  }
+  fe::elementModalMatrices(type, X, material, p, K, M, material.massQuadrature);
+}
+
+fe::ElementMatrix tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,
+                                       const fe::ElementCoords& X, const fe::IsotropicElastic& material,
+                                       const PrestressState* prestress) {
+  fe::ElementMatrix K;
+  modalElementMatrices(mesh, e, type, X, material, prestress, K);
   return K;
 }
 

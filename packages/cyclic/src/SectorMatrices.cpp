@@ -59,11 +59,10 @@ void blockPattern(const std::vector<std::vector<mesh::Index>>& adjacent, SectorM
   out.m.assign(9 * out.blockRow.size(), 0.0);
 }
 
-fe::ElementCoords coordinates(const mesh::Mesh& mesh, const mesh::Index* nodes, int nn) {
-  fe::ElementCoords X(nn, 3);
+void coordinates(const mesh::Mesh& mesh, const mesh::Index* nodes, int nn, fe::ElementCoords& X) {
+  X.resize(nn, 3);
   for (int a = 0; a < nn; ++a)
     for (int d = 0; d < 3; ++d) X(a, d) = mesh.coords[nodes[a]][d];
-  return X;
 }
 
 }  // namespace
@@ -88,16 +87,16 @@ SectorMatrices assembleSectorMatrices(const mesh::Mesh& mesh, const fe::Isotropi
   double* m = out.m.data();
   std::vector<int> slot;  // per element node pair (i, j), nodes[i] >= nodes[j]: block of nodes[i] in nodes[j]'s column
   mesh::Index global = 0;
+  fe::ElementCoords X;
+  fe::ElementMatrix Ke, Me;  // element-sized storage inside: nothing allocated per element
   for (const auto& block : mesh.blocks) {
     const int nn = mesh::nodesPerElement(block.type);
     slot.resize(std::size_t(nn) * nn);
     for (mesh::Index e = 0; e < block.numElements(); ++e, ++global) {
       const mesh::Index* nodes = block.element(e);
-      const auto X = coordinates(mesh, nodes, nn);
-      Eigen::MatrixXd Ke, Me;
+      coordinates(mesh, nodes, nn, X);
       try {
-        Ke = tangentElementMatrix(mesh, global, block.type, X, material, prestress);
-        Me = fe::elementMass(block.type, X, material.rho, material.massQuadrature);
+        modalElementMatrices(mesh, global, block.type, X, material, prestress, Ke, &Me);
       } catch (const fe::InvalidElementGeometry& err) {
         throw InputError(mesh.source, mesh.elementName(global) + ": inverted or degenerate element (det J = " +
                                           std::to_string(err.detJ) + " at integration point " +

@@ -9,6 +9,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <set>
 
@@ -44,10 +45,19 @@ std::vector<GlobalIndex> elementEquations(const DofTransform& T, const mesh::Ind
   return eq;
 }
 
+// An element's unknowns over both copies of a transform: at most two per DOF. Element
+// arrays of that size keep their storage inside (no allocation per element).
+constexpr int kMaxElementUnknowns = 2 * kMaxElementDofs;
+using ElementTransform =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxElementDofs, kMaxElementUnknowns>;
+using ReducedMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxElementUnknowns, kMaxElementUnknowns>;
+using ReducedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxElementUnknowns, 1>;
+
 // T_c restricted to one element: rows = element DOFs (node-major), columns = its unknowns.
-Eigen::MatrixXd elementTransform(const DofTransform& T, const mesh::Index* nodes, int n, int copy,
-                                 const std::vector<GlobalIndex>& eq) {
-  Eigen::MatrixXd Te = Eigen::MatrixXd::Zero(3 * n, eq.size());
+ElementTransform elementTransform(const DofTransform& T, const mesh::Index* nodes, int n, int copy,
+                                  const std::vector<GlobalIndex>& eq) {
+  ElementTransform Te = ElementTransform::Zero(3 * n, Eigen::Index(eq.size()));
   for (int a = 0; a < n; ++a)
     for (int d = 0; d < 3; ++d)
       for (const auto& t : T.terms(nodes[a], d, copy)) {
@@ -60,13 +70,15 @@ Eigen::MatrixXd elementTransform(const DofTransform& T, const mesh::Index* nodes
 // The same as a scatter when every element DOF has at most one term: position
 // among the element's unknowns (-1: fixed) and coefficient; `simple` false otherwise.
 struct ElementScatter {
-  std::vector<int> position;
-  std::vector<double> coefficient;
+  std::array<int, kMaxElementDofs> position;
+  std::array<double, kMaxElementDofs> coefficient;
   bool simple = true;
 };
 ElementScatter elementScatter(const DofTransform& T, const mesh::Index* nodes, int n, int copy,
                               const std::vector<GlobalIndex>& eq) {
-  ElementScatter s{std::vector<int>(3 * n, -1), std::vector<double>(3 * n, 0.0), true};
+  ElementScatter s;
+  s.position.fill(-1);
+  s.coefficient.fill(0.0);
   for (int a = 0; a < n && s.simple; ++a)
     for (int d = 0; d < 3; ++d) {
       const auto terms = T.terms(nodes[a], d, copy);
@@ -207,9 +219,10 @@ Teuchos::RCP<linalg::Matrix> assembleMatrix(const Assembler& A, const Assembler:
   std::vector<double> row;
   forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf,
                            auto&& scatterOf) {
-    const Eigen::MatrixXd Ke = kernel(I.elements[i], type, X);
+    const ElementMatrix Ke = kernel(I.elements[i], type, X);
     const auto& eq = I.equations[i];
-    Eigen::MatrixXd Kr = Eigen::MatrixXd::Zero(eq.size(), eq.size());
+    if (eq.size() > std::size_t(kMaxElementUnknowns)) throw Error("Assembler: an element with more than 120 unknowns");
+    ReducedMatrix Kr = ReducedMatrix::Zero(Eigen::Index(eq.size()), Eigen::Index(eq.size()));
     for (int c = 0; c < A.transform().copies(); ++c) {
       // Most elements have at most one term per DOF (no right-face node): scatter.
       const auto& [pos, coef, simple] = scatterOf(c);
@@ -220,7 +233,7 @@ Teuchos::RCP<linalg::Matrix> assembleMatrix(const Assembler& A, const Assembler:
             if (pos[q] >= 0) Kr(pos[r], pos[q]) += coef[r] * coef[q] * Ke(r, q);
         }
       } else {
-        const Eigen::MatrixXd Te = transformOf(c);
+        const ElementTransform Te = transformOf(c);
         Kr.noalias() += Te.transpose() * Ke * Te;
       }
     }
@@ -240,7 +253,7 @@ Teuchos::RCP<linalg::MultiVector> assembleVectorImpl(const Assembler& A, const A
   auto vec = Teuchos::rcp(new FEVector(I.owned, I.importer, 1));
   vec->beginAssembly();
   forEachElement(A, I, [&](std::size_t i, ElementType type, const ElementCoords& X, auto&& transformOf, auto&&) {
-    const Eigen::VectorXd fr = transformOf(0).transpose() * kernel(I.elements[i], type, X);  // loads act on copy 0
+    const ReducedVector fr = transformOf(0).transpose() * kernel(I.elements[i], type, X);  // loads act on copy 0
     const auto& eq = I.equations[i];
     for (std::size_t r = 0; r < eq.size(); ++r) vec->sumIntoGlobalValue(eq[r], 0, fr(r));
   });

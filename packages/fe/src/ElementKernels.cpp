@@ -66,14 +66,23 @@ int checkedNodeCount(ElementType type, const ElementCoords& X) {
   return n;
 }
 
-// A node-by-node scalar matrix s (n x n) as the element matrix s (x) I_3 on
-// node-major DOFs: the same coupling in every direction (mass, geometric stiffness).
-Eigen::MatrixXd perDirection(const Eigen::MatrixXd& s) {
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * s.rows(), 3 * s.cols());
+// Node-by-node scalar matrices (n x n: mass, geometric stiffness) and the strain operator.
+using ScalarMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxElementNodes, kMaxElementNodes>;
+using StrainMatrix = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kMaxElementDofs>;
+
+// K += factor s (x) I_3 on node-major DOFs: the same coupling in every direction.
+void addPerDirection(const ScalarMatrix& s, double factor, ElementMatrix& K) {
   for (Eigen::Index a = 0; a < s.rows(); ++a)
     for (Eigen::Index b = 0; b < s.cols(); ++b)
-      for (int d = 0; d < 3; ++d) K(3 * a + d, 3 * b + d) = s(a, b);
-  return K;
+      for (int d = 0; d < 3; ++d) K(3 * a + d, 3 * b + d) += factor * s(a, b);
+}
+
+// A = (A + A^T) / 2 in place: exactly symmetric, whatever a product's summation order did.
+template <class Matrix>
+void symmetrize(Matrix& A) {
+  for (Eigen::Index j = 0; j < A.cols(); ++j)
+    for (Eigen::Index i = j + 1; i < A.rows(); ++i) A(i, j) = A(j, i) = 0.5 * (A(i, j) + A(j, i));
 }
 
 // det J below this fraction of (bounding-box diagonal)^3 is round-off of a flat element:
@@ -95,7 +104,7 @@ Eigen::Matrix3d jacobian(const ShapeTable& t, int q, const ElementCoords& X, dou
 
 // Strain-displacement matrix, Voigt xx yy zz yz xz xy with engineering shear, from the
 // physical gradients G (n x 3); B must be 6 x 3n and zero outside the filled pattern.
-void fillB(const ElementCoords& G, Eigen::Matrix<double, 6, Eigen::Dynamic>& B) {
+void fillB(const ElementCoords& G, StrainMatrix& B) {
   for (Eigen::Index a = 0; a < G.rows(); ++a) {
     const double gx = G(a, 0), gy = G(a, 1), gz = G(a, 2);
     const Eigen::Index c = 3 * a;
@@ -110,7 +119,7 @@ void fillB(const ElementCoords& G, Eigen::Matrix<double, 6, Eigen::Dynamic>& B) 
 
 // B at rule point q; returns w * det J.
 double strainDisplacement(const ShapeTable& t, int q, const ElementCoords& X, double floor, ElementCoords& G,
-                          Eigen::Matrix<double, 6, Eigen::Dynamic>& B) {
+                          StrainMatrix& B) {
   double detJ;
   const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
   const Eigen::Matrix3d Jinv = J.inverse();
@@ -130,45 +139,55 @@ Eigen::Vector3d unitAxis(const RotationAxis& axis) {
 InvalidElementGeometry::InvalidElementGeometry(int point, double detJ)
     : Error(geometryMessage(point, detJ)), point(point), detJ(detJ) {}
 
-Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat) {
+ElementMatrix elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat) {
   const int n = checkedNodeCount(type, X);
   const auto& t = shapeTable(type, Rule::Stiffness);
   const double floor = degenerateDetJ(X);
   const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  Eigen::Matrix<double, 6, Eigen::Dynamic> B = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, 3 * n), DB(6, 3 * n);
+  ElementMatrix K = ElementMatrix::Zero(3 * n, 3 * n);
+  StrainMatrix B = StrainMatrix::Zero(6, 3 * n), DB(6, 3 * n);
   ElementCoords G(n, 3);
   for (int q = 0; q < t.numPoints(); ++q) {
     const double wdetJ = strainDisplacement(t, q, X, floor, G, B);
     DB.noalias() = wdetJ * D * B;
     K.noalias() += B.transpose() * DB;
   }
-  // Exactly symmetric, whatever the product's summation order did.
-  K = 0.5 * (K + K.transpose()).eval();
+  symmetrize(K);
   return K;
 }
 
-Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho, MassQuadrature quadrature) {
-  const int n = checkedNodeCount(type, X);
-  const auto& t = shapeTable(type, massLike(quadrature));
-  const double floor = degenerateDetJ(X);
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);  // scalar mass, the same for each direction
+namespace {
+
+// The scalar mass int N N^T dV (n x n) by `rule`'s points.
+void scalarMass(const ShapeTable& t, const ElementCoords& X, double floor, ScalarMatrix& m) {
+  m.setZero(X.rows(), X.rows());
   for (int q = 0; q < t.numPoints(); ++q) {
     double detJ;
     jacobian(t, q, X, floor, detJ);
-    m.selfadjointView<Eigen::Lower>().rankUpdate(t.N[q], rho * t.weights[q] * detJ);
+    m.selfadjointView<Eigen::Lower>().rankUpdate(t.N[q], t.weights[q] * detJ);
   }
-  m = m.selfadjointView<Eigen::Lower>();  // exactly symmetric
-  return perDirection(m);
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = j + 1; i < m.rows(); ++i) m(j, i) = m(i, j);  // exactly symmetric
 }
 
-Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
-                                       const RotationAxis& axis, MassQuadrature quadrature) {
+}  // namespace
+
+ElementMatrix elementMass(ElementType type, const ElementCoords& X, double rho, MassQuadrature quadrature) {
+  const int n = checkedNodeCount(type, X);
+  ScalarMatrix m;  // scalar mass, the same for each direction
+  scalarMass(shapeTable(type, massLike(quadrature)), X, degenerateDetJ(X), m);
+  ElementMatrix M = ElementMatrix::Zero(3 * n, 3 * n);
+  addPerDirection(m, rho, M);
+  return M;
+}
+
+ElementVector elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
+                                     const RotationAxis& axis, MassQuadrature quadrature) {
   const int n = checkedNodeCount(type, X);
   const auto& t = shapeTable(type, massLike(quadrature));
   const double floor = degenerateDetJ(X);
   const Eigen::Vector3d a = unitAxis(axis);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
+  ElementVector f = ElementVector::Zero(3 * n);
   for (int q = 0; q < t.numPoints(); ++q) {
     double detJ;
     jacobian(t, q, X, floor, detJ);
@@ -181,17 +200,18 @@ Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X,
   return f;
 }
 
-Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b) {
+ElementVector elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b) {
   const int n = checkedNodeCount(type, X);
   const auto& t = shapeTable(type, Rule::Mass);
   const double floor = degenerateDetJ(X);
-  Eigen::VectorXd nodal = Eigen::VectorXd::Zero(n);  // int N_a dV
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxElementNodes, 1> nodal =
+      Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxElementNodes, 1>::Zero(n);  // int N_a dV
   for (int q = 0; q < t.numPoints(); ++q) {
     double detJ;
     jacobian(t, q, X, floor, detJ);
     nodal += (t.weights[q] * detJ) * t.N[q];
   }
-  Eigen::VectorXd f(3 * n);
+  ElementVector f(3 * n);
   for (int a = 0; a < n; ++a) f.segment<3>(3 * a) = nodal[a] * b;
   return f;
 }
@@ -209,8 +229,8 @@ double elementVolume(ElementType type, const ElementCoords& X) {
   return volume;
 }
 
-Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const ElementCoords& X,
-                                                         const IsotropicElastic& mat, const Eigen::VectorXd& ue) {
+PointStresses elementStresses(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                              const ElementVector& ue) {
   const int n = checkedNodeCount(type, X);
   if (ue.size() != 3 * n)
     throw Error("elementStresses: displacement vector of size " + std::to_string(ue.size()) + " for a " +
@@ -218,9 +238,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const
   const auto& t = shapeTable(type, Rule::Stiffness);
   const double floor = degenerateDetJ(X);
   const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
-  Eigen::Matrix<double, 6, Eigen::Dynamic> B = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, 3 * n);
+  StrainMatrix B = StrainMatrix::Zero(6, 3 * n);
   ElementCoords G(n, 3);
-  Eigen::Matrix<double, Eigen::Dynamic, 6> S(t.numPoints(), 6);
+  PointStresses S(t.numPoints(), 6);
   for (int q = 0; q < t.numPoints(); ++q) {
     strainDisplacement(t, q, X, floor, G, B);
     const Eigen::Matrix<double, 6, 1> strain = B * ue;
@@ -229,89 +249,179 @@ Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const
   return S;
 }
 
-Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords& X,
-                                          const Eigen::Matrix<double, Eigen::Dynamic, 6>& stress) {
+namespace {
+
+Eigen::Matrix3d voigtTensor(const Eigen::Matrix<double, 1, 6>& s) {
+  Eigen::Matrix3d S;
+  S << s(0), s(5), s(4), s(5), s(1), s(3), s(4), s(3), s(2);
+  return S;
+}
+
+}  // namespace
+
+ElementMatrix elementGeometricStiffness(ElementType type, const ElementCoords& X, const PointStresses& stress) {
   const int n = checkedNodeCount(type, X);
   const auto& t = shapeTable(type, Rule::Stiffness);
   if (stress.rows() != t.numPoints())
     throw Error("elementGeometricStiffness: " + std::to_string(stress.rows()) + " stress rows for a rule of " +
                 std::to_string(t.numPoints()) + " points");
   const double floor = degenerateDetJ(X);
-  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, n);  // scalar part, the same for each direction
+  ScalarMatrix g = ScalarMatrix::Zero(n, n);  // scalar part, the same for each direction
+  ElementCoords G(n, 3);
   for (int q = 0; q < t.numPoints(); ++q) {
     double detJ;
     const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
-    const ElementCoords G = t.dN[q] * J.inverse();
-    const auto& s = stress.row(q);
-    Eigen::Matrix3d S;
-    S << s(0), s(5), s(4), s(5), s(1), s(3), s(4), s(3), s(2);
-    g.noalias() += (t.weights[q] * detJ) * (G * S * G.transpose());
+    G.noalias() = t.dN[q].lazyProduct(J.inverse());
+    g.noalias() += (t.weights[q] * detJ) * (G * voigtTensor(stress.row(q)) * G.transpose());
   }
-  g = 0.5 * (g + g.transpose()).eval();
-  return perDirection(g);
-}
-
-Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
-                                     const RotationAxis& axis, MassQuadrature quadrature) {
-  const int n = checkedNodeCount(type, X);
-  const Eigen::Vector3d a = unitAxis(axis);
-  const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();
-  const Eigen::MatrixXd M = elementMass(type, X, rho * omega * omega, quadrature);  // blocks m_ab I_3
-  Eigen::MatrixXd K(3 * n, 3 * n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) K.block<3, 3>(3 * i, 3 * j) = M(3 * i, 3 * j) * P;
+  symmetrize(g);
+  ElementMatrix K = ElementMatrix::Zero(3 * n, 3 * n);
+  addPerDirection(g, 1.0, K);
   return K;
 }
 
+ElementMatrix elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
+                                   const RotationAxis& axis, MassQuadrature quadrature) {
+  const int n = checkedNodeCount(type, X);
+  const Eigen::Vector3d a = unitAxis(axis);
+  const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();
+  ScalarMatrix m;
+  scalarMass(shapeTable(type, massLike(quadrature)), X, degenerateDetJ(X), m);
+  ElementMatrix K(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) K.block<3, 3>(3 * i, 3 * j) = (rho * omega * omega * m(i, j)) * P;
+  return K;
+}
+
+namespace {
+
+// The Total Lagrangian strain variation operator at a point: row ij of node a,
+// component k, (F_ki G_aj + F_kj G_ai) / (1 or 2).
+void fillNonlinearB(const Eigen::Matrix3d& F, const ElementCoords& G, StrainMatrix& B) {
+  for (Eigen::Index a = 0; a < G.rows(); ++a)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Index c = 3 * a + k;
+      B(0, c) = F(k, 0) * G(a, 0);
+      B(1, c) = F(k, 1) * G(a, 1);
+      B(2, c) = F(k, 2) * G(a, 2);
+      B(3, c) = F(k, 1) * G(a, 2) + F(k, 2) * G(a, 1);
+      B(4, c) = F(k, 0) * G(a, 2) + F(k, 2) * G(a, 0);
+      B(5, c) = F(k, 0) * G(a, 1) + F(k, 1) * G(a, 0);
+    }
+}
+
+// Deformation gradient and 2nd Piola-Kirchhoff stress (Voigt) at a point.
+Eigen::Matrix<double, 6, 1> secondPiolaKirchhoff(const Eigen::Matrix<double, 6, 6>& D,
+                                                 const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor,
+                                                                     kMaxElementNodes, 3>& U,
+                                                 const ElementCoords& G, Eigen::Matrix3d& F) {
+  F = Eigen::Matrix3d::Identity() + U.transpose() * G;
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  Eigen::Matrix<double, 6, 1> e;
+  e << E(0, 0), E(1, 1), E(2, 2), 2 * E(1, 2), 2 * E(0, 2), 2 * E(0, 1);
+  return D * e;
+}
+
+}  // namespace
+
 TotalLagrangianElement elementTotalLagrangian(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
-                                              const Eigen::VectorXd& ue, bool wantTangent) {
+                                              const ElementVector& ue, bool wantTangent) {
   const int n = checkedNodeCount(type, X);
   if (ue.size() != 3 * n) throw Error("elementTotalLagrangian: displacement vector of the wrong size");
   const auto& t = shapeTable(type, Rule::Stiffness);
   const double floor = degenerateDetJ(X);
   const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
   TotalLagrangianElement out;
-  out.internalForce = Eigen::VectorXd::Zero(3 * n);
-  if (wantTangent) out.tangent = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  out.internalForce = ElementVector::Zero(3 * n);
+  if (wantTangent) out.tangent = ElementMatrix::Zero(3 * n, 3 * n);
   out.secondPK.resize(t.numPoints(), 6);
   out.cauchy.resize(t.numPoints(), 6);
-  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, 3 * n);
-  Eigen::Matrix<double, Eigen::Dynamic, 3> U(n, 3);
+  StrainMatrix B(6, 3 * n), DB(6, 3 * n);
+  ElementCoords G(n, 3);
+  ScalarMatrix g = ScalarMatrix::Zero(n, n);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, kMaxElementNodes, 3> U(n, 3);
   for (int a = 0; a < n; ++a) U.row(a) = ue.segment<3>(3 * a).transpose();
   for (int q = 0; q < t.numPoints(); ++q) {
     double detJ;
     const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
-    const ElementCoords G = t.dN[q] * J.inverse();  // dN/dX in the reference configuration
-    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + U.transpose() * G;
-    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-    Eigen::Matrix<double, 6, 1> e;
-    e << E(0, 0), E(1, 1), E(2, 2), 2 * E(1, 2), 2 * E(0, 2), 2 * E(0, 1);
-    const Eigen::Matrix<double, 6, 1> S = D * e;
+    G.noalias() = t.dN[q].lazyProduct(J.inverse());  // dN/dX in the reference configuration
+    Eigen::Matrix3d F;
+    const Eigen::Matrix<double, 6, 1> S = secondPiolaKirchhoff(D, U, G, F);
     out.secondPK.row(q) = S.transpose();
-    Eigen::Matrix3d St;
-    St << S(0), S(5), S(4), S(5), S(1), S(3), S(4), S(3), S(2);
+    const Eigen::Matrix3d St = voigtTensor(S.transpose());
     const Eigen::Matrix3d sigma = F * St * F.transpose() / F.determinant();
     out.cauchy.row(q) << sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(1, 2), sigma(0, 2), sigma(0, 1);
-    // delta E = B delta u: row ij of node a, component k: (F_ki G_aj + F_kj G_ai) / (1 or 2).
-    for (int a = 0; a < n; ++a)
-      for (int k = 0; k < 3; ++k) {
-        const int c = 3 * a + k;
-        B(0, c) = F(k, 0) * G(a, 0);
-        B(1, c) = F(k, 1) * G(a, 1);
-        B(2, c) = F(k, 2) * G(a, 2);
-        B(3, c) = F(k, 1) * G(a, 2) + F(k, 2) * G(a, 1);
-        B(4, c) = F(k, 0) * G(a, 2) + F(k, 2) * G(a, 0);
-        B(5, c) = F(k, 0) * G(a, 1) + F(k, 1) * G(a, 0);
-      }
+    fillNonlinearB(F, G, B);
     const double w = t.weights[q] * detJ;
     out.internalForce.noalias() += w * (B.transpose() * S);
     if (wantTangent) {
-      out.tangent.noalias() += w * (B.transpose() * D * B);
-      out.tangent += perDirection(w * (G * St * G.transpose()));
+      DB.noalias() = w * D * B;
+      out.tangent.noalias() += B.transpose() * DB;
+      g.noalias() += w * (G * St * G.transpose());
     }
   }
-  if (wantTangent) out.tangent = 0.5 * (out.tangent + out.tangent.transpose()).eval();
+  if (wantTangent) {
+    addPerDirection(g, 1.0, out.tangent);
+    symmetrize(out.tangent);
+  }
   return out;
+}
+
+void elementModalMatrices(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                          const ElementPrestress& prestress, ElementMatrix& K, ElementMatrix* M,
+                          MassQuadrature quadrature) {
+  using Kind = ElementPrestress::Kind;
+  const int n = checkedNodeCount(type, X);
+  const auto& t = shapeTable(type, Rule::Stiffness);
+  if (prestress.kind == Kind::Linear && (!prestress.stress || prestress.stress->rows() != t.numPoints()))
+    throw Error("elementModalMatrices: a linear prestress needs the stress at the " + std::to_string(t.numPoints()) +
+                " stiffness-rule points");
+  if (prestress.kind == Kind::Nonlinear && (!prestress.displacement || prestress.displacement->size() != 3 * n))
+    throw Error("elementModalMatrices: a nonlinear prestress needs the element's displacement (" +
+                std::to_string(3 * n) + " values)");
+  const double floor = degenerateDetJ(X);
+  const Eigen::Matrix<double, 6, 6> D = mat.elasticity();
+  K.setZero(3 * n, 3 * n);
+  ScalarMatrix g = ScalarMatrix::Zero(n, n);  // the stress's share, the same in each direction
+  StrainMatrix B = StrainMatrix::Zero(6, 3 * n), DB(6, 3 * n);
+  ElementCoords G(n, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, kMaxElementNodes, 3> U(n, 3);
+  if (prestress.kind == Kind::Nonlinear)
+    for (int a = 0; a < n; ++a) U.row(a) = prestress.displacement->segment<3>(3 * a).transpose();
+  for (int q = 0; q < t.numPoints(); ++q) {
+    double detJ;
+    const Eigen::Matrix3d J = jacobian(t, q, X, floor, detJ);
+    G.noalias() = t.dN[q].lazyProduct(J.inverse());
+    const double w = t.weights[q] * detJ;
+    Eigen::Matrix3d St;
+    if (prestress.kind == Kind::Nonlinear) {
+      Eigen::Matrix3d F;
+      St = voigtTensor(secondPiolaKirchhoff(D, U, G, F).transpose());
+      fillNonlinearB(F, G, B);
+    } else {
+      fillB(G, B);
+      if (prestress.kind == Kind::Linear) St = voigtTensor(prestress.stress->row(q));
+    }
+    DB.noalias() = w * D * B;
+    K.noalias() += B.transpose() * DB;
+    if (prestress.kind != Kind::None) g.noalias() += w * (G * St * G.transpose());
+  }
+  addPerDirection(g, 1.0, K);
+  symmetrize(K);
+  if (!M && prestress.omega == 0) return;
+  ScalarMatrix m;
+  scalarMass(shapeTable(type, massLike(quadrature)), X, floor, m);
+  if (M) {
+    M->setZero(3 * n, 3 * n);
+    addPerDirection(m, mat.rho, *M);
+  }
+  if (prestress.omega != 0) {
+    const Eigen::Vector3d a = unitAxis(prestress.axis);
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose();
+    const double rhoOmega2 = mat.rho * prestress.omega * prestress.omega;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) K.block<3, 3>(3 * i, 3 * j) -= (rhoOmega2 * m(i, j)) * P;
+  }
 }
 
 double vonMises(const Eigen::Matrix<double, 6, 1>& s) {

@@ -55,11 +55,16 @@ PrestressState solveNonlinearPrestress(const mesh::Mesh& mesh, const fe::DofTran
 /// von_mises (means over the integration points), one step at time = rpm.
 void writePrestressExodus(const std::string& path, const mesh::Mesh& mesh, const PrestressState& state);
 
-/// One element's modal tangent: K, or K + K_sigma - K_Omega (linear prestress), or
-/// K_T(u) - K_Omega (nonlinear) when a prestress is given.
-Eigen::MatrixXd tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,
-                                     const fe::ElementCoords& X, const fe::IsotropicElastic& material,
-                                     const PrestressState* prestress);
+/// One element's modal tangent K, or K + K_sigma - K_Omega (linear prestress), or
+/// K_T(u) - K_Omega (nonlinear) when a prestress is given; and its mass when M is given
+/// (fe::elementModalMatrices: one pass per rule, nothing allocated).
+void modalElementMatrices(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type, const fe::ElementCoords& X,
+                          const fe::IsotropicElastic& material, const PrestressState* prestress, fe::ElementMatrix& K,
+                          fe::ElementMatrix* M = nullptr);
+/// The tangent alone.
+fe::ElementMatrix tangentElementMatrix(const mesh::Mesh& mesh, mesh::Index e, fe::ElementType type,
+                                       const fe::ElementCoords& X, const fe::IsotropicElastic& material,
+                                       const PrestressState* prestress);
 
 /// K (+ K_sigma - K_Omega when a prestress is given) on the assembler's unknowns.
 Teuchos::RCP<linalg::Matrix> tangentStiffness(const fe::Assembler& assembler, const fe::IsotropicElastic& material,

@@ -40,11 +40,11 @@ public:
 
   /// Any element matrix (3n x 3n, node-major) summed into the global operator;
   /// the kernel gets the global element index, its type and coordinates.
-  using ElementMatrixKernel = std::function<Eigen::MatrixXd(mesh::Index, ElementType, const ElementCoords&)>;
+  using ElementMatrixKernel = std::function<ElementMatrix(mesh::Index, ElementType, const ElementCoords&)>;
   Teuchos::RCP<linalg::Matrix> assemble(const ElementMatrixKernel& kernel) const;
 
   /// Any element vector (3n, node-major) summed into a global vector through the copy-0 transform.
-  using ElementVectorKernel = std::function<Eigen::VectorXd(mesh::Index, ElementType, const ElementCoords&)>;
+  using ElementVectorKernel = std::function<ElementVector(mesh::Index, ElementType, const ElementCoords&)>;
   Teuchos::RCP<linalg::MultiVector> assembleVector(const ElementVectorKernel& kernel) const;
 
   Teuchos::RCP<linalg::Matrix> stiffness(const IsotropicElastic& material) const;

@@ -12,7 +12,17 @@
 namespace cyclone::fe {
 
 using mesh::ElementType;
-using ElementCoords = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // n x 3
+
+/// Element-sized arrays keep their storage inside the object (Eigen's fixed maximum
+/// sizes): a kernel called per element and per integration point allocates nothing.
+constexpr int kMaxElementNodes = 20, kMaxElementDofs = 3 * kMaxElementNodes;
+constexpr int kMaxRulePoints = 27;  ///< the largest rule: 3 x 3 x 3 Gauss (hex20)
+using ElementCoords = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, kMaxElementNodes, 3>;  // n x 3
+using ElementMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxElementDofs, kMaxElementDofs>;
+using ElementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxElementDofs, 1>;
+/// One Voigt row per integration point.
+using PointStresses = Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::ColMajor, kMaxRulePoints, 6>;
 
 using mesh::RotationAxis;
 
@@ -27,31 +37,30 @@ public:
 };
 
 /// Linear elastic stiffness (3n x 3n), stiffnessRule.
-Eigen::MatrixXd elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat);
+ElementMatrix elementStiffness(ElementType type, const ElementCoords& X, const IsotropicElastic& mat);
 /// Consistent mass (3n x 3n), massRule (or stiffnessRule: MassQuadrature).
-Eigen::MatrixXd elementMass(ElementType type, const ElementCoords& X, double rho,
+ElementMatrix elementMass(ElementType type, const ElementCoords& X, double rho,
                             MassQuadrature quadrature = MassQuadrature::Exact);
 /// Consistent centrifugal body load  int N^T rho Omega^2 r_perp dV  (3n), r_perp the
 /// distance vector from the axis at the undeformed position; massRule (or stiffnessRule).
-Eigen::VectorXd elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
+ElementVector elementCentrifugalLoad(ElementType type, const ElementCoords& X, double rho, double omega,
                                        const RotationAxis& axis, MassQuadrature quadrature = MassQuadrature::Exact);
 /// Consistent load of a uniform body force density b (force/volume) (3n).
-Eigen::VectorXd elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b);
+ElementVector elementBodyLoad(ElementType type, const ElementCoords& X, const Eigen::Vector3d& b);
 /// Element volume.
 double elementVolume(ElementType type, const ElementCoords& X);
 /// Small-strain Cauchy stress (Voigt xx yy zz yz xz xy) at each stiffness-rule point for the
 /// element displacement vector ue (3n); one row per point.
-Eigen::Matrix<double, Eigen::Dynamic, 6> elementStresses(ElementType type, const ElementCoords& X,
-                                                         const IsotropicElastic& mat, const Eigen::VectorXd& ue);
+PointStresses elementStresses(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                              const ElementVector& ue);
 /// Geometric (stress) stiffness for a stress state given at the stiffness-rule points
 /// (one Voigt row per point, e.g. from elementStresses):
 ///   K_ab = (int grad N_a . S grad N_b dV) I_3   (stiffness rule).
-Eigen::MatrixXd elementGeometricStiffness(ElementType type, const ElementCoords& X,
-                                          const Eigen::Matrix<double, Eigen::Dynamic, 6>& stress);
+ElementMatrix elementGeometricStiffness(ElementType type, const ElementCoords& X, const PointStresses& stress);
 /// Spin softening: the centrifugal load's change with displacement,
 ///   K_ab = rho Omega^2 (int N_a N_b dV) (I - a a^T)   (mass rule),
 /// subtracted from the tangent (the load follows the deformed position).
-Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
+ElementMatrix elementSpinSoftening(ElementType type, const ElementCoords& X, double rho, double omega,
                                      const RotationAxis& axis, MassQuadrature quadrature = MassQuadrature::Exact);
 /// Geometrically nonlinear element (Total Lagrangian, St Venant-Kirchhoff) at the
 /// element displacement ue, stiffness rule: Green-Lagrange strain E = (F^T F - I)/2,
@@ -60,13 +69,30 @@ Eigen::MatrixXd elementSpinSoftening(ElementType type, const ElementCoords& X, d
 ///   tangent         K = int B(u)^T D B(u) dV0 + int G^T S G dV0 (material + geometric),
 /// with B(u) the strain variation operator (F^T-weighted gradients).
 struct TotalLagrangianElement {
-  Eigen::VectorXd internalForce;
-  Eigen::MatrixXd tangent;                          ///< empty unless asked for
-  Eigen::Matrix<double, Eigen::Dynamic, 6> secondPK;  ///< per stiffness-rule point
-  Eigen::Matrix<double, Eigen::Dynamic, 6> cauchy;    ///< sigma = F S F^T / det F, per point
+  ElementVector internalForce;
+  ElementMatrix tangent;   ///< empty unless asked for
+  PointStresses secondPK;  ///< per stiffness-rule point
+  PointStresses cauchy;    ///< sigma = F S F^T / det F, per point
 };
 TotalLagrangianElement elementTotalLagrangian(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
-                                              const Eigen::VectorXd& ue, bool wantTangent);
+                                              const ElementVector& ue, bool wantTangent);
+
+/// The prestress one element's modal tangent carries (ElementModalMatrices).
+struct ElementPrestress {
+  enum class Kind { None, Linear, Nonlinear } kind = Kind::None;
+  const PointStresses* stress = nullptr;       ///< Linear: small-strain stress at the stiffness-rule points
+  const ElementVector* displacement = nullptr;  ///< Nonlinear: the element's displacement (3n)
+  double omega = 0;                             ///< spin softening -K_Omega at this speed (rad/s); 0: none
+  RotationAxis axis;
+};
+
+/// The modal tangent K (+ K_sigma, or the Total Lagrangian tangent, - K_Omega) and,
+/// when M is given, the consistent mass, in one pass: J^-1 and w det J once per point of
+/// each rule, shared by K, K_sigma and the TL tangent (stiffness rule) and by M and
+/// K_Omega (mass rule). The same matrices as the single-term kernels summed, to rounding.
+void elementModalMatrices(ElementType type, const ElementCoords& X, const IsotropicElastic& mat,
+                          const ElementPrestress& prestress, ElementMatrix& K, ElementMatrix* M,
+                          MassQuadrature quadrature = MassQuadrature::Exact);
 
 /// von Mises equivalent of a Voigt stress.
 double vonMises(const Eigen::Matrix<double, 6, 1>& s);
