@@ -30,13 +30,18 @@ std::atomic<long> unsettled{0};  // FrictionContact::unsettledEvaluations()
 // One step of the contact law (return mapping). Inputs: tangential w_t, normal
 // approach n, slider z (updated). Outputs the force [f_t, f_n] and, if asked,
 // its sensitivities: with dwt (dt x m), dn (1 x m) and dz (dt x m) the
-// sensitivities of the inputs to m parameters, df (d x m) and the updated dz.
+// sensitivities of the inputs to m parameters, df (d x m) and the updated dz;
+// dTrial (dt x m) is work. Called per time sample and contact: nothing is allocated
+// (the tangential vectors have at most 2 entries, stored inside).
 struct StepSensitivity {
   const Eigen::MatrixXd* dwt;
   const Eigen::RowVectorXd* dn;
   Eigen::MatrixXd* dz;
   Eigen::MatrixXd* df;
+  Eigen::MatrixXd* dTrial;
 };
+
+using Tangential = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 2, 1>;
 
 void contactStep(const FrictionContactParameters& p, const Eigen::VectorXd& wt, double n, Eigen::VectorXd& z,
                  Eigen::VectorXd& f, StepSensitivity* s) {
@@ -56,19 +61,25 @@ void contactStep(const FrictionContactParameters& p, const Eigen::VectorXd& wt, 
     if (s) *s->dz = *s->dwt;
     return;
   }
-  const Eigen::VectorXd trial = p.kt * (wt - z);
+  const Tangential trial = p.kt * (wt - z);
   const double t = trial.norm(), limit = p.mu * normal;
   if (t <= limit) {  // stick
     f.head(dt) = trial;
     if (s) s->df->topRows(dt) = p.kt * (*s->dwt - *s->dz);
     return;
   }
-  const Eigen::VectorXd u = trial / t;  // slip along the trial force (circular limit)
+  const Tangential u = trial / t;  // slip along the trial force (circular limit)
   f.head(dt) = limit * u;
   if (s) {
-    const Eigen::MatrixXd dTrial = p.kt * (*s->dwt - *s->dz);
-    const Eigen::MatrixXd proj = Eigen::MatrixXd::Identity(dt, dt) - u * u.transpose();
-    s->df->topRows(dt) = (p.mu * u) * (p.kn * *s->dn) + (limit / t) * (proj * dTrial);
+    // df_t = mu kn u dn + (limit / t) (I - u u^T) kt (dwt - dz)
+    Eigen::MatrixXd& dTrial = *s->dTrial;
+    Eigen::MatrixXd& df = *s->df;
+    dTrial = p.kt * (*s->dwt - *s->dz);
+    const double a = limit / t, b = p.mu * p.kn;
+    for (int r = 0; r < dt; ++r) {
+      df.row(r) = (b * u(r)) * *s->dn + a * dTrial.row(r);
+      for (int k = 0; k < dt; ++k) df.row(r) -= (a * u(r) * u(k)) * dTrial.row(k);
+    }
   }
   z = wt - f.head(dt) / p.kt;
   if (s) *s->dz = *s->dwt - s->df->topRows(dt) / p.kt;
@@ -168,9 +179,12 @@ public:
   // carried through it: its first wCols columns d/dvec(W) (0 or m), the others
   // d/d(the period's starting slider).
   void period(Eigen::VectorXd& z, Eigen::MatrixXd* dz, int wCols, bool record) {
-    StepSensitivity sens{&dwt_, &dn_, dz, &df_};
+    StepSensitivity sens{&dwt_, &dn_, dz, &df_, &dTrial_};
     if (dz) dwt_.setZero(dt_, dz->cols()), dn_.setZero(dz->cols()), df_.setZero(d_, dz->cols());
-    Eigen::VectorXd fi(d_), wt(dt_);
+    if (dz) dTrial_.resize(dt_, dz->cols());
+    fi_.resize(d_), wt_.resize(dt_);
+    auto& fi = fi_;
+    auto& wt = wt_;
     for (int i = 0; i < N_; ++i) {
       wt = w_.row(i).head(dt_).transpose();
       if (dz && wCols > 0) {
@@ -238,8 +252,9 @@ private:
   Eigen::MatrixXd& f_;
   Eigen::MatrixXd* jacobian_;
   const int N_, nc_, d_, dt_;
-  Eigen::MatrixXd dwt_, df_;  // work: the step's sensitivities
+  Eigen::MatrixXd dwt_, df_, dTrial_;  // work: the step's sensitivities
   Eigen::RowVectorXd dn_;
+  Eigen::VectorXd fi_, wt_;
 };
 
 }  // namespace
@@ -302,7 +317,8 @@ Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eig
   dwt.leftCols(dt).setIdentity();
   Eigen::RowVectorXd dn = Eigen::RowVectorXd::Zero(d);
   dn(dt) = 1;
-  StepSensitivity sens{&dwt, &dn, &dz, &df};  // dz = 0: the committed state is fixed within the step
+  Eigen::MatrixXd dTrial(dt, d);
+  StepSensitivity sens{&dwt, &dn, &dz, &df, &dTrial};  // dz = 0: the committed state is fixed within the step
   Eigen::VectorXd f;
   contactStep(p_, w.head(dt), w(dt), state, f, &sens);
   dfdw = df;

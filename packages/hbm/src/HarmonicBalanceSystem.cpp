@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
@@ -306,36 +307,64 @@ Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inver
   return B;
 }
 
+namespace {
+
+// The nonzeros of a coefficient-space operator: the derivative, its square, the
+// next-sector rotation and their products are block diagonal per harmonic (at most two
+// entries a row), so a DOF pair's block of the dynamic stiffness is written entry by
+// entry instead of as nc x nc dense additions.
+struct CoefficientEntries {
+  std::vector<int> row, col;
+  std::vector<double> value;
+  explicit CoefficientEntries(const Eigen::MatrixXd& A) {
+    for (Eigen::Index j = 0; j < A.cols(); ++j)
+      for (Eigen::Index i = 0; i < A.rows(); ++i)
+        if (A(i, j) != 0) row.push_back(int(i)), col.push_back(int(j)), value.push_back(A(i, j));
+  }
+  void addTo(double factor, Eigen::MatrixXd& Z, Eigen::Index r0, Eigen::Index c0) const {
+    for (std::size_t k = 0; k < value.size(); ++k) Z(r0 + row[k], c0 + col[k]) += factor * value[k];
+  }
+};
+
+}  // namespace
+
 Eigen::MatrixXd HarmonicBalanceSystem::linearOperator(double omega) const {
+  Eigen::MatrixXd Z;
+  linearOperatorInto(omega, Z);
+  return Z;
+}
+
+void HarmonicBalanceSystem::linearOperatorInto(double omega, Eigen::MatrixXd& Z) const {
   requireMatrixForm("the dynamic stiffness");
   // Z = L(K) + omega L(C) D + omega^2 L(M) D^2, D the per-DOF derivative in
   // coefficient space (it commutes with the next-sector rotation). Per harmonic
   // h on (cos, sin): [K - (h w)^2 M,  h w C; -h w C,  K - (h w)^2 M] for a lone sector.
   const int n = numDofs(), nc = numCoefficients();
   const Eigen::MatrixXd D = omega * aft_->derivativeMatrix(), D2 = D * D;
-  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(nc, nc);
-  const Eigen::MatrixXd S = next_, ST = next_.transpose();
-  const Eigen::MatrixXd SD = S * D, STD = ST * D, SD2 = S * D2, STD2 = ST * D2;
-  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n * nc, n * nc);
-  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, n);
-  const auto& Kn = isCyclic() ? cyclic_.Knext : zero;
-  const auto& Cn = isCyclic() ? cyclic_.Cnext : zero;
-  const auto& Mn = isCyclic() ? cyclic_.Mnext : zero;
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      auto block = Z.block(a * nc, b * nc, nc, nc);
-      if (K_(a, b) != 0) block += K_(a, b) * I;
-      if (C_(a, b) != 0) block += C_(a, b) * D;
-      if (M_(a, b) != 0) block += M_(a, b) * D2;
-      if (!isCyclic()) continue;
-      if (Kn(a, b) != 0) block += Kn(a, b) * S;
-      if (Kn(b, a) != 0) block += Kn(b, a) * ST;
-      if (Cn(a, b) != 0) block += Cn(a, b) * SD;
-      if (Cn(b, a) != 0) block += Cn(b, a) * STD;
-      if (Mn(a, b) != 0) block += Mn(a, b) * SD2;
-      if (Mn(b, a) != 0) block += Mn(b, a) * STD2;
+  const CoefficientEntries I(Eigen::MatrixXd::Identity(nc, nc)), d(D), d2(D2);
+  Z.setZero(Eigen::Index(n) * nc, Eigen::Index(n) * nc);
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      const Eigen::Index r0 = Eigen::Index(a) * nc, c0 = Eigen::Index(b) * nc;
+      if (K_(a, b) != 0) I.addTo(K_(a, b), Z, r0, c0);
+      if (C_(a, b) != 0) d.addTo(C_(a, b), Z, r0, c0);
+      if (M_(a, b) != 0) d2.addTo(M_(a, b), Z, r0, c0);
     }
-  return Z;
+  if (!isCyclic()) return;
+  const Eigen::MatrixXd& S = next_;
+  const Eigen::MatrixXd ST = S.transpose();
+  const CoefficientEntries s(S), st(ST), sd(S * D), std_(ST * D), sd2(S * D2), std2(ST * D2);
+  const auto &Kn = cyclic_.Knext, &Cn = cyclic_.Cnext, &Mn = cyclic_.Mnext;
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      const Eigen::Index r0 = Eigen::Index(a) * nc, c0 = Eigen::Index(b) * nc;
+      if (Kn(a, b) != 0) s.addTo(Kn(a, b), Z, r0, c0);
+      if (Kn(b, a) != 0) st.addTo(Kn(b, a), Z, r0, c0);
+      if (Cn(a, b) != 0) sd.addTo(Cn(a, b), Z, r0, c0);
+      if (Cn(b, a) != 0) std_.addTo(Cn(b, a), Z, r0, c0);
+      if (Mn(a, b) != 0) sd2.addTo(Mn(a, b), Z, r0, c0);
+      if (Mn(b, a) != 0) std2.addTo(Mn(b, a), Z, r0, c0);
+    }
 }
 
 // Z X without Z: with X as the nc x n matrix Xm of the DOFs' coefficients, block (a, b)
@@ -392,7 +421,7 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
     }
     return;
   }
-  if (jacobian) *jacobian = linearOperator(omega);
+  if (jacobian) linearOperatorInto(omega, *jacobian);
   applyLinearOperator(omega, X, R);
   R -= excitationScale * excitation_ + static_;
   addElementForces(X, omega, R, jacobian);

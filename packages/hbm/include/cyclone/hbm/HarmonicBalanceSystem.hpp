@@ -115,6 +115,8 @@ public:
   Eigen::VectorXd linearizedSolution(double omega, double excitationScale = 1.0) const;
   /// The dynamic stiffness Z(omega) of the linear part (numUnknowns square); matrix form only.
   Eigen::MatrixXd linearOperator(double omega) const;
+  /// The same into Z, whose storage is kept when it has the size (a Jacobian's).
+  void linearOperatorInto(double omega, Eigen::MatrixXd& Z) const;
   /// The compliance A(omega) in coefficient space (numUnknowns square, 2 x 2 blocks
   /// [Re A, Im A; -Im A, Re A] per harmonic on (cos, sin)); receptance form only.
   Eigen::MatrixXd complianceOperator(double omega) const;
