@@ -342,6 +342,13 @@ void HarmonicBalanceSystem::linearOperatorInto(double omega, Eigen::MatrixXd& Z)
   const int n = numDofs(), nc = numCoefficients();
   const Eigen::MatrixXd D = omega * aft_->derivativeMatrix(), D2 = D * D;
   const CoefficientEntries I(Eigen::MatrixXd::Identity(nc, nc)), d(D), d2(D2);
+  // The next sector's couplings through the rotation S (and its products with D).
+  const bool cyclic = isCyclic();
+  const Eigen::MatrixXd S = cyclic ? next_ : Eigen::MatrixXd::Zero(nc, nc), ST = S.transpose();
+  const CoefficientEntries s(S), st(ST), sd(S * D), std_(ST * D), sd2(S * D2), std2(ST * D2);
+  const Eigen::MatrixXd none;
+  const auto &Kn = cyclic ? cyclic_.Knext : none, &Cn = cyclic ? cyclic_.Cnext : none,
+             &Mn = cyclic ? cyclic_.Mnext : none;
   Z.setZero(Eigen::Index(n) * nc, Eigen::Index(n) * nc);
   for (int b = 0; b < n; ++b)
     for (int a = 0; a < n; ++a) {
@@ -349,15 +356,7 @@ void HarmonicBalanceSystem::linearOperatorInto(double omega, Eigen::MatrixXd& Z)
       if (K_(a, b) != 0) I.addTo(K_(a, b), Z, r0, c0);
       if (C_(a, b) != 0) d.addTo(C_(a, b), Z, r0, c0);
       if (M_(a, b) != 0) d2.addTo(M_(a, b), Z, r0, c0);
-    }
-  if (!isCyclic()) return;
-  const Eigen::MatrixXd& S = next_;
-  const Eigen::MatrixXd ST = S.transpose();
-  const CoefficientEntries s(S), st(ST), sd(S * D), std_(ST * D), sd2(S * D2), std2(ST * D2);
-  const auto &Kn = cyclic_.Knext, &Cn = cyclic_.Cnext, &Mn = cyclic_.Mnext;
-  for (int b = 0; b < n; ++b)
-    for (int a = 0; a < n; ++a) {
-      const Eigen::Index r0 = Eigen::Index(a) * nc, c0 = Eigen::Index(b) * nc;
+      if (!cyclic) continue;
       if (Kn(a, b) != 0) s.addTo(Kn(a, b), Z, r0, c0);
       if (Kn(b, a) != 0) st.addTo(Kn(b, a), Z, r0, c0);
       if (Cn(a, b) != 0) sd.addTo(Cn(a, b), Z, r0, c0);
