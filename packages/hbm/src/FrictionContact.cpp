@@ -182,6 +182,7 @@ public:
     StepSensitivity sens{&dwt_, &dn_, dz, &df_, &dTrial_};
     if (dz) dwt_.setZero(dt_, dz->cols()), dn_.setZero(dz->cols()), df_.setZero(d_, dz->cols());
     if (dz) dTrial_.resize(dt_, dz->cols());
+    if (record && jacobian_) dfSamples_.resize(N_, d_ * m());
     fi_.resize(d_), wt_.resize(dt_);
     auto& fi = fi_;
     auto& wt = wt_;
@@ -195,8 +196,12 @@ public:
       if (!record) continue;
       f_.row(i) = fi.transpose();
       if (jacobian_)
-        for (int c = 0; c < d_; ++c) jacobian_->middleRows(c * nc_, nc_).noalias() += P_.col(i) * df_.row(c).head(m());
+        for (int c = 0; c < d_; ++c) dfSamples_.block(i, c * m(), 1, m()) = df_.row(c).head(m());
     }
+    // The coefficient Jacobian, P times the sampled force sensitivities: one product
+    // per force component instead of a rank-one update per sample.
+    if (record && jacobian_)
+      for (int c = 0; c < d_; ++c) jacobian_->middleRows(c * nc_, nc_).noalias() += P_ * dfSamples_.middleCols(c * m(), m());
   }
 
   // The fixed point of the period map z -> Phi(z) from y, by Newton on its dt
@@ -253,6 +258,7 @@ private:
   Eigen::MatrixXd* jacobian_;
   const int N_, nc_, d_, dt_;
   Eigen::MatrixXd dwt_, df_, dTrial_;  // work: the step's sensitivities
+  Eigen::MatrixXd dfSamples_;          // the recorded period's df, a row per sample
   Eigen::RowVectorXd dn_;
   Eigen::VectorXd fi_, wt_;
 };

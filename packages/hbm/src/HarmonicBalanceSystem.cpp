@@ -284,10 +284,18 @@ void HarmonicBalanceSystem::applyHarmonicOperator(double omega, bool inverse, co
 }
 
 Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inverse) const {
+  Eigen::MatrixXd B;
+  harmonicOperatorInto(omega, inverse, B);
+  return B;
+}
+
+void HarmonicBalanceSystem::harmonicOperatorInto(double omega, bool inverse, Eigen::MatrixXd& B) const {
   const int n = numDofs(), nc = numCoefficients();
   const auto& H = aft_->harmonics();
   const HarmonicBlocks& bl = harmonicBlocks(omega, inverse);
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n * nc, n * nc);
+  // A Jacobian's storage is reused: a fresh matrix of this size (23 MB for the default
+  // disc at H = 6) costs its page faults at every Newton step.
+  B.setZero(Eigen::Index(n) * nc, Eigen::Index(n) * nc);
   for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
     const int h = H.harmonics()[i];
     const int c = H.cosIndex(h);
@@ -304,7 +312,6 @@ Eigen::MatrixXd HarmonicBalanceSystem::harmonicOperator(double omega, bool inver
         B(a * nc + s, b * nc + c) = -im, B(a * nc + s, b * nc + s) = re;
       }
   }
-  return B;
 }
 
 namespace {
@@ -397,7 +404,7 @@ void HarmonicBalanceSystem::residual(const Eigen::VectorXd& X, double omega, Eig
   const int n = numDofs(), nc = numCoefficients();
   if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
   if (receptance_ && stiffnessForm_) {
-    if (jacobian) *jacobian = dynamicStiffnessOperator(omega);
+    if (jacobian) harmonicOperatorInto(omega, true, *jacobian);
     applyHarmonicOperator(omega, true, X, R);
     R -= excitationScale * excitation_ + static_;
     addElementForces(X, omega, R, jacobian);

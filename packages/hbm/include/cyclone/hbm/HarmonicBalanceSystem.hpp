@@ -168,6 +168,7 @@ private:
   void applyLinearOperator(double omega, const Eigen::VectorXd& X, Eigen::VectorXd& R) const;
   /// The per-harmonic operator as a dense numUnknowns square matrix.
   Eigen::MatrixXd harmonicOperator(double omega, bool inverse) const;
+  void harmonicOperatorInto(double omega, bool inverse, Eigen::MatrixXd& B) const;  // B's storage kept
   Eigen::MatrixXd M_, C_, K_;
   Eigen::MatrixXd C0_, Cnext0_;  // the damping given, before setDampingScale
   double dampingScale_ = 1.0;
