@@ -5,16 +5,27 @@
 
 #include <cerrno>
 #include <cstring>
+#include <map>
+#include <mutex>
 
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::cyclic {
 
 // An open, already unlinked file: its blocks are freed when the descriptor is closed.
+// Shared by every store of the process that moved to the same directory; each write
+// claims its range at the end under the lock and then writes without it (pwrite).
 struct ModeShapes::File {
   int fd = -1;
   std::string directory;
-  std::size_t shapes = 0;  // written so far
+  std::mutex lock;
+  std::size_t end = 0;  // bytes claimed so far
+  std::size_t claim(std::size_t bytes) {
+    const std::lock_guard<std::mutex> guard(lock);
+    const std::size_t at = end;
+    end += bytes;
+    return at;
+  }
   ~File() {
     if (fd >= 0) ::close(fd);
   }
@@ -56,8 +67,9 @@ void ModeShapes::push_back(const ModeShape& shape) {
   for (const auto& node : shape.real) values.insert(values.end(), node.begin(), node.end());
   for (const auto& node : shape.imag) values.insert(values.end(), node.begin(), node.end());
   if (file_) {
-    if (file_.use_count() > 1) throw Error("ModeShapes: a store that shares its scratch file is read-only");
-    writeAll(file_->fd, values.data(), values.size(), count_ * valuesPerShape() * sizeof(double), file_->directory);
+    const std::size_t at = file_->claim(values.size() * sizeof(double));
+    writeAll(file_->fd, values.data(), values.size(), at, file_->directory);
+    offsets_.push_back(at);
   } else {
     memory_.insert(memory_.end(), values.begin(), values.end());
   }
@@ -70,7 +82,7 @@ ModeShape ModeShapes::operator[](std::size_t i) const {
   const double* values = nullptr;
   if (file_) {
     read.resize(valuesPerShape());
-    readAll(file_->fd, read.data(), read.size(), i * valuesPerShape() * sizeof(double), file_->directory);
+    readAll(file_->fd, read.data(), read.size(), offsets_[i], file_->directory);
     values = read.data();
   } else {
     values = memory_.data() + i * valuesPerShape();
@@ -86,17 +98,40 @@ ModeShape ModeShapes::operator[](std::size_t i) const {
   return s;
 }
 
-void ModeShapes::moveToScratchFile(const std::string& directory) {
-  if (file_) return;
-  auto file = std::make_shared<File>();
-  file->directory = directory.empty() ? std::string(".") : directory;
-  std::string path = file->directory + "/cyclone-mode-shapes-XXXXXX";
+namespace {
+
+// The process's scratch file in a directory, made when no store holds one there.
+std::shared_ptr<ModeShapes::File> scratchFileIn(const std::string& directory) {
+  static std::mutex lock;
+  static std::map<std::string, std::weak_ptr<ModeShapes::File>> files;
+  const std::lock_guard<std::mutex> guard(lock);
+  auto& slot = files[directory];
+  if (auto file = slot.lock()) return file;
+  auto file = std::make_shared<ModeShapes::File>();
+  file->directory = directory;
+  std::string path = directory + "/cyclone-mode-shapes-XXXXXX";
   file->fd = ::mkstemp(path.data());
   if (file->fd < 0)
-    throw Error("cannot create a scratch file for mode shapes in " + file->directory + ": " + std::strerror(errno));
+    throw Error("cannot create a scratch file for mode shapes in " + directory + ": " + std::strerror(errno));
   ::unlink(path.c_str());  // nameless from now on: gone with the descriptor, also after a crash
-  writeAll(file->fd, memory_.data(), memory_.size(), 0, file->directory);
+  slot = file;
+  return file;
+}
+
+}  // namespace
+
+void ModeShapes::moveToScratchFile(const std::string& directory) {
+  if (file_) return;
+  auto file = scratchFileIn(directory.empty() ? std::string(".") : directory);
+  const std::size_t bytes = valuesPerShape() * sizeof(double);
+  std::vector<std::size_t> offsets;
+  for (std::size_t i = 0; i < count_; ++i) {
+    const std::size_t at = file->claim(bytes);
+    writeAll(file->fd, memory_.data() + i * valuesPerShape(), valuesPerShape(), at, file->directory);
+    offsets.push_back(at);
+  }
   file_ = std::move(file);
+  offsets_ = std::move(offsets);
   std::vector<double>().swap(memory_);
 }
 

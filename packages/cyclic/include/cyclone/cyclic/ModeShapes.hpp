@@ -27,7 +27,6 @@ public:
   bool empty() const { return count_ == 0; }
   /// Appends a shape (an empty imaginary part: zero, not stored). Every shape of one
   /// store has the same number of nodes and either has an imaginary part or none.
-  /// Copies of a store in a scratch file share the file and are read-only.
   void push_back(const ModeShape& shape);
   /// Shape i (read back from the scratch file when there); the imaginary part has the
   /// real part's size, zero when none is stored.
@@ -35,18 +34,22 @@ public:
   std::size_t numNodes() const { return nodes_; }
 
   /// Moves the shapes held in memory, and every later one, into an unnamed file in
-  /// `directory` (removed when the last copy of this store goes). Error naming the
-  /// directory when it cannot be written.
+  /// `directory`: one file per directory for every store of the process (a sweep over
+  /// many speeds and nodal diameters holds one descriptor), removed when the last store
+  /// using it goes. Copies of a store read the same shapes; what a copy appends goes to
+  /// its own place. Error naming the directory when it cannot be written.
   void moveToScratchFile(const std::string& directory);
   bool inScratchFile() const { return file_ != nullptr; }
+
+  struct File;  ///< a scratch file (ModeShapes.cpp)
 
 private:
   std::size_t valuesPerShape() const { return (withImag_ ? 6 : 3) * nodes_; }
   std::size_t nodes_ = 0, count_ = 0;
   bool withImag_ = false;
   std::vector<double> memory_;  // count_ x valuesPerShape(), when not in a file
-  struct File;
   std::shared_ptr<File> file_;
+  std::vector<std::size_t> offsets_;  // each shape's place in the file (bytes)
 };
 
 }  // namespace cyclone::cyclic
