@@ -33,26 +33,27 @@ struct ModeShapes::File {
 
 namespace {
 
-void writeAll(int fd, const double* data, std::size_t count, std::size_t offset, const std::string& directory) {
-  const char* bytes = reinterpret_cast<const char*>(data);
+// The whole range through pwrite or pread, which may move fewer bytes than asked.
+template <class Bytes, class Transfer>
+void transferAll(Transfer transfer, int fd, Bytes* bytes, std::size_t count, std::size_t offset,
+                 const char* what, const std::string& directory) {
   std::size_t left = count * sizeof(double), at = 0;
   while (left > 0) {
-    const ssize_t n = ::pwrite(fd, bytes + at, left, off_t(offset + at));
+    const ssize_t n = transfer(fd, bytes + at, left, off_t(offset + at));
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error("cannot write the mode shapes' scratch file in " + directory + ": " + std::strerror(errno));
+    if (n <= 0)
+      throw Error(std::string("cannot ") + what + " the mode shapes' scratch file in " + directory + ": " +
+                  std::strerror(errno));
     left -= std::size_t(n), at += std::size_t(n);
   }
 }
 
+void writeAll(int fd, const double* data, std::size_t count, std::size_t offset, const std::string& directory) {
+  transferAll(::pwrite, fd, reinterpret_cast<const char*>(data), count, offset, "write", directory);
+}
+
 void readAll(int fd, double* data, std::size_t count, std::size_t offset, const std::string& directory) {
-  char* bytes = reinterpret_cast<char*>(data);
-  std::size_t left = count * sizeof(double), at = 0;
-  while (left > 0) {
-    const ssize_t n = ::pread(fd, bytes + at, left, off_t(offset + at));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error("cannot read the mode shapes' scratch file in " + directory + ": " + std::strerror(errno));
-    left -= std::size_t(n), at += std::size_t(n);
-  }
+  transferAll(::pread, fd, reinterpret_cast<char*>(data), count, offset, "read", directory);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
@@ -47,8 +48,13 @@ void writeAtomically(const std::string& path, Write&& write) {
 Eigen::MatrixXd familyMac(const cyclic::NodalDiameterModes& a, const cyclic::NodalDiameterModes& b) {
   const int fa = int(a.frequenciesHz.size()) / a.copies, fb = int(b.frequenciesHz.size()) / b.copies;
   Eigen::MatrixXd mac(fa, fb);
-  for (int i = 0; i < fa; ++i)
-    for (int j = 0; j < fb; ++j) mac(i, j) = subspaceMac(familyShapes(a, i), familyShapes(b, j));
+  // Each family's shapes read once (from the scratch file where the sweep keeps them).
+  std::vector<Eigen::MatrixXd> second;
+  for (int j = 0; j < fb; ++j) second.push_back(familyShapes(b, j));
+  for (int i = 0; i < fa; ++i) {
+    const Eigen::MatrixXd first = familyShapes(a, i);
+    for (int j = 0; j < fb; ++j) mac(i, j) = subspaceMac(first, second[std::size_t(j)]);
+  }
   return mac;
 }
 
