@@ -3,8 +3,9 @@
 // preload as the demo since session 31, 20 N at mid-blade) by harmonic balance with harmonics 0..H. Prints the
 // unknowns, the time of one residual, one residual + Jacobian and one dense LU of
 // the bordered Jacobian at the band's start, then the band traced with the disc's
-// continuation defaults: points, Newton iterations, and the time split into
-// residuals, Jacobians and factorisations.
+// continuation defaults and again with an LU at every Newton step (no kept factors):
+// points, Newton iterations, and the time split into residuals, Jacobians,
+// factorisations and solves.
 //   build/regression/disc_hbm_benchmark [H (5)] [from Hz (1300)] [to Hz (1330)]
 //                                       [mesh size (6)] [cache dir (disc_benchmark_models)] [preload N (500)]
 // The demo's whole curve at its converged H: disc_hbm_benchmark 6 349.443 1727.63
@@ -61,20 +62,27 @@ int main(int argc, char** argv) {
   std::printf("default disc, EO 3, harmonics 0..%d: %d unknowns; residual %.4f s, Jacobian %.4f s, LU %.4f s\n", H, n,
               residual, jacobian, factor);
 
-  disc::DiscSweepOptions sweep;
-  sweep.harmonicsCheckTo = -1;
-  sweep.stability = response::ForcedResponseSetup::Stability::Never;
-  sweep.fallback.reset();
-  std::vector<std::string> warnings;
-  t.restart();
-  const auto curve = disc::sweepDisc(setup, fromHz, toHz, sweep, warnings);
-  const double secs = t.seconds();
-  const auto& b = curve.branch;
-  const auto& s = b.statistics;
-  std::printf("%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; residuals "
-              "%.2f s (%d), Jacobians %.2f s (%d), factorisations %.2f s (%d); peak %.6g mm at %.3f Hz; %s\n",
-              fromHz, toHz, b.points.size(), secs, secs / std::max<std::size_t>(1, b.points.size()), s.newtonIterations,
-              s.rejectedSteps, s.residualSeconds, s.residuals, s.jacobianSeconds, s.jacobians, s.factorSeconds,
-              s.factorizations, curve.peak, curve.peakOmega / (2 * M_PI), b.stopReason.c_str());
+  // The disc's defaults (kept factors, GMRES), then an LU at every Newton step.
+  for (const bool keep : {true, false}) {
+    disc::DiscSweepOptions sweep;
+    sweep.harmonicsCheckTo = -1;
+    sweep.stability = response::ForcedResponseSetup::Stability::Never;
+    sweep.fallback.reset();
+    sweep.continuation.reuseFactorizations = keep;
+    std::vector<std::string> warnings;
+    t.restart();
+    const auto curve = disc::sweepDisc(setup, fromHz, toHz, sweep, warnings);
+    const double secs = t.seconds();
+    const auto& b = curve.branch;
+    const auto& s = b.statistics;
+    std::printf("%s\n%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; "
+                "residuals %.2f s (%ld), Jacobians %.2f s (%ld), factorisations %.2f s (%ld), solves %.2f s (%ld steps "
+                "with kept factors, %ld GMRES iterations); peak %.6g mm at %.3f Hz; %s\n",
+                keep ? "defaults (kept factors)" : "an LU at every Newton step", fromHz, toHz, b.points.size(), secs,
+                secs / std::max<std::size_t>(1, b.points.size()), s.newtonIterations, s.rejectedSteps,
+                s.residualSeconds, s.residuals, s.jacobianSeconds, s.jacobians, s.factorSeconds, s.factorizations,
+                s.solveSeconds, s.reusedFactorizations, s.krylovIterations, curve.peak,
+                curve.peakOmega / (2 * M_PI), b.stopReason.c_str());
+  }
   return 0;
 }

@@ -8,8 +8,9 @@
 // blocks), the dense LU of the Jacobian, and then a whole resonance curve
 // traced with default settings (only the range given) by each continuation
 // engine, with its points, Newton iterations and the time split into residuals,
-// Jacobians and factorisations; the predictor-corrector with its default LU (single
-// precision refined in double) and with the LU in double, in the same run.
+// Jacobians and factorisations; the predictor-corrector with its defaults (kept factors
+// and GMRES, single-precision LU refined in double), with an LU at every Newton step,
+// and with that LU in double, in the same run.
 //   build/regression/hbm_benchmark [max H (default 7)]
 #include <cmath>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "FrictionSector.hpp"
 
 using namespace cyclone;
 
@@ -29,34 +31,9 @@ namespace {
 
 constexpr int kNodes = 28, kDofs = 3 * kNodes, kContacts = 27;
 
-// A sector model with the spectrum of a reduced bladed sector: M = I and
-// K = Q diag(w_j^2) Q^T with w_j from 1 to 20 (rad/s, scaled units), Q a
-// fixed random orthogonal matrix; 0.3 % modal damping.
+// The sector: FrictionSector.hpp (28 nodes, 27 contacts).
 std::unique_ptr<hbm::HarmonicBalanceSystem> sector(int H, int samples) {
-  std::mt19937 rng(2024);
-  std::normal_distribution<double> g;
-  Eigen::MatrixXd A(kDofs, kDofs);
-  for (int i = 0; i < A.size(); ++i) A.data()[i] = g(rng);
-  const Eigen::MatrixXd Q = A.householderQr().householderQ();
-  Eigen::VectorXd w2(kDofs);
-  for (int j = 0; j < kDofs; ++j) w2(j) = std::pow(1.0 + 19.0 * j / (kDofs - 1), 2);
-  const Eigen::MatrixXd K = Q * w2.asDiagonal() * Q.transpose();
-  const Eigen::MatrixXd C = Q * (2 * 0.003 * w2.cwiseSqrt()).asDiagonal() * Q.transpose();
-  auto s = std::make_unique<hbm::HarmonicBalanceSystem>(Eigen::MatrixXd::Identity(kDofs, kDofs), C, K,
-                                                        hbm::HarmonicSet::upTo(H), samples);
-  hbm::CyclicCoupling c;
-  c.sectors = 24, c.engineOrder = 3;
-  s->setCyclic(c);
-  hbm::FrictionContactParameters p;
-  p.tangentialDirections = 2, p.kt = 2.0, p.kn = 2.0, p.mu = 0.4, p.preload = 0.02;
-  for (int k = 1; k <= kContacts; ++k) {
-    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(kDofs, 3);
-    W.block(3 * k, 0, 3, 3).setIdentity();
-    s->addElement(std::make_shared<hbm::FrictionContact>(p), W, -W);
-  }
-  s->addExcitation(0, 1, 0.05);
-  s->addExcitation(1, 1, 0.02);
-  return s;
+  return test_support::frictionSector(kNodes, H, samples, 2024);
 }
 
 }  // namespace
@@ -125,14 +102,18 @@ int main(int argc, char** argv) {
       s->residual(X, p, R, &J);
     };
     using Engine = continuation::ContinuationOptions::Engine;
-    for (const int run : {0, 1, 2}) {
-      const Engine engine = run == 2 ? Engine::Loca : Engine::PredictorCorrector;
+    for (const int run : {0, 1, 2, 3}) {
+      const Engine engine = run == 3 ? Engine::Loca : Engine::PredictorCorrector;
       // Each engine with its own default steps (their units differ).
       continuation::ContinuationOptions o =
           engine == Engine::Loca ? continuation::locaOptions() : continuation::ContinuationOptions{};
       o.from = 0.9, o.to = 1.6;
-      o.mixedPrecisionLu = run == 0;
-      const char* name = run == 0 ? "predictor-corrector" : run == 1 ? "the same, LU in double" : "LOCA";
+      o.mixedPrecisionLu = run <= 1;
+      o.reuseFactorizations = run == 0;
+      const char* name = run == 0   ? "predictor-corrector"
+                         : run == 1 ? "the same, an LU per step"
+                         : run == 2 ? "LU per step, in double"
+                                    : "LOCA";
       Timer t;
       const auto branch = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
       const double secs = t.seconds();
@@ -140,16 +121,17 @@ int main(int argc, char** argv) {
       for (const auto& pt : branch.points)
         if (s->amplitude(pt.x, 0, 1) > peak) peak = s->amplitude(pt.x, 0, 1), peakW = pt.parameter;
       const auto& st = branch.statistics;
-      std::printf("  H = %d, N = %d, %-22s: %4zu points in %6.2f s (%.4f s per point), peak |x1| of DOF 0 %.5f at "
+      std::printf("  H = %d, N = %d, %-24s: %4zu points in %6.2f s (%.4f s per point), peak |x1| of DOF 0 %.5f at "
                   "%.4f; %s\n",
                   H, N, name, branch.points.size(), secs,
                   secs / std::max<std::size_t>(1, branch.points.size()), peak, peakW, branch.stopReason.c_str());
       if (engine == Engine::PredictorCorrector)
         std::printf("      %d Newton iterations (%.2f per point), %d steps cut; residuals %.2f s, Jacobians %.2f s, "
-                    "factorisations %.2f s (%ld, %ld again in double), solves %.2f s\n",
+                    "factorisations %.2f s (%ld, %ld again in double), solves %.2f s (%ld steps with kept factors, "
+                    "%ld GMRES iterations)\n",
                     st.newtonIterations, double(st.newtonIterations) / std::max<std::size_t>(1, branch.points.size()),
                     st.rejectedSteps, st.residualSeconds, st.jacobianSeconds, st.factorSeconds, st.factorizations,
-                    st.doubleFallbacks, st.solveSeconds);
+                    st.doubleFallbacks, st.solveSeconds, st.reusedFactorizations, st.krylovIterations);
     }
   }
   return 0;

@@ -104,3 +104,71 @@ TEST(DenseLu, MixedPrecisionFactorsInDoubleWhereSinglePrecisionCannotServe) {
   Z.col(4).setZero();
   EXPECT_FALSE(DenseLu(Z, DenseLu::Precision::Mixed).solve(b).allFinite());
 }
+
+// Factors kept for a later matrix (a Newton corrector's next Jacobian): the solves with
+// the new matrix iterate (GMRES preconditioned by the kept factors) to the same
+// backward error as its own LU, in both precisions and both transposes.
+TEST(DenseLu, KeptFactorsSolveANearbyMatrixToADoubleLusAccuracy) {
+  for (const auto precision : {DenseLu::Precision::Mixed, DenseLu::Precision::Double}) {
+    const int n = 300;
+    const Eigen::MatrixXd A0 = withCondition(n, 1e3, 11);
+    std::srand(12);
+    // Entries of 1e-6 beside a smallest singular value of 1e-3: ||A0^-1 (A1 - A0)|| ~ 0.03.
+    const Eigen::MatrixXd A1 = A0 + 1e-6 * Eigen::MatrixXd::Random(n, n);
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    DenseLu lu(A0, precision);
+    Eigen::MatrixXd taken = A1;
+    ASSERT_TRUE(lu.reuseFactorsFor(taken));
+    EXPECT_TRUE(lu.factorsAreStale());
+    for (bool transposed : {false, true}) {
+      const Eigen::VectorXd x = transposed ? lu.solveTransposed(b) : lu.solve(b);
+      const Eigen::MatrixXd At = transposed ? Eigen::MatrixXd(A1.transpose()) : A1;
+      EXPECT_LT(backwardError(At, x, b), 2.2e-16 * std::sqrt(double(n))) << "transposed " << transposed;
+    }
+    EXPECT_TRUE(lu.factorsAreStale());  // served by the kept factors, not a new LU
+    EXPECT_EQ(lu.staleRefactorizations(), 0);
+    EXPECT_GT(lu.krylovIterations(), 2);   // the kept factors alone are not the answer
+    EXPECT_LE(lu.krylovIterations(), 2 * DenseLu::maxKrylovIterations);
+  }
+}
+
+// Kept factors of a matrix unlike the new one: GMRES does not converge within its
+// limit, the new matrix is factored and the answer is its LU's. Where there are no
+// factors of the size, nothing is taken.
+TEST(DenseLu, KeptFactorsOfAnUnrelatedMatrixEndInItsOwnLu) {
+  const int n = 300;
+  const Eigen::MatrixXd A0 = withCondition(n, 1e3, 15), A1 = withCondition(n, 1e3, 16);
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+  DenseLu lu(A0);
+  Eigen::MatrixXd taken = A1;
+  ASSERT_TRUE(lu.reuseFactorsFor(taken));
+  const Eigen::VectorXd x = lu.solve(b);
+  EXPECT_EQ(lu.staleRefactorizations(), 1);
+  EXPECT_EQ(lu.krylovIterations(), DenseLu::maxKrylovIterations);
+  EXPECT_FALSE(lu.factorsAreStale());
+  EXPECT_LT(backwardError(A1, x, b), 2.2e-16 * std::sqrt(double(n)));
+
+  DenseLu none;
+  Eigen::MatrixXd other = A1;
+  EXPECT_FALSE(none.reuseFactorsFor(other));
+  EXPECT_EQ(other, A1);  // not taken
+  Eigen::MatrixXd smaller = A1.topLeftCorner(10, 10);
+  EXPECT_FALSE(lu.reuseFactorsFor(smaller));
+}
+
+// Kept factors that needed more iterations than they are worth are not kept again.
+TEST(DenseLu, KeptFactorsThatCostTooManyIterationsAreNotKeptAgain) {
+  const int n = 300;
+  const Eigen::MatrixXd A0 = withCondition(n, 1e3, 17);
+  std::srand(18);
+  const Eigen::MatrixXd A1 = A0 + 3e-5 * Eigen::MatrixXd::Random(n, n);  // ||A0^-1 dA|| ~ 1
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+  DenseLu lu(A0);
+  Eigen::MatrixXd taken = A1;
+  ASSERT_TRUE(lu.reuseFactorsFor(taken));
+  lu.solve(b);
+  ASSERT_EQ(lu.staleRefactorizations(), 0);
+  ASSERT_GT(lu.krylovIterations(), DenseLu::staleIterationBudget(n));
+  Eigen::MatrixXd next = A1;
+  EXPECT_FALSE(lu.reuseFactorsFor(next));
+}

@@ -8,6 +8,7 @@
 
 #include "SingleTermOscillator.hpp"
 #include "cyclone/continuation/TraceCheckpoint.hpp"
+#include "FrictionSector.hpp"
 
 using namespace cyclone;
 using continuation::TraceState;
@@ -97,6 +98,36 @@ TEST(TraceCheckpoint, AResumedTraceIsTheUninterruptedOne) {
   }
   std::printf("%zu points; %zu saved states; resumed from %d of them to the same curve bit for bit\n",
               reference.points.size(), states, resumed);
+}
+
+// Where the continuation keeps its factors from step to step (211 unknowns), the
+// states are saved only where it drops them (every few points), so a trace continued
+// from one is still the uninterrupted trace to the bit.
+TEST(TraceCheckpoint, AResumedTraceWithKeptFactorsIsTheUninterruptedOne) {
+  const auto sector = test_support::frictionSector(10, 3, 64, 7);
+  const auto problem = test_support::frictionSectorProblem(*sector);
+  auto o = rangeOnly();
+  o.from = 0.9, o.to = 1.6;
+  const Eigen::VectorXd start = sector->linearizedSolution(o.from);
+  const auto reference = continuation::traceBranch(problem, start, o);
+  ASSERT_TRUE(reference.finished) << reference.stopReason;
+  ASSERT_GT(reference.statistics.reusedFactorizations, 0);
+  auto recorder = std::make_shared<MemoryCheckpoints>();
+  recorder->intervalSeconds = 0;
+  o.checkpoints = recorder;
+  const auto saved = continuation::traceBranch(problem, start, o);
+  expectSameBranch(saved, reference);
+  const std::string key = continuation::traceKey(problem, start, o);
+  ASSERT_GT(recorder->history.size(), 4u);
+  const std::size_t states = recorder->history.size() - 1;
+  for (std::size_t at : {std::size_t(1), states / 2, states - 1}) {
+    SCOPED_TRACE("resumed from state " + std::to_string(at));
+    auto seeded = std::make_shared<MemoryCheckpoints>();
+    seeded->stored[key] = recorder->history[at];
+    auto oSeeded = o;
+    oSeeded.checkpoints = seeded;
+    expectSameBranch(continuation::traceBranch(problem, start, oSeeded), reference);
+  }
 }
 
 TEST(TraceCheckpoint, AFinishedTraceIsReadBackWithoutComputing) {

@@ -113,14 +113,48 @@ private:
     lu.computeTaking(A, o_.mixedPrecisionLu ? DenseLu::Precision::Auto : DenseLu::Precision::Double);
     stats().factorSeconds += t.seconds();
   }
-  // lu's solve, timed; a solve that made the factorisation again in double (DenseLu's
-  // fallback from single precision) is counted with the factorisations.
+  // The Newton step's factors: the ones kept from the iteration or point before where
+  // they still serve (DenseLu::reuseFactorsFor: the solves iterate with them), else A's.
+  void factorOrReuse(Eigen::MatrixXd& A, Correction& c) {
+    if (reusingFactors()) {
+      if (!c.factored) {
+        c.lu = std::move(kept_);
+        kept_ = DenseLu();
+      }
+      if (c.lu.reuseFactorsFor(A)) {
+        ++stats().reusedFactorizations;
+        return;
+      }
+    }
+    factor(A, c.lu);
+  }
+  // Every kFreshFactorsEvery points the kept factors are dropped and the next step
+  // factors its own: the trace's state there holds no factors, so a trace saved there
+  // and continued is the same, to the bit, as one that ran through (the checkpoints
+  // are saved only there).
+  static constexpr std::size_t kFreshFactorsEvery = 8;
+  bool reusingFactors() const { return o_.reuseFactorizations && n_ + 1 >= DenseLu::reuseFrom; }
+  bool atFreshFactors() const { return !reusingFactors() || branch_.points.size() % kFreshFactorsEvery == 0; }
+  // The factors of a finished correction kept for the next one.
+  void keepFactors(Correction& c) {
+    if (!c.factored || !reusingFactors()) return;
+    kept_ = std::move(c.lu);
+    c.factored = false;
+  }
+  // lu's solve, timed; a solve that made the factorisation again (in double: DenseLu's
+  // fallback from single precision; or of a matrix whose kept factors did not serve)
+  // is counted with the factorisations.
   Eigen::VectorXd solve(const DenseLu& lu, const Eigen::VectorXd& rhs) {
-    const int before = lu.doubleFallbacks();
+    const int before = lu.doubleFallbacks(), refactoredBefore = lu.staleRefactorizations();
+    const long krylovBefore = lu.krylovIterations();
     Timer t;
     Eigen::VectorXd x = lu.solve(rhs);
     const double seconds = t.seconds();
-    if (lu.doubleFallbacks() > before) {
+    stats().krylovIterations += lu.krylovIterations() - krylovBefore;
+    if (lu.staleRefactorizations() > refactoredBefore) {
+      ++stats().factorizations;
+      stats().factorSeconds += seconds;
+    } else if (lu.doubleFallbacks() > before) {
       ++stats().doubleFallbacks;
       stats().factorSeconds += seconds;
     } else {
@@ -195,6 +229,7 @@ private:
   const ContinuationProblem& problem_;
   const ContinuationOptions& o_;
   Eigen::MatrixXd jacobianWork_;
+  DenseLu kept_;  // the last correction's factors (reuseFactorizations)
   Branch& branch_;
   const int n_;
   Metric metric_;
@@ -281,7 +316,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
       A.bottomLeftCorner(1, n_) = ((z.x - z0.x).cwiseProduct(metric_.w) / ds).transpose();
       A(n_, n_) = (z.p - z0.p) / (sp2 * ds);
     }
-    factor(A, c.lu);
+    factorOrReuse(A, c);
     c.factored = true;
     rhs << -F, -g;
     const Eigen::VectorXd d = solve(c.lu, rhs);
@@ -383,7 +418,8 @@ void Tracer::refinePeak(const Point& t0) {
     const double tooClose = 1e-3 * (b - a);
     if (!(s > a + tooClose && s < b - tooClose) || std::abs(s - m) < 1e-2 * tooClose)
       s = m - a > b - m ? m - 0.381966 * (m - a) : m + 0.381966 * (b - m);
-    const Correction c = correct(Constraint::Plane, z0, t0, s);
+    Correction c = correct(Constraint::Plane, z0, t0, s);
+    keepFactors(c);
     if (!c.converged) break;
     const double gs = problem_.measure(c.z.x);
     if (gs > fm) {
@@ -519,7 +555,9 @@ void Tracer::progress() {
 }
 
 void Tracer::save(const Point& t, double ds) {
-  if (!checkpointing_ || !checkpointing_->save || sinceSave_.seconds() < checkpointing_->intervalSeconds) return;
+  if (!checkpointing_ || !checkpointing_->save || sinceSave_.seconds() < checkpointing_->intervalSeconds ||
+      !atFreshFactors())
+    return;
   TraceState s;
   s.branch = branch_;
   s.branch.statistics.seconds = secondsBefore_ + total_.seconds();
@@ -616,6 +654,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
 Tracer::StepOutcome Tracer::correctStep(const Point& z, const Point& t, double ds, Correction& c, Point& t1,
                                         double& cosTurn) {
   for (Constraint kind : {Constraint::Plane, Constraint::Sphere}) {
+    keepFactors(c);
     c = correct(kind, z, t, ds);
     if (!c.converged) continue;
     const Point chord = metric_.difference(c.z, z);
@@ -750,6 +789,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
   while (true) {
     if (int(branch_.points.size()) < o_.maxSteps) {
       progress();
+      if (atFreshFactors()) kept_ = DenseLu();
       save(t, ds);
       if (passCreep(z, t, dir)) {
         ds = cornerStep_;
@@ -761,6 +801,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     Point t1;
     double cosTurn = 1;
     const StepOutcome outcome = correctStep(z, t, ds, c, t1, cosTurn);
+    keepFactors(c);
     if (outcome == StepOutcome::Retract) {
       retract(z, t, ds);
       continue;
@@ -794,6 +835,9 @@ void Tracer::logSummary() const {
       << "), factorisations " << s.factorSeconds << " s (" << s.factorizations;
   if (s.doubleFallbacks > 0) msg << ", " << s.doubleFallbacks << " again in double";
   msg << "), solves " << s.solveSeconds << " s";
+  if (s.reusedFactorizations > 0)
+    msg << " (" << s.reusedFactorizations << " Newton steps with kept factors, " << s.krylovIterations
+        << " GMRES iterations)";
   log::info(msg.str());
 }
 

@@ -78,6 +78,8 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
     writeLong(h5, "jacobians", st.jacobians);
     writeLong(h5, "factorizations", st.factorizations);
     writeLong(h5, "double_fallbacks", st.doubleFallbacks);
+    writeLong(h5, "reused_factorizations", st.reusedFactorizations);
+    writeLong(h5, "krylov_iterations", st.krylovIterations);
     writeDoubleAttribute(h5, "residual_seconds", st.residualSeconds);
     writeDoubleAttribute(h5, "jacobian_seconds", st.jacobianSeconds);
     writeDoubleAttribute(h5, "factor_seconds", st.factorSeconds);
@@ -136,6 +138,8 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
     st.jacobians = readLong(h5, "jacobians");
     st.factorizations = readLong(h5, "factorizations");
     st.doubleFallbacks = readLong(h5, "double_fallbacks");
+    st.reusedFactorizations = readLong(h5, "reused_factorizations");
+    st.krylovIterations = readLong(h5, "krylov_iterations");
     st.residualSeconds = readDoubleAttribute(h5, "residual_seconds");
     st.jacobianSeconds = readDoubleAttribute(h5, "jacobian_seconds");
     st.factorSeconds = readDoubleAttribute(h5, "factor_seconds");

@@ -67,6 +67,11 @@ struct ContinuationOptions {
   /// iterates to rounding, the LU about 1.9x faster; a matrix single precision cannot
   /// serve is factored again in double (ContinuationStatistics::doubleFallbacks).
   bool mixedPrecisionLu = true;
+  /// PredictorCorrector: a Newton step's bordered Jacobian solved with the last
+  /// factors kept (of the iteration or point before) by preconditioned GMRES to a double
+  /// LU's accuracy, and factored only where that does not converge or stops paying
+  /// (DenseLu::reuseFactorsFor): the same iterates to rounding, fewer LUs.
+  bool reuseFactorizations = true;
   /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
@@ -111,6 +116,10 @@ struct ContinuationStatistics {
   /// Factorisations made again in double where the single-precision LU's refinement
   /// did not reach a double LU's accuracy (DenseLu); their time is in factorSeconds.
   long doubleFallbacks = 0;
+  /// Newton steps solved with kept factors (reuseFactorizations), and their GMRES
+  /// iterations (their time is in solveSeconds; a factorisation they ended in is counted
+  /// with the factorisations).
+  long reusedFactorizations = 0, krylovIterations = 0;
   double residualSeconds = 0, jacobianSeconds = 0, factorSeconds = 0, solveSeconds = 0, seconds = 0;
 };
 
