@@ -1,10 +1,5 @@
 #include "CalculixCyclic.hpp"
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "MeasuredCommand.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
 
 namespace cyclone::regression {
@@ -25,22 +21,6 @@ std::string nodeList(const std::string& name, const std::vector<long long>& ids)
   s << "*NSET, NSET=" << name << "\n";
   for (std::size_t i = 0; i < ids.size(); ++i) s << ids[i] << ((i % 10 == 9 || i + 1 == ids.size()) ? "\n" : ", ");
   return s.str();
-}
-
-// Runs a shell command in place of a forked child and returns its wall time and peak memory.
-void runTimed(const std::string& command, CalculixCyclicRun& run) {
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  if (pid < 0 || wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("command failed: " + command);
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.peakMemoryMb = usage.ru_maxrss / 1024.0;
 }
 
 }  // namespace
@@ -83,9 +63,12 @@ CalculixCyclicRun runCalculixCyclic(const mesh::Mesh& mesh, const CalculixCyclic
   deck.close();
   const std::string t = std::to_string(c.threads);
   CalculixCyclicRun run;
-  runTimed("cd '" + dir.string() + "' && OMP_NUM_THREADS=" + t + " CCX_NPROC_EQUATION_SOLVER=" + t +
-               " CCX_NPROC_STIFFNESS=" + t + " CCX_NPROC_RESULTS=" + t + " exec ccx -i job > ccx.log 2>&1",
-           run);
+  const MeasuredCommand measured =
+      runMeasured("cd '" + dir.string() + "' && OMP_NUM_THREADS=" + t + " CCX_NPROC_EQUATION_SOLVER=" + t +
+                  " CCX_NPROC_STIFFNESS=" + t + " CCX_NPROC_RESULTS=" + t + " exec ccx -i job > ccx.log 2>&1");
+  run.seconds = measured.seconds;
+  run.peakMemoryMb = measured.peakResidentMb;
+  run.peakPssMb = measured.peakTreePssMb;
   std::map<int, std::vector<double>> all;
   std::ifstream dat(dir / "job.dat");
   std::string line;

@@ -31,7 +31,8 @@ struct CalculixCyclicCase {
 struct CalculixCyclicRun {
   std::map<int, std::vector<double>> frequenciesHz;  ///< distinct, per nodal diameter
   double seconds = 0;
-  double peakMemoryMb = 0;
+  double peakMemoryMb = 0;  ///< the kernel's high-water resident memory
+  double peakPssMb = 0;     ///< sampled physical memory (MeasuredCommand.hpp)
 };
 
 /// Throws std::runtime_error naming the log when ccx fails.
