@@ -94,6 +94,26 @@ cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh
   // Each nodal diameter's modes are kept as solved: a killed sweep resumed with --resume
   // reads them back (the directory is emptied at the start of any other run).
   problem.checkpoints = std::make_shared<io::ResultCheckpointDirectory>(outDir + "/checkpoints");
+  // Nodal diameters solved side by side (each thread its own factor): auto takes the
+  // cores this process may use, shared among the ranks.
+  problem.threads = 0;
+  if (m.has("threads")) {
+    bool isCount = true, isAuto = false;
+    int count = 0;
+    try {
+      count = m.getInt("threads", 0);
+    } catch (const InputError&) {
+      isCount = false;
+    }
+    if (!isCount) try {
+        isAuto = m.getString("threads", "") == "auto";
+      } catch (const InputError&) {
+      }
+    if (!isAuto && !(isCount && count >= 1 && count <= 1024))
+      throw InputError(m.where("threads"), (isCount ? std::to_string(count) + ": " : std::string()) +
+                                               "use auto or a count of threads from 1 to 1024");
+    if (isCount) problem.threads = count;
+  }
   const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
   const auto prestress = readPrestressKind(m, "linear");
   const std::string macChoice = m.getString("mac", "none");

@@ -2,7 +2,8 @@
 // same work. The built-in shrouded sector (24 sectors, titanium, bore fixed, fixed
 // shroud) at a fine mesh, NLGEOM prestress at 10 000 rpm, every nodal diameter
 // 0..12 with 5 distinct modes. Cyclone runs as its command line (`cyclone run`) on
-// 1 and 2 MPI ranks; ccx 2.20 (SPOOLES) on the same mesh with 1 and 2 threads and
+// 1 and 2 MPI ranks (a thread each), and on 1 rank with its nodal diameters on 2
+// threads (modal/threads); ccx 2.20 (SPOOLES) on the same mesh with 1 and 2 threads and
 // tight Newton tolerances. Printed: wall time, peak memory (Cyclone: summed over its
 // ranks, from its log; ccx: the kernel's high-water mark), the peak physical memory of
 // the run's process tree (summed PSS sampled every 250 ms, MeasuredCommand.hpp: shared
@@ -55,7 +56,7 @@ regression::MeasuredCommand runShell(const std::string& command) {
 
 // Cyclone's scene: the same sector and case as the ccx deck.
 void writeScene(const fs::path& path, const fs::path& out, double meshSize, const std::string& eigenSolver,
-                const std::string& massQuadrature) {
+                const std::string& massQuadrature, int threads) {
   std::ofstream f(path);
   f << "cyclone:\n  analysis: [modal]\n  output_directory: " << out.string()
     << "\n  mesh:\n    source: shrouded_sector\n    shrouded_sector:\n      sectors: " << kSectors
@@ -63,15 +64,17 @@ void writeScene(const fs::path& path, const fs::path& out, double meshSize, cons
     << "\n  material:\n    mass_quadrature: " << massQuadrature
     << "\n  constraints:\n    fixed_node_sets: [bore]\n  loads:\n    speed_rpm: " << kRpm
     << "\n  cyclic:\n    configuration: fixed_shroud\n  modal:\n    modes_per_nd: " << kModes
-    << "\n    speeds_rpm: [" << kRpm << "]\n    prestress: nonlinear\n    eigen_solver: " << eigenSolver << "\n";
+    << "\n    speeds_rpm: [" << kRpm << "]\n    prestress: nonlinear\n    eigen_solver: " << eigenSolver
+    << "\n    threads: " << threads << "\n";
 }
 
 Run runCyclone(const std::string& name, const std::string& launcher, const fs::path& work, double meshSize,
-               const std::string& eigenSolver = "shift_invert", const std::string& massQuadrature = "exact") {
+               const std::string& eigenSolver = "shift_invert", const std::string& massQuadrature = "exact",
+               int threads = 1) {
   Run run;
   run.name = name;
   const fs::path out = work / name, scene = work / (name + ".yaml"), log = work / (name + ".log");
-  writeScene(scene, out, meshSize, eigenSolver, massQuadrature);
+  writeScene(scene, out, meshSize, eigenSolver, massQuadrature, threads);
   const auto measured =
       runShell(launcher + " " + CYCLONE_EXECUTABLE + " run " + scene.string() + " > " + log.string() + " 2>&1");
   run.seconds = measured.seconds;
@@ -175,6 +178,9 @@ int main(int argc, char** argv) {
                             std::string(MPIEXEC_EXECUTABLE) + " -np 2 --oversubscribe -x OPENBLAS_NUM_THREADS", work,
                             meshSize));
   std::printf("  %-12s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
+  // One process, the nodal diameters on 2 threads (each its own factor).
+  runs.push_back(runCyclone("cyclone_np1_2threads", "", work, meshSize, "shift_invert", "exact", 2));
+  std::printf("  %-12s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
   for (int threads : {1, 2}) {
     runs.push_back(runCcx("ccx_" + std::to_string(threads) + "threads", threads, mesh, work));
     std::printf("  %-12s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
@@ -183,8 +189,8 @@ int main(int argc, char** argv) {
   // frequencies at ccx's own discretisation (docs/verification.md).
   runs.push_back(runCyclone("cyclone_np1_ccx_mass_rule", "", work, meshSize, "shift_invert", "stiffness_rule"));
   std::printf("  %-12s %7.1f s\n", runs.back().name.c_str(), runs.back().seconds);
-  const Run& reference = runs[3];
-  double ccxBest = std::min(runs[2].seconds, runs[3].seconds);
+  const Run& reference = runs[4];
+  double ccxBest = std::min(runs[3].seconds, runs[4].seconds);
   std::printf("\n| run | wall time | / ccx best | peak memory | peak physical memory (summed PSS) | max |f / f_ccx - 1| "
               "|\n|---|---|---|---|---|---|\n");
   for (const auto& r : runs)

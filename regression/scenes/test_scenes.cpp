@@ -1439,6 +1439,11 @@ TEST(Scenes, ModalBadNodalDiameterAndConfigurationAreNamed) {
   EXPECT_NE(msg.find("lobpcg"), std::string::npos) << msg;
   msg = failure(base + "  modal:\n    eigen_solver: lobpcg\n    shift: -1.0\n", dir);
   EXPECT_NE(msg.find("shift_invert only"), std::string::npos) << msg;
+  for (const char* threads : {"0", "-2", "many", "2.5", "2000"}) {
+    msg = failure(base + "  modal:\n    threads: " + threads + "\n", dir);
+    EXPECT_NE(msg.find("modal/threads"), std::string::npos) << threads << ": " << msg;
+    EXPECT_NE(msg.find("auto or a count of threads from 1 to 1024"), std::string::npos) << threads << ": " << msg;
+  }
   msg = failure(base + "  cyclic:\n    configuration: glued\n", dir);
   EXPECT_NE(msg.find("configuration"), std::string::npos) << msg;
   msg = failure(base + "  cyclic:\n    sectors: 1\n", dir);

@@ -4,9 +4,11 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <dlfcn.h>
 #include <random>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/SingleThreadedBlas.hpp"
 #include "cyclone/solvers/SparseCholesky.hpp"
 
 using namespace cyclone;
@@ -74,3 +76,21 @@ void checkHalvesAndRefactor() {
 
 TEST(SparseCholesky, RealHalvesAndRefactorAgainstDense) { checkHalvesAndRefactor<double>(); }
 TEST(SparseCholesky, ComplexHermitianHalvesAndRefactorAgainstDense) { checkHalvesAndRefactor<std::complex<double>>(); }
+
+// OpenBLAS held at one thread while the library runs threads of its own, and given
+// back its count afterwards (the solvers link the BLAS, which here is OpenBLAS).
+TEST(SingleThreadedBlas, HoldsOpenBlasAtOneThreadAndRestoresIt) {
+  using Get = int (*)();
+  using Set = void (*)(int);
+  const auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  const auto set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (!get || !set) GTEST_SKIP() << "the BLAS loaded is not OpenBLAS";
+  const int before = get();
+  set(2);
+  {
+    const SingleThreadedBlas single;
+    EXPECT_EQ(get(), 1);
+  }
+  EXPECT_EQ(get(), 2);
+  set(before);
+}

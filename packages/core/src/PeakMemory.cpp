@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <fstream>
+#include <limits>
 #include <string>
 
 #if defined(__GLIBC__)
@@ -23,6 +24,20 @@ double currentMemoryMb() {
   while (std::getline(status, line))
     if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmRSS:  123 kB"
   return 0;
+}
+
+double availableMemoryMb() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string line;
+  while (std::getline(meminfo, line))
+    if (line.rfind("MemAvailable:", 0) == 0) return std::stod(line.substr(13)) / 1024.0;  // kB
+  return std::numeric_limits<double>::infinity();
+}
+
+void returnLargeBlocksOnFree() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 4 << 20);
+#endif
 }
 
 void releaseFreedMemory() {

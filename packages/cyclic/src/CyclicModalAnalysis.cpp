@@ -5,11 +5,17 @@
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <atomic>
+#include <exception>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/ContentHash.hpp"
@@ -17,6 +23,8 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/PeakMemory.hpp"
+#include "cyclone/core/ProcessorCores.hpp"
+#include "cyclone/core/SingleThreadedBlas.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
 #include "cyclone/cyclic/HarmonicForm.hpp"
@@ -73,6 +81,28 @@ std::string describe(const NodalDiameterModes& hm, solvers::EigenMethod method) 
   return msg.str();
 }
 
+// What one thread solving nodal diameters carries: its own factorizations, and when
+// threads share the process, the locks taken around the libraries that are not
+// thread-safe here. Trilinos: Tpetra's vectors reduce through Kokkos::Serial's one
+// scratch buffer, Teuchos counts RCP references without atomics
+// (HAVE_TEUCHOS_THREAD_SAFE is off) and Anasazi's solvers share named timers. The
+// checkpoints: HDF5 (Debian's MPI build is not thread-safe), or whatever a caller's
+// ResultCheckpoints does. CHOLMOD (a common per factor), OpenBLAS, the projections
+// and the scratch files of the shapes are used by both threads at once.
+struct NodalDiameterWorker {
+  FactorCache factors;
+  std::mutex* trilinos = nullptr;
+  std::mutex* checkpoints = nullptr;
+  /// Called after each factorization with the factor's size in bytes.
+  std::function<void(double)> factored;
+};
+
+// A worker's lock, or none on one thread.
+std::unique_lock<std::mutex> section(std::mutex* lock) {
+  return lock ? std::unique_lock<std::mutex>(*lock) : std::unique_lock<std::mutex>();
+}
+std::unique_lock<std::mutex> trilinosSection(const NodalDiameterWorker& worker) { return section(worker.trilinos); }
+
 // One nodal diameter on its own operators assembled on the transform (Tpetra, distributed
 // over comm): the LOBPCG path, and shift-invert for a free sector whose shift must be found.
 NodalDiameterModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
@@ -104,7 +134,7 @@ NodalDiameterModes solveAssembled(const mesh::Mesh& mesh, const CyclicSector& se
 // assembled path, whose shift search handles rigid-body modes.
 std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const CyclicSector& sector, int k,
                                             const SectorMatrices& matrices, const CyclicModalProblem& problem,
-                                            FactorCache& factors) {
+                                            NodalDiameterWorker& worker) {
   Timer timer;
   const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
   HarmonicForm form(matrices, transform);
@@ -119,7 +149,7 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
   const bool automatic = std::isnan(problem.shift);
   const double shift = automatic ? 0.0 : problem.shift;
   try {
-    form.factor(shift, factors);
+    form.factor(shift, worker.factors);
   } catch (const SolverError& e) {
     if (automatic) return std::nullopt;
     throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
@@ -129,6 +159,8 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
   }
   form.releaseProjections();  // the factor holds what the solves need; K and M through the sector's
   hm.factorSeconds = factorTimer.seconds();
+  // In complex entries: a real nodal diameter (k = 0, first) announces what the pairs will hold.
+  if (worker.factored) worker.factored(16.0 * form.factorNonzeros());
   solvers::ShiftInvertedProblem eigen;
   eigen.size = form.size();
   eigen.shift = shift;
@@ -149,15 +181,20 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
   // 17 blocks took 34).
   opt.blockSize = 2;
   opt.numBlocks = form.complexForm() ? opt.numModes + 12 : opt.numModes + 7;
-  const auto result = solvers::solveModes(eigen, opt);
-  hm.frequenciesHz = result.frequenciesHz;
-  for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
-    const auto x = result.modes->getData(i);
-    hm.shapes.push_back(
-        {transform.nodalField(x.getRawPtr(), 0), hm.copies == 2 ? transform.nodalField(x.getRawPtr(), 1) : NodalField()});
+  {
+    // The eigen-solution (Anasazi on Tpetra vectors) and every Tpetra object it returns
+    // live and die inside the lock: `result` is declared after it, so goes first.
+    const auto trilinos = trilinosSection(worker);
+    const auto result = solvers::solveModes(eigen, opt);
+    hm.frequenciesHz = result.frequenciesHz;
+    for (std::size_t i = 0; i < result.frequenciesHz.size(); ++i) {
+      const auto x = result.modes->getData(i);
+      hm.shapes.push_back({transform.nodalField(x.getRawPtr(), 0),
+                           hm.copies == 2 ? transform.nodalField(x.getRawPtr(), 1) : NodalField()});
+    }
+    hm.solveSeconds = result.solveSeconds;
+    hm.solves = result.operatorApplies;
   }
-  hm.solveSeconds = result.solveSeconds;
-  hm.solves = result.operatorApplies;
   hm.seconds = timer.seconds();
   return hm;
 }
@@ -298,6 +335,81 @@ std::vector<NodalDiameterModes> shareOwnersResults(std::vector<NodalDiameterMode
 
 }  // namespace
 
+namespace {
+
+// The threads a rank solves its nodal diameters on: `asked`, or for 0 the cores this
+// process may run on shared among the ranks (all taken to be on one machine).
+int threadsPerRank(int asked, int ranks) {
+  if (asked > 0) return asked;
+  return std::max(1, usableProcessorCores() / std::max(1, ranks));
+}
+
+// The nodal diameters `owned` (indices) solved on `threads` threads, each taking the next
+// one left. Every thread but the first starts once the first has factored: its factor's
+// size in complex entries (with half again for the factorization's transient and the
+// Krylov basis) is what each further thread will hold, and a thread is started only
+// while the memory the system has available covers it. The answers are those of one thread: each nodal
+// diameter is solved alone from its own seeded start, whichever thread takes it.
+void solveOnThreads(const std::vector<std::size_t>& owned, int threads,
+                    const std::function<NodalDiameterModes(std::size_t, NodalDiameterWorker&)>& solveOne,
+                    std::vector<NodalDiameterModes>& results, std::vector<std::exception_ptr>& failure) {
+  std::mutex trilinos, checkpoints, gate;
+  std::condition_variable opened;
+  bool open = false;
+  double perThreadMb = 0, availableMb = availableMemoryMb();
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  auto openGate = [&](double factorBytes) {
+    const std::lock_guard<std::mutex> guard(gate);
+    if (open) return;
+    open = true;
+    perThreadMb = 1.5 * factorBytes / 1e6;
+    availableMb = availableMemoryMb();
+    opened.notify_all();
+  };
+  auto work = [&](int t) {
+    NodalDiameterWorker worker;
+    worker.trilinos = &trilinos;
+    worker.checkpoints = &checkpoints;
+    if (t == 0) {
+      worker.factored = [&](double bytes) { openGate(bytes); };
+    } else {
+      std::unique_lock<std::mutex> guard(gate);
+      opened.wait(guard, [&] { return open; });
+      // Each further thread claims its share of what is available, or is not started.
+      if (!(availableMb >= perThreadMb)) {
+        std::ostringstream msg;
+        msg << "nodal diameters: thread " << t + 1 << " not started (" << perThreadMb << " MB needed, "
+            << availableMb << " MB available)";
+        log::info(msg.str());
+        return;
+      }
+      availableMb -= perThreadMb;
+    }
+    for (std::size_t j; !failed && (j = next++) < owned.size();) {
+      const std::size_t i = owned[j];
+      try {
+        results[i] = solveOne(i, worker);
+      } catch (...) {
+        failure[i] = std::current_exception();
+        failed = true;
+      }
+      // Solved without a factor of its own (read back, or assembled for a free sector):
+      // the others are not held longer, unmeasured.
+      if (t == 0) openGate(0.0);
+    }
+    if (t == 0) openGate(0.0);
+  };
+  log::info("nodal diameters on " + std::to_string(threads) + " threads");
+  const SingleThreadedBlas oneBlasThread;  // ours are the threads: OpenBLAS's own would oversubscribe
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& thread : pool) thread.join();
+}
+
+}  // namespace
+
 std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
@@ -306,6 +418,8 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     for (int k = 0; k <= sector.maxNodalDiameter(); ++k) harmonics.push_back(k);
   for (int k : harmonics) checkNodalDiameter(sector.sectors, k);
   if (problem.modesPerNodalDiameter < 1) throw InputError("modes_per_nd", "must be at least 1");
+  if (problem.threads < 0 || problem.threads > 1024)
+    throw InputError("threads", std::to_string(problem.threads) + ": use 0 (as many as the cores) or 1..1024");
 
   std::vector<NodalDiameterModes> out;
   const int ranks = comm->getSize(), rank = comm->getRank();
@@ -337,15 +451,25 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     log::info(msg.str());
   }
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>());
-  FactorCache factors;
-  auto solveOne = [&](std::size_t i) {
+  auto solveOne = [&](std::size_t i, NodalDiameterWorker& worker) {
     std::string key;
-    if (auto saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank)) {
+    std::optional<NodalDiameterModes> saved;
+    {
+      const auto lock = section(worker.checkpoints);
+      saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank);
+    }
+    if (saved) {
       keepShapes(*saved, problem);
       return std::move(*saved);
     }
-    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, factors);
-    NodalDiameterModes hm = solved ? std::move(*solved) : solveAssembled(mesh, sector, harmonics[i], problem, serial);
+    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, worker);
+    NodalDiameterModes hm;
+    if (solved) {
+      hm = std::move(*solved);
+    } else {
+      const auto trilinos = trilinosSection(worker);
+      hm = solveAssembled(mesh, sector, harmonics[i], problem, serial);
+    }
     hm.rank = rank;
     releaseFreedMemory();  // the Krylov basis and the solves' work, before the next factor
     if (rank == 0) {
@@ -354,25 +478,49 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
       memory << "; memory " << currentMemoryMb() << " MB, peak " << peakMemoryMb() << " MB";
       log::info(describe(hm, problem.method) + memory.str());
     }
-    if (problem.checkpoints) problem.checkpoints->save(key, pack(hm));
+    if (problem.checkpoints) {
+      const auto lock = section(worker.checkpoints);
+      problem.checkpoints->save(key, pack(hm));
+    }
     keepShapes(hm, problem);
     return hm;
   };
-  if (ranks == 1) {
-    for (std::size_t i = 0; i < harmonics.size(); ++i) out.push_back(solveOne(i));
-    return out;
-  }
+  // This rank's nodal diameters: all of them on one rank, else round robin.
+  std::vector<std::size_t> owned;
+  for (std::size_t i = 0; i < harmonics.size(); ++i)
+    if (int(i % ranks) == rank) owned.push_back(i);
   std::vector<NodalDiameterModes> mine(harmonics.size());
-  std::vector<std::string> failure(harmonics.size());
-  for (std::size_t i = 0; i < harmonics.size(); ++i) {
-    if (int(i % ranks) != rank) continue;
-    try {
-      mine[i] = solveOne(i);
-    } catch (const std::exception& e) {
-      failure[i] = e.what();
+  std::vector<std::exception_ptr> failure(harmonics.size());
+  const int threads = int(std::min<std::size_t>(std::size_t(threadsPerRank(problem.threads, ranks)), owned.size()));
+  if (threads <= 1) {
+    NodalDiameterWorker worker;
+    for (std::size_t i : owned) {
+      try {
+        mine[i] = solveOne(i, worker);
+      } catch (...) {
+        failure[i] = std::current_exception();
+        break;
+      }
     }
+  } else {
+    solveOnThreads(owned, threads, solveOne, mine, failure);
   }
-  return shareOwnersResults(mine, failure, harmonics, mesh, problem, comm);
+  // On one rank the first failure is thrown as it is; on several its message goes to all.
+  std::vector<std::string> messages(harmonics.size());
+  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+    if (!failure[i]) continue;
+    if (ranks == 1) std::rethrow_exception(failure[i]);
+    try {
+      std::rethrow_exception(failure[i]);
+    } catch (const std::exception& e) {
+      messages[i] = e.what();
+    } catch (...) {
+      messages[i] = "unknown failure";
+    }
+    if (messages[i].empty()) messages[i] = "failed";
+  }
+  if (ranks == 1) return mine;
+  return shareOwnersResults(mine, messages, harmonics, mesh, problem, comm);
 }
 
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {

@@ -44,6 +44,12 @@ struct CyclicModalProblem {
   /// `scratchDirectory` (empty: the system's temporary directory), or in memory.
   enum class ShapeStorage { ScratchFile, Memory } shapeStorage = ShapeStorage::ScratchFile;
   std::string scratchDirectory;
+  /// Threads each rank solves its nodal diameters on (shift-invert): each thread holds
+  /// its own factor, so the memory of the nodal-diameter stage grows with them; a thread
+  /// is started only while the system's available memory covers one more factor. 0:
+  /// the cores this process may use shared among the ranks (taken to be on one
+  /// machine). The answers do not depend on it. LOBPCG always uses one.
+  int threads = 1;
 };
 
 struct NodalDiameterModes {
