@@ -8,6 +8,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/PeakMemory.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
     std::printf("%s", cyclone::scenes::demoScene());
     return 0;
   }
+  cyclone::returnLargeBlocksOnFree();
   Tpetra::ScopeGuard mpi(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   cyclone::log::setRank(comm->getRank());

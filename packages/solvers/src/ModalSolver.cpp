@@ -252,30 +252,37 @@ ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, con
   using MVT = Anasazi::MultiVecTraits<double, MV>;
   using Dense = Teuchos::SerialDenseMatrix<int, double>;
   const int found = int(V.getNumVectors());
-  MV basis(V.getMap(), partner ? 2 * found : found);
-  {
+  const int m = partner ? 2 * found : found;
+  // The basis B = [V, JV] with a partner J, and A B for A = K, M: A commutes with J, so
+  // A [V, JV] = [AV, J AV] (one product per vector of V instead of two).
+  auto withPartner = [&](const MV& X) {
+    auto out = Teuchos::rcp(new MV(V.getMap(), m));
     std::vector<int> columns(found);
     std::iota(columns.begin(), columns.end(), 0);
-    MVT::SetBlock(V, columns, basis);
+    MVT::SetBlock(X, columns, *out);
     if (partner) {
       MV turned(V.getMap(), found);
-      partner->apply(V, turned);
+      partner->apply(X, turned);
       for (int& c : columns) c += found;
-      MVT::SetBlock(turned, columns, basis);
+      MVT::SetBlock(turned, columns, *out);
     }
-  }
-  const int m = int(basis.getNumVectors());
+    return out;
+  };
+  auto timesV = [&](const OP& A) {
+    MV AV(V.getMap(), found);
+    A.apply(V, AV);
+    return withPartner(AV);
+  };
+  const auto basis = withPartner(V);
   auto toEigen = [](const Dense& d) {
     Eigen::MatrixXd e(d.numRows(), d.numCols());
     for (int i = 0; i < d.numRows(); ++i)
       for (int j = 0; j < d.numCols(); ++j) e(i, j) = d(i, j);
     return Eigen::MatrixXd(0.5 * (e + e.transpose()));
   };
-  // An M-orthonormal basis W of the span, without the directions the partner repeats.
-  MV MB(V.getMap(), m);
-  M.apply(basis, MB);
+  // An M-orthonormal basis W = B toW of the span, without the directions the partner repeats.
   Dense gram(m, m);
-  MVT::MvTransMv(1.0, basis, MB, gram);
+  MVT::MvTransMv(1.0, *basis, *timesV(M), gram);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> gramEigen(toEigen(gram));
   const double largest = gramEigen.eigenvalues().maxCoeff();
   std::vector<int> kept;
@@ -285,25 +292,25 @@ ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, con
   if (w < nev)
     throw SolverError("eigen-solution: the converged subspace holds " + std::to_string(w) + " of " +
                       std::to_string(nev) + " modes");
-  Dense toW(m, w);
+  Eigen::MatrixXd toW(m, w);
   for (int j = 0; j < w; ++j)
     for (int i = 0; i < m; ++i)
       toW(i, j) = gramEigen.eigenvectors()(i, kept[j]) / std::sqrt(gramEigen.eigenvalues()(kept[j]));
-  MV W(V.getMap(), w), KW(V.getMap(), w);
-  MVT::MvTimesMatAddMv(1.0, basis, toW, 0.0, W);
-  K.apply(W, KW);
-  Dense projected(w, w);
-  MVT::MvTransMv(1.0, W, KW, projected);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(toEigen(projected));
+  // W^T K W = toW^T (B^T K B) toW.
+  Dense basisK(m, m);
+  MVT::MvTransMv(1.0, *basis, *timesV(K), basisK);
+  const Eigen::MatrixXd projected = toW.transpose() * toEigen(basisK) * toW;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(0.5 * (projected + projected.transpose()));
   // Ascending: the shift lies below the spectrum, so the lowest are the nearest to it.
-  Dense Y(w, nev);
+  Dense Y(m, nev);
   std::vector<double> lambda(nev);
+  const Eigen::MatrixXd toX = toW * ritz.eigenvectors().leftCols(nev);
   for (int j = 0; j < nev; ++j) {
-    for (int i = 0; i < w; ++i) Y(i, j) = ritz.eigenvectors()(i, j);
+    for (int i = 0; i < m; ++i) Y(i, j) = toX(i, j);
     lambda[j] = ritz.eigenvalues()(j);
   }
   auto X = Teuchos::rcp(new MV(V.getMap(), nev));
-  MVT::MvTimesMatAddMv(1.0, W, Y, 0.0, *X);
+  MVT::MvTimesMatAddMv(1.0, *basis, Y, 0.0, *X);
   ShiftInvertedModes out;
   out.lambda = lambda;
   for (int j = 0; j < nev; ++j) out.vectors.push_back(X->getVector(j));
@@ -376,18 +383,27 @@ public:
   BlockFunctionOperator(Teuchos::RCP<const linalg::Map> map, Function f) : map_(std::move(map)), f_(std::move(f)) {}
   Teuchos::RCP<const linalg::Map> getDomainMap() const override { return map_; }
   Teuchos::RCP<const linalg::Map> getRangeMap() const override { return map_; }
+  // Blocks of at most kChunk columns: the final Rayleigh-Ritz applies the operators to
+  // 10-20 vectors at once, and a solve's block is copied several times on its way
+  // through the factor (permutations, CHOLMOD's result), which made the eigen-solution's
+  // memory peak; a pair [w, Jw] stays whole (kChunk is even).
   void apply(const MV& X, MV& Y, Teuchos::ETransp, double alpha, double beta) const override {
+    constexpr std::size_t kChunk = 4;
     const std::size_t nv = X.getNumVectors();
     const Eigen::Index n = Eigen::Index(X.getLocalLength());
-    Eigen::MatrixXd x(n, nv), y(n, nv);
-    for (std::size_t j = 0; j < nv; ++j) {
-      const auto col = X.getData(j);
-      for (Eigen::Index i = 0; i < n; ++i) x(i, j) = col[i];
-    }
-    f_(x, y);
-    for (std::size_t j = 0; j < nv; ++j) {
-      auto col = Y.getDataNonConst(j);
-      for (Eigen::Index i = 0; i < n; ++i) col[i] = alpha * y(i, j) + (beta == 0.0 ? 0.0 : beta * col[i]);
+    for (std::size_t first = 0; first < nv; first += kChunk) {
+      const std::size_t count = std::min(kChunk, nv - first);
+      Eigen::MatrixXd x(n, Eigen::Index(count)), y;
+      for (std::size_t j = 0; j < count; ++j) {
+        const auto col = X.getData(first + j);
+        for (Eigen::Index i = 0; i < n; ++i) x(i, Eigen::Index(j)) = col[i];
+      }
+      f_(x, y);
+      for (std::size_t j = 0; j < count; ++j) {
+        auto col = Y.getDataNonConst(first + j);
+        for (Eigen::Index i = 0; i < n; ++i)
+          col[i] = alpha * y(i, Eigen::Index(j)) + (beta == 0.0 ? 0.0 : beta * col[i]);
+      }
     }
     applies += int(nv);
   }
