@@ -2,6 +2,7 @@
 # Imported targets defined here are reused by cmake/CycloneConfig.cmake.in for consumers.
 
 find_package(MPI REQUIRED COMPONENTS C CXX)
+find_package(Threads REQUIRED)  # the cyclic sweep's nodal diameters on threads
 
 # One call with all components: TrilinosConfig.cmake is include-guarded.
 find_package(Trilinos 13.2 REQUIRED

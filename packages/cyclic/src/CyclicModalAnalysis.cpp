@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <system_error>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -348,7 +350,9 @@ int threadsPerRank(int asked, int ranks) {
 // one left. Every thread but the first starts once the first has factored: its factor's
 // size in complex entries (with half again for the factorization's transient and the
 // Krylov basis) is what each further thread will hold, and a thread is started only
-// while the memory the system has available covers it. The answers are those of one thread: each nodal
+// while the memory the system has available covers it; a first thread that ends without
+// a factor of its own (nodal diameters read back, a free sector's assembled path)
+// leaves the others unstarted, its work done. The answers are those of one thread: each nodal
 // diameter is solved alone from its own seeded start, whichever thread takes it.
 void solveOnThreads(const std::vector<std::size_t>& owned, int threads,
                     const std::function<NodalDiameterModes(std::size_t, NodalDiameterWorker&)>& solveOne,
@@ -356,56 +360,74 @@ void solveOnThreads(const std::vector<std::size_t>& owned, int threads,
   std::mutex trilinos, checkpoints, gate;
   std::condition_variable opened;
   bool open = false;
-  double perThreadMb = 0, availableMb = availableMemoryMb();
+  double perThreadMb = 0, availableMb = 0;
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
+  std::exception_ptr outsideAnyNd;  // a failure of a thread itself (under `gate`)
+  // factorBytes < 0: nothing measured (the first thread ended without factoring, e.g. a
+  // free sector's assembled path): the others are not started.
   auto openGate = [&](double factorBytes) {
     const std::lock_guard<std::mutex> guard(gate);
     if (open) return;
     open = true;
-    perThreadMb = 1.5 * factorBytes / 1e6;
+    perThreadMb = factorBytes < 0 ? std::numeric_limits<double>::infinity() : 1.5 * factorBytes / (1024.0 * 1024.0);
     availableMb = availableMemoryMb();
     opened.notify_all();
   };
   auto work = [&](int t) {
-    NodalDiameterWorker worker;
-    worker.trilinos = &trilinos;
-    worker.checkpoints = &checkpoints;
-    if (t == 0) {
-      worker.factored = [&](double bytes) { openGate(bytes); };
-    } else {
-      std::unique_lock<std::mutex> guard(gate);
-      opened.wait(guard, [&] { return open; });
-      // Each further thread claims its share of what is available, or is not started.
-      if (!(availableMb >= perThreadMb)) {
-        std::ostringstream msg;
-        msg << "nodal diameters: thread " << t + 1 << " not started (" << perThreadMb << " MB needed, "
-            << availableMb << " MB available)";
-        log::info(msg.str());
-        return;
+    try {
+      NodalDiameterWorker worker;
+      worker.trilinos = &trilinos;
+      worker.checkpoints = &checkpoints;
+      if (t == 0) {
+        worker.factored = [&](double bytes) { openGate(bytes); };
+      } else {
+        std::unique_lock<std::mutex> guard(gate);
+        opened.wait(guard, [&] { return open; });
+        if (failed || next >= owned.size()) return;
+        // Each further thread claims its share of what is available, or is not started.
+        if (!(availableMb >= perThreadMb)) {
+          std::ostringstream msg;
+          msg << "nodal diameters: thread " << t + 1 << " not started (";
+          if (std::isinf(perThreadMb)) msg << "no factor measured";
+          else msg << perThreadMb << " MB needed, " << availableMb << " MB available";
+          log::info(msg.str() + ")");
+          return;
+        }
+        availableMb -= perThreadMb;
       }
-      availableMb -= perThreadMb;
-    }
-    for (std::size_t j; !failed && (j = next++) < owned.size();) {
-      const std::size_t i = owned[j];
-      try {
-        results[i] = solveOne(i, worker);
-      } catch (...) {
-        failure[i] = std::current_exception();
-        failed = true;
+      for (std::size_t j; !failed && (j = next++) < owned.size();) {
+        const std::size_t i = owned[j];
+        try {
+          results[i] = solveOne(i, worker);
+        } catch (...) {
+          failure[i] = std::current_exception();
+          failed = true;
+        }
       }
-      // Solved without a factor of its own (read back, or assembled for a free sector):
-      // the others are not held longer, unmeasured.
-      if (t == 0) openGate(0.0);
+    } catch (...) {
+      const std::lock_guard<std::mutex> guard(gate);
+      if (!outsideAnyNd) outsideAnyNd = std::current_exception();
+      failed = true;
     }
-    if (t == 0) openGate(0.0);
+    if (t == 0) openGate(-1.0);
   };
   log::info("nodal diameters on " + std::to_string(threads) + " threads");
-  const SingleThreadedBlas oneBlasThread;  // ours are the threads: OpenBLAS's own would oversubscribe
+  // Ours are the threads: OpenBLAS's own would oversubscribe the cores. (OpenBLAS built
+  // with OpenMP takes each thread's own OpenMP count instead; Debian's is the pthreads build.)
+  const SingleThreadedBlas oneBlasThread;
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  for (int t = 1; t < threads; ++t) {
+    try {
+      pool.emplace_back(work, t);
+    } catch (const std::system_error& e) {  // the system's thread limit: go on with fewer
+      log::info(std::string("nodal diameters: ") + std::to_string(pool.size() + 1) + " threads (" + e.what() + ")");
+      break;
+    }
+  }
   work(0);
   for (auto& thread : pool) thread.join();
+  if (outsideAnyNd) std::rethrow_exception(outsideAnyNd);
 }
 
 }  // namespace

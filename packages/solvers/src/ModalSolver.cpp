@@ -253,8 +253,8 @@ ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, con
   using Dense = Teuchos::SerialDenseMatrix<int, double>;
   const int found = int(V.getNumVectors());
   const int m = partner ? 2 * found : found;
-  // The basis B = [V, JV] with a partner J, and A B for A = K, M: A commutes with J, so
-  // A [V, JV] = [AV, J AV] (one product per vector of V instead of two).
+  // The basis B = [V, JV] with a partner J, and M B: M commutes with J, so
+  // M [V, JV] = [MV, J MV] (one product per vector of V instead of two).
   auto withPartner = [&](const MV& X) {
     auto out = Teuchos::rcp(new MV(V.getMap(), m));
     std::vector<int> columns(found);
@@ -292,25 +292,28 @@ ShiftInvertedModes rayleighRitz(const OP& K, const OP& M, const OP* partner, con
   if (w < nev)
     throw SolverError("eigen-solution: the converged subspace holds " + std::to_string(w) + " of " +
                       std::to_string(nev) + " modes");
-  Eigen::MatrixXd toW(m, w);
+  Dense toW(m, w);
   for (int j = 0; j < w; ++j)
     for (int i = 0; i < m; ++i)
       toW(i, j) = gramEigen.eigenvectors()(i, kept[j]) / std::sqrt(gramEigen.eigenvalues()(kept[j]));
-  // W^T K W = toW^T (B^T K B) toW.
-  Dense basisK(m, m);
-  MVT::MvTransMv(1.0, *basis, *timesV(K), basisK);
-  const Eigen::MatrixXd projected = toW.transpose() * toEigen(basisK) * toW;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(0.5 * (projected + projected.transpose()));
+  // K on W itself, not W^T K W = toW^T (B^T K B) toW: with the partner B is nearly
+  // dependent (a pair's two members and their turns), toW is large, and B^T K B's rounding
+  // grew with it (a reduced model's modal realization moved by 1e-9).
+  MV W(V.getMap(), w), KW(V.getMap(), w);
+  MVT::MvTimesMatAddMv(1.0, *basis, toW, 0.0, W);
+  K.apply(W, KW);
+  Dense projected(w, w);
+  MVT::MvTransMv(1.0, W, KW, projected);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(toEigen(projected));
   // Ascending: the shift lies below the spectrum, so the lowest are the nearest to it.
-  Dense Y(m, nev);
+  Dense Y(w, nev);
   std::vector<double> lambda(nev);
-  const Eigen::MatrixXd toX = toW * ritz.eigenvectors().leftCols(nev);
   for (int j = 0; j < nev; ++j) {
-    for (int i = 0; i < m; ++i) Y(i, j) = toX(i, j);
+    for (int i = 0; i < w; ++i) Y(i, j) = ritz.eigenvectors()(i, j);
     lambda[j] = ritz.eigenvalues()(j);
   }
   auto X = Teuchos::rcp(new MV(V.getMap(), nev));
-  MVT::MvTimesMatAddMv(1.0, *basis, Y, 0.0, *X);
+  MVT::MvTimesMatAddMv(1.0, W, Y, 0.0, *X);
   ShiftInvertedModes out;
   out.lambda = lambda;
   for (int j = 0; j < nev; ++j) out.vectors.push_back(X->getVector(j));
@@ -399,6 +402,10 @@ public:
         for (Eigen::Index i = 0; i < n; ++i) x(i, Eigen::Index(j)) = col[i];
       }
       f_(x, y);
+      if (y.rows() != n || y.cols() != Eigen::Index(count))
+        throw SolverError("eigen-solution: an operator returned a " + std::to_string(y.rows()) + " x " +
+                          std::to_string(y.cols()) + " block for " + std::to_string(n) + " x " +
+                          std::to_string(count));
       for (std::size_t j = 0; j < count; ++j) {
         auto col = Y.getDataNonConst(first + j);
         for (Eigen::Index i = 0; i < n; ++i)
