@@ -165,7 +165,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec, plan.modelSpec.lossFactor, plan.modelSpec.rpm);
     plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
-    const HarmonicsTargetKeys target = readHarmonicsTarget(d, 5);
+    const HarmonicsTargetKeys target = readHarmonicsTarget(d, 48);
     plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic, target);
     plan.harmonicsTolerance = target.tolerance;
     if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {

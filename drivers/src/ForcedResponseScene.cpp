@@ -367,7 +367,9 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   ForcedResponseSetup setup;
   const auto placed = readNonlinearElements(scene, in, setup.elementNames);
   int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
-  for (const auto& p : placed) recommended = std::max(recommended, p.element->recommendedSamples());
+  for (const auto& p : placed)
+    if (p.element->recommendedSamples() > 0)  // a nonsmooth law: samples that grow with the harmonics too
+      recommended = std::max({recommended, p.element->recommendedSamples(), harmonics.nonsmoothSamples()});
   const int samples = scene.getInt("samples", recommended);
   if (samples < 1 || samples > kMaxSamples)
     throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in 1.." +

@@ -60,10 +60,11 @@ HarmonicsTargetKeys readHarmonicsTarget(SceneSection& section, int defaultMax) {
     throw InputError(section.where("harmonics_tolerance"),
                      "a relative change of the peak between harmonic counts, 0 < tolerance < 0.5");
   keys.max = section.getInt("harmonics_max", defaultMax);
-  if (keys.max < 3 || keys.max > 30)
+  if (keys.max < 3 || keys.max > 64)
     throw InputError(section.where("harmonics_max"),
-                     "the highest harmonic tried must lie in 3..30 (two raises from H = 1 meet the tolerance at "
-                     "H = 3 at the earliest)");
+                     "the highest harmonic tried must lie in 3..64 (two raises from H = 1 meet the tolerance at "
+                     "H = 3 at the earliest; beyond 64 a shroud's contact law is resolved by its samples, not by "
+                     "more harmonics)");
   return keys;
 }
 

@@ -8,6 +8,7 @@
 // factorisations and solves.
 //   build/regression/disc_hbm_benchmark [H (5)] [from Hz (1300)] [to Hz (1330)]
 //                                       [mesh size (6)] [cache dir (disc_benchmark_models)] [preload N (500)]
+//                                       [variants: all | krylov (all)]
 // The demo's whole curve at its converged H: disc_hbm_benchmark 6 349.443 1727.63
 #include <cmath>
 #include <cstdio>
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   const double meshSize = argc > 4 ? std::atof(argv[4]) : 6.0;
   const std::string cache = argc > 5 ? argv[5] : "disc_benchmark_models";
   const double preload = argc > 6 ? std::atof(argv[6]) : 500.0;
+  const std::string variants = argc > 7 ? argv[7] : "all";  // all | krylov (no dense LU: large H)
 
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
@@ -52,23 +54,32 @@ int main(int argc, char** argv) {
   for (int r = 0; r < reps; ++r) problem.residual(x, 1.0 + 1e-9 * r, R);
   const double residual = t.seconds() / reps;
   t.restart();
-  for (int r = 0; r < reps; ++r) problem.jacobian(x, 1.0 + 1e-9 * r, J);
+  if (variants == "all")
+    for (int r = 0; r < reps; ++r) problem.jacobian(x, 1.0 + 1e-9 * r, J);
   const double jacobian = t.seconds() / reps;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n + 1, n + 1);
-  A.topLeftCorner(n, n) = J;
-  t.restart();
-  const continuation::DenseLu lu(A);
-  const double factor = t.seconds();
+  double factor = 0;
+  if (variants == "all") {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n + 1, n + 1);
+    A.topLeftCorner(n, n) = J;
+    t.restart();
+    const continuation::DenseLu lu(A);
+    factor = t.seconds();
+  }
   std::printf("default disc, EO 3, harmonics 0..%d: %d unknowns; residual %.4f s, Jacobian %.4f s, LU %.4f s\n", H, n,
               residual, jacobian, factor);
 
-  // The disc's defaults (kept factors, GMRES), then an LU at every Newton step.
-  for (const bool keep : {true, false}) {
+  // GMRES on the Jacobian's blocks (Krylov), the dense LU with its factors kept (GMRES
+  // preconditioned by the last LU), then an LU at every Newton step.
+  using LinearSolver = continuation::ContinuationOptions::LinearSolver;
+  const char* names[] = {"Krylov (GMRES on the Jacobian's blocks)", "dense, kept factors", "an LU at every Newton step"};
+  for (int variant = 0; variant < (variants == "all" ? 3 : 1); ++variant) {
+    const bool keep = variant == 1;
     disc::DiscSweepOptions sweep;
     sweep.harmonicsCheckTo = -1;
     sweep.stability = response::ForcedResponseSetup::Stability::Never;
     sweep.fallback.reset();
     sweep.continuation.reuseFactorizations = keep;
+    sweep.continuation.linearSolver = variant == 0 ? LinearSolver::Krylov : LinearSolver::Dense;
     std::vector<std::string> warnings;
     t.restart();
     const auto curve = disc::sweepDisc(setup, fromHz, toHz, sweep, warnings);
@@ -76,12 +87,14 @@ int main(int argc, char** argv) {
     const auto& b = curve.branch;
     const auto& s = b.statistics;
     std::printf("%s\n%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; "
-                "residuals %.2f s (%ld), Jacobians %.2f s (%ld), factorisations %.2f s (%ld), solves %.2f s (%ld steps "
-                "with kept factors, %ld GMRES iterations); peak %.6g mm at %.3f Hz; %s\n",
-                keep ? "defaults (kept factors)" : "an LU at every Newton step", fromHz, toHz, b.points.size(), secs,
+                "residuals %.2f s (%ld), Jacobians %.2f s (%ld), factorisations %.2f s (%ld), preconditioners %.2f s, "
+                "solves %.2f s (%ld steps with kept factors, %ld Krylov solves, %ld GMRES iterations); peak %.6g mm at "
+                "%.3f Hz; %s\n",
+                names[variant], fromHz, toHz, b.points.size(), secs,
                 secs / std::max<std::size_t>(1, b.points.size()), s.newtonIterations, s.rejectedSteps,
                 s.residualSeconds, s.residuals, s.jacobianSeconds, s.jacobians, s.factorSeconds, s.factorizations,
-                s.solveSeconds, s.reusedFactorizations, s.krylovIterations, curve.peak,
+                s.preconditionerSeconds, s.solveSeconds, s.reusedFactorizations, s.krylovSolves, s.krylovIterations,
+                curve.peak,
                 curve.peakOmega / (2 * M_PI), b.stopReason.c_str());
   }
   return 0;

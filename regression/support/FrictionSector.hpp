@@ -55,6 +55,9 @@ inline continuation::ContinuationProblem frictionSectorProblem(const hbm::Harmon
     s.residual(X, p, R, &J);
   };
   problem.measure = [&s](const Eigen::VectorXd& X) { return s.amplitude(X, 0, 1); };
+  problem.jacobianOperator = [&s](const Eigen::VectorXd& X, double p) {
+    return std::make_shared<continuation::JacobianOperatorOf<hbm::JacobianBlocks>>(s.jacobianBlocks(X, p));
+  };
   return problem;
 }
 

@@ -19,40 +19,19 @@
 #include "cyclone/hbm/JenkinsElement.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/hbm/TimeIntegration.hpp"
+#include "RingSector.hpp"
 
 using namespace cyclone;
 using namespace cyclone::hbm;
 
 namespace {
 
-struct Matrices {
-  Eigen::MatrixXd M, C, K, Mn, Cn, Kn;
-};
+using Matrices = test_support::RingMatrices;
+using test_support::ringMatrices;
 
-Matrices ringMatrices() {
-  Matrices m;
-  m.M = Eigen::Vector3d(1.2, 0.4, 0.4).asDiagonal();
-  m.K.resize(3, 3);
-  m.K << 13.0, -1.0, -0.5, -1.0, 3.0, 0.2, -0.5, 0.2, 4.0;
-  m.Kn = Eigen::MatrixXd::Zero(3, 3);
-  m.Kn(0, 0) = -2.0, m.Kn(1, 0) = -0.3;  // not symmetric: A_next^T couples the other way
-  m.C = 0.01 * m.K, m.Cn = 0.01 * m.Kn;
-  m.Mn = Eigen::MatrixXd::Zero(3, 3);
-  m.Mn(0, 0) = 0.05;
-  return m;
-}
-
-// Elements and loads shared by both forms: a 3D friction contact between
-// neighbouring tips, a Jenkins element to ground, a cubic spring, a preload.
+// Elements and loads shared by both forms: the ring's elements and a preload.
 void addElementsAndLoads(HarmonicBalanceSystem& s) {
-  FrictionContactParameters p;
-  p.tangentialDirections = 2, p.kt = 5.0, p.kn = 6.0, p.mu = 0.3, p.preload = 0.5;
-  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 3), Wn = Eigen::MatrixXd::Zero(3, 3);
-  W(1, 0) = 1, W(0, 1) = 0.3, W(2, 2) = 1;
-  Wn(1, 0) = -1, Wn(0, 1) = -0.3, Wn(2, 2) = -1;
-  s.addElement(std::make_shared<FrictionContact>(p), W, Wn);
-  s.addElement(std::make_shared<JenkinsElement>(3.0, 0.2), Eigen::Vector3d(1, 0, 0));
-  s.addElement(std::make_shared<CubicSpring>(0.5), Eigen::Vector3d(0, 1, -1));
+  test_support::addRingElements(s);
   s.addExcitation(1, 1, 0.8, 0.1);
   s.addExcitation(2, 1, 0.2);
   s.addStaticLoad(2, 0.3);

@@ -7,6 +7,51 @@ namespace cyclone::continuation {
 
 namespace {
 
+// The added rows' block J_aa of dF/dx: from the formed Jacobian, or, where the problem's
+// steps are Krylov solves (useKrylov), from products of its operator with unit vectors
+// (the dense Jacobian of a large harmonic balance is what Krylov avoids forming).
+Eigen::MatrixXd addedBlock(const ContinuationProblem& problem, const Eigen::VectorXd& y, double p,
+                           const std::vector<int>& added) {
+  const int na = int(added.size());
+  Eigen::MatrixXd Jaa(na, na);
+  if (useKrylov(problem, ContinuationOptions{})) {
+    const std::shared_ptr<JacobianOperator> op = problem.jacobianOperator(y, p);
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(problem.size), column;
+    for (int j = 0; j < na; ++j) {
+      e(added[j]) = 1;
+      op->apply(e, column);
+      e(added[j]) = 0;
+      for (int i = 0; i < na; ++i) Jaa(i, j) = column(added[i]);
+    }
+    return Jaa;
+  }
+  Eigen::MatrixXd J;
+  problem.jacobian(y, p, J);
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < na; ++j) Jaa(i, j) = J(added[i], added[j]);
+  return Jaa;
+}
+
+// The homotopy's rows on an operator that cannot blend its own (JacobianOperator::
+// blendRows false): the products blended, the preconditioner the operator's.
+class BlendedRows final : public JacobianOperator {
+public:
+  BlendedRows(std::shared_ptr<JacobianOperator> J, const std::vector<int>& rows, double scale, double shift)
+      : J_(std::move(J)), rows_(rows), scale_(scale), shift_(shift) {}
+  int size() const override { return J_->size(); }
+  void apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const override {
+    J_->apply(v, y);
+    for (int i : rows_) y(i) = scale_ * y(i) + shift_ * v(i);
+  }
+  void preparePreconditioner() override { J_->preparePreconditioner(); }
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override { J_->precondition(r, z); }
+
+private:
+  std::shared_ptr<JacobianOperator> J_;
+  std::vector<int> rows_;
+  double scale_, shift_;
+};
+
 // Newton on the added rows in the added unknowns alone (the others held): true when
 // those rows then hold to the tolerance.
 bool solveAddedRows(const ContinuationProblem& problem, Eigen::VectorXd& y, double p, const std::vector<int>& added,
@@ -14,15 +59,12 @@ bool solveAddedRows(const ContinuationProblem& problem, Eigen::VectorXd& y, doub
   const int na = int(added.size());
   if (na == 0) return false;
   Eigen::VectorXd F, Fa(na);
-  Eigen::MatrixXd J, Jaa(na, na);
   for (int iteration = 0; iteration < 12; ++iteration) {
     problem.residual(y, p, F);
     for (int i = 0; i < na; ++i) Fa(i) = F(added[i]);
     if (!Fa.allFinite()) return false;
     if (Fa.norm() <= tolerance) return true;
-    problem.jacobian(y, p, J);
-    for (int i = 0; i < na; ++i)
-      for (int j = 0; j < na; ++j) Jaa(i, j) = J(added[i], added[j]);
+    const Eigen::MatrixXd Jaa = addedBlock(problem, y, p, added);
     const Eigen::VectorXd d = Jaa.partialPivLu().solve(-Fa);
     if (!d.allFinite()) return false;
     for (int i = 0; i < na; ++i) y(added[i]) += d(i);
@@ -57,12 +99,11 @@ HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::Vector
   result.byHomotopy = true;
   const Eigen::VectorXd x0 = x;
   double c = 0;
-  {
-    Eigen::MatrixXd J;
-    problem.jacobian(x0, p, J);
-    for (int i : added) c += std::abs(J(i, i));
-    c = added.empty() || c == 0 ? 1.0 : c / double(added.size());
+  if (!added.empty()) {
+    const Eigen::MatrixXd Jaa = addedBlock(problem, x0, p, added);
+    c = Jaa.diagonal().cwiseAbs().sum();
   }
+  c = added.empty() || c == 0 ? 1.0 : c / double(added.size());
   ContinuationProblem homotopy;
   homotopy.size = problem.size;
   homotopy.scaleGroups = problem.scaleGroups;
@@ -77,6 +118,12 @@ HomotopyResult solveByHomotopy(const ContinuationProblem& problem, Eigen::Vector
       J(i, i) += (1 - s) * c;
     }
   };
+  if (problem.jacobianOperator)
+    homotopy.jacobianOperator = [&problem, &added, c, p](const Eigen::VectorXd& y, double s) {
+      std::shared_ptr<JacobianOperator> op = problem.jacobianOperator(y, p);
+      if (op->blendRows(added, s, (1 - s) * c)) return op;
+      return std::shared_ptr<JacobianOperator>(std::make_shared<BlendedRows>(op, added, s, (1 - s) * c));
+    };
   ContinuationOptions o;
   o.engine = ContinuationOptions::Engine::PredictorCorrector;
   o.from = 0, o.to = 1;

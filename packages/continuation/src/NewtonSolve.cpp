@@ -3,26 +3,43 @@
 #include <Eigen/LU>
 
 #include "cyclone/continuation/DenseLu.hpp"
+#include "cyclone/continuation/KrylovSolve.hpp"
 
 namespace cyclone::continuation {
 
 NewtonResult solveNewton(const ContinuationProblem& problem, Eigen::VectorXd& x, double p, double tolerance,
-                         int maxIterations, DenseLu* lastFactors) {
+                         int maxIterations, DenseLu* lastFactors, ContinuationOptions::LinearSolver linearSolver) {
   NewtonResult r;
   Eigen::VectorXd F, Ft;
   Eigen::MatrixXd J;
+  ContinuationOptions choice;
+  choice.linearSolver = linearSolver;
+  const bool krylov = useKrylov(problem, choice);
   try {
     problem.residual(x, p, F);
     for (; r.iterations < maxIterations; ++r.iterations) {
       if (F.norm() <= tolerance) break;
-      problem.jacobian(x, p, J);
-      // Partial pivoting (LAPACK, several times faster than full pivoting at the
-      // harmonic balance's sizes); full pivoting only when J is singular to it.
-      DenseLu local;
-      DenseLu& lu = lastFactors ? *lastFactors : local;
-      lu.compute(J);
-      Eigen::VectorXd dx = lu.solve(-F);
-      if (!dx.allFinite()) dx = J.fullPivLu().solve(-F);
+      Eigen::VectorXd dx;
+      if (krylov) {
+        // GMRES on the operator; a step it cannot solve ends Newton (not converged).
+        const std::shared_ptr<JacobianOperator> op = problem.jacobianOperator(x, p);
+        op->preparePreconditioner();
+        const Eigen::VectorXd minusF = -F;
+        const KrylovResult k = solveKrylov([&op](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op->apply(v, y); },
+                                           [&op](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op->precondition(v, y); },
+                                           minusF, dx, choice.krylov);
+        r.krylovIterations += k.iterations;
+        if (!k.converged) break;
+      } else {
+        problem.jacobian(x, p, J);
+        // Partial pivoting (LAPACK, several times faster than full pivoting at the
+        // harmonic balance's sizes); full pivoting only when J is singular to it.
+        DenseLu local;
+        DenseLu& lu = lastFactors ? *lastFactors : local;
+        lu.compute(J);
+        dx = lu.solve(-F);
+        if (!dx.allFinite()) dx = J.fullPivLu().solve(-F);
+      }
       double step = 1.0;
       for (int k = 0;; ++k, step *= 0.5) {  // backtracking: accept the first sufficient decrease
         problem.residual(x + step * dx, p, Ft);

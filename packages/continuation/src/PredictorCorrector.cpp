@@ -18,6 +18,7 @@
 
 #include "ContinuationEngines.hpp"
 #include "cyclone/continuation/DenseLu.hpp"
+#include "cyclone/continuation/KrylovSolve.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/continuation/TraceCheckpoint.hpp"
 #include "cyclone/core/Error.hpp"
@@ -48,11 +49,38 @@ struct Metric {
 
 enum class Constraint { Plane, Sphere };
 
+// The corrector's bordered Jacobian [J, dF/dp; c^T, d]: formed (dense), or, for a
+// problem solved by Krylov (ContinuationOptions::linearSolver), J as the problem's
+// operator with dF/dp and the border beside it.
+struct Bordered {
+  Eigen::MatrixXd dense;
+  std::shared_ptr<JacobianOperator> op;
+  Eigen::VectorXd column, row;
+  double corner = 0;
+  void setBottom(const Eigen::VectorXd& c, double d) {
+    if (op) {
+      row = c, corner = d;
+      return;
+    }
+    const Eigen::Index n = dense.rows() - 1;
+    dense.bottomLeftCorner(1, n) = c.transpose();
+    dense(n, n) = d;
+  }
+};
+
+// What a bordered system is solved with: a dense LU (DenseLu) or GMRES preconditioned
+// by the operator's preconditioner (BorderedKrylovSolve).
+struct BorderedFactors {
+  DenseLu lu;
+  BorderedKrylovSolve krylov;
+  bool isKrylov() const { return !krylov.empty(); }
+};
+
 struct Correction {
   bool converged = false;
   int iterations = 0;
   Point z;
-  DenseLu lu;             // of the last bordered Jacobian
+  BorderedFactors lu;     // of the last bordered Jacobian
   bool factored = false;  // lu holds one (no iteration: the predictor solved it)
 };
 
@@ -62,6 +90,7 @@ public:
          const TraceCheckpointing* checkpointing)
       : problem_(problem), o_(o), branch_(branch), n_(problem.size), checkpointing_(checkpointing) {
     cornerStep_ = std::max(16 * o.minStep, 1e-3);
+    krylov_ = useKrylov(problem, o);
     makeGroups();
   }
 
@@ -90,38 +119,61 @@ private:
     });
   }
   // [J, dF/dp] at z (dF/dp by a forward difference from F = F(z)).
-  bool jacobian(const Point& z, const Eigen::VectorXd& F, Eigen::MatrixXd& A) {
+  bool jacobian(const Point& z, const Eigen::VectorXd& F, Bordered& A) {
     ++stats().jacobians;
+    const double eps = 1.5e-8 * std::max(std::abs(z.p), metric_.sp);
+    Eigen::VectorXd Fe;
+    if (krylov_) {
+      A.dense.resize(0, 0);
+      if (!guarded(stats().jacobianSeconds, [&] {
+            A.op = problem_.jacobianOperator(z.x, z.p);
+            return bool(A.op);
+          }))
+        return false;
+      if (!guarded(stats().preconditionerSeconds, [&] {
+            A.op->preparePreconditioner();
+            return true;
+          }))
+        return false;
+      if (!residual({z.x, z.p + eps}, Fe)) return false;
+      A.column = (Fe - F) / eps;
+      return true;
+    }
     Eigen::MatrixXd& J = jacobianWork_;  // kept: a fresh n x n block per call is page faults
     if (!guarded(stats().jacobianSeconds, [&] {
           problem_.jacobian(z.x, z.p, J);
           return J.allFinite();
         }))
       return false;
-    const double eps = 1.5e-8 * std::max(std::abs(z.p), metric_.sp);
-    Eigen::VectorXd Fe;
     if (!residual({z.x, z.p + eps}, Fe)) return false;
-    A.resize(n_ + 1, n_ + 1);
-    A.topLeftCorner(n_, n_) = J;
-    A.topRightCorner(n_, 1) = (Fe - F) / eps;
+    A.dense.resize(n_ + 1, n_ + 1);
+    A.dense.topLeftCorner(n_, n_) = J;
+    A.dense.topRightCorner(n_, 1) = (Fe - F) / eps;
     return true;
   }
-  // Takes A's storage (A is refilled by jacobian() before its next use).
-  void factor(Eigen::MatrixXd& A, DenseLu& lu) {
+  // Takes A's storage (A is refilled by jacobian() before its next use). For an
+  // operator: the bordered preconditioner's set-up (one application of P).
+  void factor(Bordered& A, BorderedFactors& lu) {
     Timer t;
+    if (A.op) {
+      lu.krylov = BorderedKrylovSolve(A.op, A.column, A.row, A.corner, o_.krylov);
+      stats().preconditionerSeconds += t.seconds();
+      return;
+    }
     ++stats().factorizations;
-    lu.computeTaking(A, o_.mixedPrecisionLu ? DenseLu::Precision::Auto : DenseLu::Precision::Double);
+    lu.krylov = BorderedKrylovSolve();
+    lu.lu.computeTaking(A.dense, o_.mixedPrecisionLu ? DenseLu::Precision::Auto : DenseLu::Precision::Double);
     stats().factorSeconds += t.seconds();
   }
   // The Newton step's factors: the ones kept from the iteration or point before where
   // they still serve (DenseLu::reuseFactorsFor: the solves iterate with them), else A's.
-  void factorOrReuse(Eigen::MatrixXd& A, Correction& c) {
+  void factorOrReuse(Bordered& A, Correction& c) {
     if (reusingFactors()) {
       if (!c.factored) {
         c.lu = std::move(kept_);
-        kept_ = DenseLu();
+        kept_ = BorderedFactors();
       }
-      if (c.lu.reuseFactorsFor(A)) {
+      if (c.lu.lu.reuseFactorsFor(A.dense)) {
         ++stats().reusedFactorizations;
         return;
       }
@@ -133,7 +185,7 @@ private:
   // and continued is the same, to the bit, as one that ran through (the checkpoints
   // are saved only there).
   static constexpr std::size_t kFreshFactorsEvery = 8;
-  bool reusingFactors() const { return o_.reuseFactorizations && n_ + 1 >= DenseLu::reuseFrom; }
+  bool reusingFactors() const { return !krylov_ && o_.reuseFactorizations && n_ + 1 >= DenseLu::reuseFrom; }
   bool atFreshFactors() const { return !reusingFactors() || branch_.points.size() % kFreshFactorsEvery == 0; }
   // The factors of a finished correction kept for the next one.
   void keepFactors(Correction& c) {
@@ -144,7 +196,17 @@ private:
   // lu's solve, timed; a solve that made the factorisation again (in double: DenseLu's
   // fallback from single precision; or of a matrix whose kept factors did not serve)
   // is counted with the factorisations.
-  Eigen::VectorXd solve(const DenseLu& lu, const Eigen::VectorXd& rhs) {
+  Eigen::VectorXd solve(const BorderedFactors& factors, const Eigen::VectorXd& rhs) {
+    if (factors.isKrylov()) {
+      const long before = factors.krylov.iterations();
+      Timer t;
+      Eigen::VectorXd x = factors.krylov.solve(rhs);
+      stats().solveSeconds += t.seconds();
+      stats().krylovIterations += factors.krylov.iterations() - before;
+      ++stats().krylovSolves;
+      return x;
+    }
+    const DenseLu& lu = factors.lu;
     const int before = lu.doubleFallbacks(), refactoredBefore = lu.staleRefactorizations();
     const long krylovBefore = lu.krylovIterations();
     Timer t;
@@ -165,7 +227,7 @@ private:
   ContinuationStatistics& stats() { return branch_.statistics; }
 
   // The unit tangent at z (metric_), oriented along `along` (a direction in (x, p)).
-  bool tangentFrom(const DenseLu& lu, const Point& along, Point& t) {
+  bool tangentFrom(const BorderedFactors& lu, const Point& along, Point& t) {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
     rhs(n_) = 1;
     const Eigen::VectorXd v = solve(lu, rhs);
@@ -179,11 +241,10 @@ private:
   }
   bool freshTangent(const Point& z, const Point& along, Point& t) {
     Eigen::VectorXd F;
-    Eigen::MatrixXd A;
+    Bordered A;
     if (!residual(z, F) || !jacobian(z, F, A)) return false;
-    A.bottomLeftCorner(1, n_) = along.x.cwiseProduct(metric_.w).transpose();
-    A(n_, n_) = along.p / (metric_.sp * metric_.sp);
-    DenseLu lu;
+    A.setBottom(along.x.cwiseProduct(metric_.w), along.p / (metric_.sp * metric_.sp));
+    BorderedFactors lu;
     factor(A, lu);
     return tangentFrom(lu, along, t);
   }
@@ -229,7 +290,8 @@ private:
   const ContinuationProblem& problem_;
   const ContinuationOptions& o_;
   Eigen::MatrixXd jacobianWork_;
-  DenseLu kept_;  // the last correction's factors (reuseFactorizations)
+  BorderedFactors kept_;  // the last correction's factors (reuseFactorizations)
+  bool krylov_ = false;   // Newton steps by GMRES on the problem's operator (useKrylov)
   Branch& branch_;
   const int n_;
   Metric metric_;
@@ -280,7 +342,7 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
     return (r * r - ds * ds) / (2 * ds);
   };
   Eigen::VectorXd F, Ft, rhs(n_ + 1);
-  Eigen::MatrixXd A;
+  Bordered A;
   if (!residual(z, F)) return c;
   int growths = 0;
   std::vector<double> history;  // ||F|| at each iteration
@@ -309,13 +371,8 @@ Correction Tracer::correct(Constraint kind, const Point& z0, const Point& t0, do
     if (history.size() >= 4 && history.back() > 0.5 * *std::min_element(history.begin(), history.end() - 3)) break;
     ++stats().newtonIterations;
     if (!jacobian(z, F, A)) return c;
-    if (kind == Constraint::Plane) {
-      A.bottomLeftCorner(1, n_) = t0.x.cwiseProduct(metric_.w).transpose();
-      A(n_, n_) = t0.p / sp2;
-    } else {
-      A.bottomLeftCorner(1, n_) = ((z.x - z0.x).cwiseProduct(metric_.w) / ds).transpose();
-      A(n_, n_) = (z.p - z0.p) / (sp2 * ds);
-    }
+    if (kind == Constraint::Plane) A.setBottom(t0.x.cwiseProduct(metric_.w), t0.p / sp2);
+    else A.setBottom((z.x - z0.x).cwiseProduct(metric_.w) / ds, (z.p - z0.p) / (sp2 * ds));
     factorOrReuse(A, c);
     c.factored = true;
     rhs << -F, -g;
@@ -458,7 +515,7 @@ bool Tracer::fixedParameterStep(const Point& z0, const Point& t0, Point& z1) {
     const bool againstTangent = sign != along;
     for (double f : {1.0, 0.25, 4.0}) {
       z1 = {z0.x, z0.p + sign * f * dp};  // from x0: the tangent is poor where the arclength steps failed
-      if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged) continue;
+      if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12, nullptr, o_.linearSolver).converged) continue;
       const double distance = metric_.norm(metric_.difference(z1, z0));
       if (againstTangent && distance > kNear) continue;
       if (!onTracedPath(z1, distance)) return true;
@@ -485,7 +542,7 @@ bool Tracer::passCreep(Point& z, Point& t, double dir) {
   if (hi - lo >= 1e-5 * metric_.sp) return false;
   for (double f : {1e-3, 2.5e-4}) {
     Point z1{z.x, z.p + dir * f * metric_.sp};
-    if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12).converged) continue;
+    if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12, nullptr, o_.linearSolver).converged) continue;
     const Point chord = metric_.difference(z1, z);
     const double distance = metric_.norm(chord);
     Point t1;
@@ -535,7 +592,7 @@ bool Tracer::endAt(double p, const Point& inside, const Point& outside) {
   const double s = (p - inside.p) / (outside.p - inside.p);
   for (const Eigen::VectorXd& start : {Eigen::VectorXd(inside.x + s * (outside.x - inside.x)), inside.x, outside.x}) {
     Eigen::VectorXd x = start;
-    if (solveNewton(problem_, x, p, o_.tolerance, 30).converged) {
+    if (solveNewton(problem_, x, p, o_.tolerance, 30, nullptr, o_.linearSolver).converged) {
       append({std::move(x), p});
       return true;
     }
@@ -593,7 +650,7 @@ void Tracer::restore(const TraceState& s, Point& z, Point& t, double& ds) {
 // reason set where there is none.
 bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   z = {guess, o_.from};
-  const auto start = solveNewton(problem_, z.x, o_.from, o_.tolerance, 100);
+  const auto start = solveNewton(problem_, z.x, o_.from, o_.tolerance, 100, nullptr, o_.linearSolver);
   if (!start.converged) {
     branch_.stopReason = noConvergedStart(start, o_.tolerance);
     return false;
@@ -615,14 +672,13 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   }
   setWeights();
   Eigen::VectorXd F;
-  Eigen::MatrixXd A;
+  Bordered A;
   if (!residual(z, F) || !jacobian(z, F, A)) {
     branch_.stopReason = "the residual or Jacobian failed at the start of the range";
     return false;
   }
-  A.bottomRows(1).setZero();
-  A(n_, n_) = 1;
-  DenseLu lu;
+  A.setBottom(Eigen::VectorXd::Zero(n_), 1.0);
+  BorderedFactors lu;
   factor(A, lu);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_ + 1);
   rhs(n_) = dir;
@@ -789,7 +845,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
   while (true) {
     if (int(branch_.points.size()) < o_.maxSteps) {
       progress();
-      if (atFreshFactors()) kept_ = DenseLu();
+      if (atFreshFactors()) kept_ = BorderedFactors();
       save(t, ds);
       if (passCreep(z, t, dir)) {
         ds = cornerStep_;

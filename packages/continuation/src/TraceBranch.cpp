@@ -18,6 +18,17 @@ std::string noConvergedStart(const NewtonResult& start, double tolerance) {
   return why.str();
 }
 
+bool useKrylov(const ContinuationProblem& problem, const ContinuationOptions& o) {
+  using S = ContinuationOptions::LinearSolver;
+  if (o.linearSolver == S::Dense) return false;
+  if (!problem.jacobianOperator) {
+    if (o.linearSolver == S::Krylov)
+      throw InputError("continuation/linear_solver", "Krylov needs the problem's Jacobian as an operator (jacobianOperator)");
+    return false;
+  }
+  return o.linearSolver == S::Krylov || problem.size >= ContinuationOptions::krylovFrom;
+}
+
 ContinuationOptions locaOptions() {
   ContinuationOptions o;
   o.engine = ContinuationOptions::Engine::Loca;
@@ -27,7 +38,7 @@ ContinuationOptions locaOptions() {
 
 std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   ContentHash h;
-  h.add(std::string("cyclone trace 5")).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
+  h.add(std::string("cyclone trace 6")).add(int(useKrylov(problem, o))).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
   h.add(o.initialStep).add(o.minStep).add(o.maxStep).add(o.maxSteps).add(o.tolerance).add(o.maxNewtonIterations);
   h.add(o.turnAngle).add(int(o.mixedPrecisionLu)).add(int(o.reuseFactorizations)).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
   h.add(int(o.restartWhereTheCorrectorJumps)).add(o.locaParameterPerturbation).add(int(o.lineSearch)).add(int(bool(problem.measure)));

@@ -238,8 +238,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
   checkContactPairs(mesh, models, spec.contact);
   const auto element = frictionElement(spec.contact);
-  const int samples = spec.samples > 0 ? spec.samples
-                                       : std::max(element->recommendedSamples(), 4 * harmonics.maxHarmonic() + 1);
+  const int samples = spec.samples > 0 ? spec.samples : std::max(element->recommendedSamples(), harmonics.nonsmoothSamples());
   ForcedResponseSetup setup;
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
   auto& hb = *setup.system;

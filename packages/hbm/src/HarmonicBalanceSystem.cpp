@@ -491,6 +491,79 @@ void HarmonicBalanceSystem::addElementForces(const Eigen::VectorXd& X, double om
   }
 }
 
+Eigen::MatrixXd HarmonicBalanceSystem::linearHarmonicBlock(double omega, std::size_t i) const {
+  if (!hasJacobianBlocks())
+    throw InputError("harmonic balance", "the linear part as a dynamic stiffness needs the matrix form or useDynamicStiffness");
+  const int n = numDofs();
+  const auto& H = aft_->harmonics();
+  const int h = H.harmonics().at(i);
+  const std::vector<int> slots = h == 0 ? std::vector<int>{H.cosIndex(0)} : std::vector<int>{H.cosIndex(h), H.sinIndex(h)};
+  const int m = int(slots.size());
+  Eigen::MatrixXd P(n * m, n * m);
+  if (receptance_) {
+    const HarmonicBlocks& bl = harmonicBlocks(omega, true);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        if (m == 1) {
+          P(a, b) = bl.re[i](a, b);
+          continue;
+        }
+        const double re = bl.re[i](a, b), im = bl.im[i](a, b);  // as harmonicOperatorInto
+        P(2 * a, 2 * b) = re, P(2 * a, 2 * b + 1) = im, P(2 * a + 1, 2 * b) = -im, P(2 * a + 1, 2 * b + 1) = re;
+      }
+    return P;
+  }
+  // The matrix form's operators are block diagonal per harmonic (linearOperatorInto), so
+  // their harmonic-h blocks are products of the m x m blocks of D and S.
+  auto sub = [&](const Eigen::MatrixXd& A) {
+    Eigen::MatrixXd B(m, m);
+    for (int r = 0; r < m; ++r)
+      for (int q = 0; q < m; ++q) B(r, q) = A(slots[r], slots[q]);
+    return B;
+  };
+  const Eigen::MatrixXd D = omega * sub(aft_->derivativeMatrix()), D2 = D * D, I = Eigen::MatrixXd::Identity(m, m);
+  const bool cyclic = isCyclic();
+  const Eigen::MatrixXd S = cyclic ? sub(next_) : Eigen::MatrixXd::Zero(m, m), ST = S.transpose();
+  const Eigen::MatrixXd SD = S * D, STD = ST * D, SD2 = S * D2, STD2 = ST * D2;
+  P.setZero();
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      auto block = P.block(a * m, b * m, m, m);
+      block += K_(a, b) * I + C_(a, b) * D + M_(a, b) * D2;
+      if (!cyclic) continue;
+      const auto &Kn = cyclic_.Knext, &Cn = cyclic_.Cnext, &Mn = cyclic_.Mnext;
+      if (Kn.size()) block += Kn(a, b) * S + Kn(b, a) * ST;
+      if (Cn.size()) block += Cn(a, b) * SD + Cn(b, a) * STD;
+      if (Mn.size()) block += Mn(a, b) * SD2 + Mn(b, a) * STD2;
+    }
+  return P;
+}
+
+std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eigen::VectorXd& X, double omega) const {
+  if (!hasJacobianBlocks())
+    throw InputError("harmonic balance", "a Jacobian kept as blocks needs the matrix form or useDynamicStiffness");
+  const int n = numDofs(), nc = numCoefficients();
+  if (X.size() != n * nc) throw Error("harmonic balance: unknown vector of the wrong size");
+  const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), nc, n);
+  const Eigen::MatrixXd& S = next_;
+  std::vector<JacobianBlocks::ElementBlock> blocks;
+  blocks.reserve(elements_.size());
+  Eigen::MatrixXd F;
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& c = elements_[i];
+    const bool across = c.Wnext.size() != 0;
+    Eigen::MatrixXd Wc = Xm * c.W;
+    if (across) Wc.noalias() += S * (Xm * c.Wnext);
+    JacobianBlocks::ElementBlock b;
+    b.element = i;
+    c.element->harmonicForce(*aft_, Wc, omega, F, &b.jacobian);
+    for (int a = 0; a < n; ++a)
+      if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) b.support.push_back(a);
+    blocks.push_back(std::move(b));
+  }
+  return std::make_unique<JacobianBlocks>(*this, omega, std::move(blocks));
+}
+
 Eigen::VectorXd HarmonicBalanceSystem::linearSolution(double omega, double excitationScale) const {
   if (receptance_) {
     Eigen::VectorXd X;

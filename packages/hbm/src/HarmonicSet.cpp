@@ -50,4 +50,10 @@ int HarmonicSet::sinIndex(int h) const {
   return cosIndex(h) + 1;
 }
 
+int HarmonicSet::nonsmoothSamples() const {
+  int n = 1;
+  while (n < 8 * minimumSamples()) n *= 2;
+  return n;
+}
+
 }  // namespace cyclone::hbm

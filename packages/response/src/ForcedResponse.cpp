@@ -211,7 +211,7 @@ ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedRespo
 ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
   Timer timer;
   logProblem(setup);
-  checkDenseSize(*setup.system, setup.harmonicsKey);
+  checkSolverSize(*setup.system, setup.harmonicsKey, setup.continuation.linearSolver);
   const StartingPoint start = findStartingPoint(setup);
   if (start.x.size() > 0) {
     std::ostringstream msg;

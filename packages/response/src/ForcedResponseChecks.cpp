@@ -45,27 +45,40 @@ SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::Branch
   return check;
 }
 
-// The solvers hold about four dense matrices of the unknowns' size (the Jacobian, the
+// The dense solvers hold about four matrices of the unknowns' size (the Jacobian, the
 // bordered one and the factors of two of them): refused where they would not fit in
 // this machine's memory, a warning where each Newton iteration takes seconds (one
-// Jacobian and LU took about 1 s at 2349 unknowns on the default disc).
-void checkDenseSize(const hbm::HarmonicBalanceSystem& hb, const std::string& harmonicsKey) {
+// Jacobian and LU took about 1 s at 2349 unknowns on the default disc). Krylov steps
+// (the Jacobian's blocks) hold per harmonic two matrices of its 1 or 2 coefficients of
+// every DOF (the linear block and its LU), the elements' own Jacobians and GMRES's basis.
+void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& harmonicsKey,
+                     continuation::ContinuationOptions::LinearSolver solver) {
   constexpr double kMaxGigabytes = 12, kSlowUnknowns = 5000;
-  const double n = hb.numUnknowns(), gigabytes = 4 * 8 * n * n / 1e9;
+  const double n = hb.numUnknowns();
+  using S = continuation::ContinuationOptions::LinearSolver;
+  const bool krylov = hb.hasJacobianBlocks() && solver != S::Dense &&
+                      (solver == S::Krylov || n >= continuation::ContinuationOptions::krylovFrom);
+  double gigabytes = 4 * 8 * n * n / 1e9;
+  if (krylov) {
+    const double dofs = hb.numDofs(), nc = hb.numCoefficients();
+    double elements = 0;
+    for (const auto& e : hb.elements()) elements += std::pow(e.element->dimension() * nc, 2);
+    gigabytes = 8 * (2 * 4 * dofs * dofs * hb.aft().harmonics().size() + elements +
+                     (continuation::KrylovOptions{}.restart + 10) * n) / 1e9;
+  }
   std::ostringstream what;
   what.precision(3);
   what << hb.aft().harmonics().size() << " harmonics (up to " << hb.aft().harmonics().maxHarmonic() << ") on "
        << hb.numDofs() << " DOFs make " << hb.numUnknowns() << " unknowns";
   if (gigabytes > kMaxGigabytes) {
-    what << ": the dense Jacobian and its factors would take " << gigabytes << " GB (at most " << kMaxGigabytes
-         << " here); use fewer harmonics";
+    what << ": the " << (krylov ? "Jacobian's blocks and GMRES's basis" : "dense Jacobian and its factors")
+         << " would take " << gigabytes << " GB (at most " << kMaxGigabytes << " here); use fewer harmonics";
     throw InputError(harmonicsKey, what.str());
   }
-  if (n > kSlowUnknowns)
+  if (!krylov && n > kSlowUnknowns)
     log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
               std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");
 }
-
 
 namespace {
 
@@ -75,10 +88,20 @@ hbm::HarmonicSet withHarmonic(const hbm::HarmonicSet& set, int h) {
   list.push_back(h);
   return hbm::HarmonicSet(list);
 }
+
+// `set` and every harmonic above its highest up to H.
+hbm::HarmonicSet withHarmonicsUpTo(const hbm::HarmonicSet& set, int H) {
+  std::vector<int> list = set.harmonics();
+  for (int h = set.maxHarmonic() + 1; h <= H; ++h) list.push_back(h);
+  return hbm::HarmonicSet(list);
+}
 std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
                                                          const hbm::HarmonicSet& raised) {
-  auto system = hbm::withHarmonics(hb, raised, std::max(hb.aft().numSamples(), raised.minimumSamples()));
-  checkDenseSize(*system, "harmonics_check_to");
+  bool nonsmooth = false;  // friction or contacts: samples that grow with the harmonics (HarmonicSet::nonsmoothSamples)
+  for (const auto& e : hb.elements()) nonsmooth = nonsmooth || e.element->recommendedSamples() > 0;
+  const int samples = std::max(hb.aft().numSamples(), nonsmooth ? raised.nonsmoothSamples() : raised.minimumSamples());
+  auto system = hbm::withHarmonics(hb, raised, samples);
+  checkSolverSize(*system, "harmonics_check_to");
   return system;
 }
 
@@ -99,6 +122,10 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   problem.jacobian = [byOmega](const Eigen::VectorXd& x, double f, Eigen::MatrixXd& J) {
     byOmega.jacobian(x, 2 * M_PI * f, J);
   };
+  if (byOmega.jacobianOperator)
+    problem.jacobianOperator = [byOmega](const Eigen::VectorXd& x, double f) {
+      return byOmega.jacobianOperator(x, 2 * M_PI * f);
+    };
   const int nc = system.numCoefficients();
   const auto& H = system.aft().harmonics();
   continuation::PeakSearchOptions o;
@@ -114,19 +141,21 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   return continuation::findLocalPeak(problem, X, hz, measure, o);
 }
 
-// The solution X of the level below, carried to `system` (one harmonic more, h), solved
-// at `hz`: Newton, or where it stalls the homotopy that switches the new harmonic's
-// equations on (HomotopySolve.hpp). X is updated in place.
+// The solution X of the level below, carried to `system` (the harmonics `newHarmonics`
+// more), solved at `hz`: Newton, or where it stalls the homotopy that switches the new
+// harmonics' equations on (HomotopySolve.hpp). X is updated in place.
 continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& system, Eigen::VectorXd& X, double hz,
-                                          double excitationScale, int h, double tolerance) {
+                                          double excitationScale, const std::vector<int>& newHarmonics,
+                                          double tolerance) {
   const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
   const auto& set = system.aft().harmonics();
   const int nc = system.numCoefficients();
   std::vector<int> added;
-  for (int d = 0; d < system.numDofs(); ++d) {
-    added.push_back(d * nc + set.cosIndex(h));
-    if (h > 0) added.push_back(d * nc + set.sinIndex(h));
-  }
+  for (int d = 0; d < system.numDofs(); ++d)
+    for (int h : newHarmonics) {
+      added.push_back(d * nc + set.cosIndex(h));
+      if (h > 0) added.push_back(d * nc + set.sinIndex(h));
+    }
   return continuation::solveByHomotopy(byOmega, X, 2 * M_PI * hz, added, tolerance);
 }
 
@@ -169,9 +198,17 @@ std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& 
   return {0, Eigen::VectorXd()};
 }
 
-// The peak of the curve with H, then with H + 1, H + 2, ... up to `upTo`, each level's
-// search started from the one below's peak (its solution carried to one more
-// harmonic), or from the level below's flank when Newton finds nothing there (its
+// The next level of the harmonics check: one harmonic more up to 8, then a quarter more
+// (10, 12, 15, 18, 22, 27, 33, 41, 51, ...: a hammering contact's peak needs tens of
+// harmonics, and one level costs a peak search), never beyond upTo.
+int nextHarmonicLevel(int H, int upTo) {
+  if (H >= upTo) return upTo + 1;
+  return std::min(upTo, H < 8 ? H + 1 : H + H / 4);
+}
+
+// The peak of the curve with H, then with the next levels (nextHarmonicLevel) up to
+// `upTo`, each level's search started from the one below's peak (its solution carried
+// to the raised harmonics), or from the level below's flank when Newton finds nothing there (its
 // search path; for the first raised level also `curve`, the traced points). Stops at
 // a level whose peak is not found (a fold, no solution).
 std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb, const Eigen::VectorXd& x, double hz,
@@ -183,11 +220,14 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
   hbm::HarmonicSet set = hb.aft().harmonics();
   Eigen::VectorXd X = x;
   SolvedPoints lowerPoints;
-  for (int H = set.maxHarmonic(); H <= upTo; ++H) {
+  int below = set.maxHarmonic();
+  for (int H = set.maxHarmonic(); H <= upTo; below = H, H = nextHarmonicLevel(H, upTo)) {
     Timer timer;
     const hbm::HarmonicBalanceSystem* lower = system;
+    std::vector<int> newHarmonics;
     if (H > set.maxHarmonic()) {
-      const hbm::HarmonicSet raised = withHarmonic(set, H);
+      for (int h = set.maxHarmonic() + 1; h <= H; ++h) newHarmonics.push_back(h);
+      const hbm::HarmonicSet raised = withHarmonicsUpTo(set, H);
       lowerSystem = std::move(current);  // keeps `lower` alive
       current = raisedSystem(hb, raised);
       X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
@@ -199,12 +239,12 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
     level.startHz = hz;
     bool started = true;  // X solves this level at hz (the search's own Newton would only repeat a failure)
     if (system != lower) {
-      const auto carried = solveCarried(*system, X, hz, scale, H, tolerance);
+      const auto carried = solveCarried(*system, X, hz, scale, newHarmonics, tolerance);
       started = carried.newton.converged;
       if (carried.blockStart || carried.byHomotopy) {
-        const std::string how = carried.blockStart ? "the added harmonic solved with the others held, then " : "";
+        const std::string how = carried.blockStart ? "the added harmonics solved with the others held, then " : "";
         log::info("harmonics check: H " + std::to_string(H) + " at " + std::to_string(hz) + " Hz " +
-                  (started ? "solved from H " + std::to_string(H - 1) + " by " + how +
+                  (started ? "solved from H " + std::to_string(below) + " by " + how +
                                  (carried.byHomotopy ? "the homotopy (" + std::to_string(carried.points) + " points)"
                                                      : "Newton")
                            : "not solved: " + carried.reason));

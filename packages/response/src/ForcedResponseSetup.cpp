@@ -8,7 +8,14 @@
 namespace cyclone::response {
 
 namespace {
-// Residual rows are divided by the size of the forces acting on them: the
+
+// The harmonic balance Jacobian's blocks as the continuation's operator, its rows scaled
+// as the residual's.
+std::shared_ptr<continuation::JacobianOperator> jacobianOperator(std::unique_ptr<hbm::JacobianBlocks> blocks,
+                                                                 const Eigen::VectorXd& f) {
+  blocks->scaleRows(f.cwiseInverse());
+  return std::make_shared<continuation::JacobianOperatorOf<hbm::JacobianBlocks>>(std::move(blocks));
+}// Residual rows are divided by the size of the forces acting on them: the
 // mean (harmonic 0) rows by the static loads and mean excitation, the others
 // by the dynamic excitation. The continuation's tolerance is then relative,
 // and a 1e9 N preload neither swamps a 10 N excitation nor is held to its
@@ -65,6 +72,10 @@ continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalance
     hb.residual(X, byForce ? omega : p, R, &J, byForce ? p : s);
     J = f.cwiseInverse().asDiagonal() * J;
   };
+  if (hb.hasJacobianBlocks())
+    problem.jacobianOperator = [&hb, byForce, omega, f](const Eigen::VectorXd& X, double p) {
+      return jacobianOperator(hb.jacobianBlocks(X, byForce ? omega : p), f);
+    };
   return problem;
 }
 
@@ -128,6 +139,13 @@ continuation::ContinuationProblem continuationProblem(ForcedResponseSetup& setup
     setup.system->residual(X, w, R, &J, s);
     J = f.cwiseInverse().asDiagonal() * J;
   };
+  // A rebuilt system is replaced at every other parameter value, and the operator refers
+  // to the system it came from (its elements' maps): that parameter keeps the formed Jacobian.
+  if (setup.system->hasJacobianBlocks() && setup.parameter != ForcedResponseSetup::Parameter::Rebuilt)
+    problem.jacobianOperator = [&setup, f](const Eigen::VectorXd& X, double p) {
+      const double w = setup.apply(p).first;
+      return jacobianOperator(setup.system->jacobianBlocks(X, w), f);
+    };
   // A frequency curve's resonance peaks (of the first output DOF's max |x(t)|, the
   // summary's peak) are located exactly on the path, not left between two samples.
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && !setup.outputDofs.empty()) {

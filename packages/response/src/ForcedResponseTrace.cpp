@@ -158,6 +158,10 @@ continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::Vect
     base.jacobian(scale * Y, p, J);
     J *= scale;
   };
+  if (base.jacobianOperator)
+    scaled.jacobianOperator = [base, scale](const Eigen::VectorXd& Y, double p) {
+      return std::make_shared<continuation::ScaledJacobianOperator>(base.jacobianOperator(scale * Y, p), scale);
+    };
   if (base.measure) scaled.measure = [base, scale](const Eigen::VectorXd& Y) { return base.measure(scale * Y); };
   auto branch = continuation::traceBranch(scaled, start / scale, setup.continuation);
   for (auto& point : branch.points) point.x *= scale;

@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/continuation/JacobianOperator.hpp"
+#include "cyclone/continuation/KrylovSolve.hpp"
+
 namespace cyclone::continuation {
 
 class TraceCheckpoints;  // TraceCheckpoint.hpp
@@ -39,6 +42,11 @@ struct ContinuationProblem {
   /// Optional dF/dp(x; p): LOCA's engine uses it instead of its difference in p (one
   /// evaluation of F per Newton iteration of its corrector).
   std::function<void(const Eigen::VectorXd& x, double p, Eigen::VectorXd& dFdp)> parameterDerivative;
+  /// Optional: dF/dx(x; p) as an operator with a preconditioner, never formed
+  /// (JacobianOperator.hpp). Where the options choose Krylov (useKrylov), the
+  /// predictor-corrector's and solveNewton's steps are GMRES solves with it, and
+  /// `jacobian` is not called.
+  std::function<std::shared_ptr<JacobianOperator>(const Eigen::VectorXd& x, double p)> jacobianOperator;
 };
 
 struct ContinuationOptions {
@@ -72,6 +80,14 @@ struct ContinuationOptions {
   /// LU's accuracy, and factored only where that does not converge or stops paying
   /// (DenseLu::reuseFactorsFor): the same iterates to rounding, fewer LUs.
   bool reuseFactorizations = true;
+  /// How Newton steps are solved: Dense (the Jacobian formed and factored by LU), Krylov
+  /// (GMRES on the problem's jacobianOperator, preconditioned by its preconditioner), or
+  /// Auto: Krylov for problems with an operator from krylovFrom unknowns, where its cost,
+  /// about linear in the unknowns, falls below the LU's cubic one (docs/solvers.md).
+  enum class LinearSolver { Auto, Dense, Krylov };
+  LinearSolver linearSolver = LinearSolver::Auto;
+  static constexpr int krylovFrom = 1000;
+  KrylovOptions krylov;
   /// LOCA's rescaling of the parameter against the unknowns in the arclength. Off for
   /// unknowns scaled to order one beforehand (the FE disc): LOCA's rescaling then
   /// shrank the steps near a resonance to a creep (2000 points short of the peak).
@@ -120,6 +136,11 @@ struct ContinuationStatistics {
   /// iterations (their time is in solveSeconds; a factorisation they ended in is counted
   /// with the factorisations).
   long reusedFactorizations = 0, krylovIterations = 0;
+  /// Krylov (ContinuationOptions::linearSolver): the GMRES solves on the operator (their
+  /// iterations in krylovIterations, time in solveSeconds) and the preconditioners'
+  /// set-up (factorisation of their blocks).
+  long krylovSolves = 0;
+  double preconditionerSeconds = 0;
   double residualSeconds = 0, jacobianSeconds = 0, factorSeconds = 0, solveSeconds = 0, seconds = 0;
 };
 
@@ -143,6 +164,9 @@ struct Branch {
   std::vector<std::size_t> segmentStarts;
   ContinuationStatistics statistics;  ///< PredictorCorrector only
 };
+
+/// Newton steps by GMRES on problem.jacobianOperator (see ContinuationOptions::linearSolver).
+bool useKrylov(const ContinuationProblem& problem, const ContinuationOptions& options);
 
 /// Traces from x0 (a solution, or a good guess, at p = options.from; it is
 /// corrected by solveNewton (NewtonSolve.hpp) before LOCA takes it, whose first Newton solve has no

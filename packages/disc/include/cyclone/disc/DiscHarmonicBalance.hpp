@@ -43,7 +43,7 @@ struct DiscExcitationSpec {
 struct DiscResponseSpec {
   int engineOrder = 0;
   std::vector<int> harmonics{0, 1, 2, 3};
-  int samples = 0;  ///< 0: what the friction elements recommend
+  int samples = 0;  ///< 0: what the friction elements recommend, and at least HarmonicSet::nonsmoothSamples
   ShroudContactSpec contact;
   ShroudGapSpec gap;
   DiscExcitationSpec excitation;

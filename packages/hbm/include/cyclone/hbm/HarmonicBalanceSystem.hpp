@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "cyclone/hbm/Aft.hpp"
+#include "cyclone/hbm/JacobianBlocks.hpp"
 #include "cyclone/hbm/NonlinearElement.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/hbm/ScalarElement.hpp"
@@ -104,6 +105,16 @@ public:
   /// parameter for force-level studies), and optionally dR/dX.
   void residual(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* jacobian,
                 double excitationScale = 1.0) const;
+  /// The Jacobian dR/dX at X kept as its blocks (JacobianBlocks: applied and
+  /// preconditioned harmonic by harmonic, never formed), for the matrix form and the
+  /// dynamic-stiffness receptance form (InputError in the compliance form, whose rows
+  /// A dF_nl/dX couple every harmonic: see hasJacobianBlocks). The blocks refer to this
+  /// system, which must outlive them.
+  std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega) const;
+  bool hasJacobianBlocks() const { return !receptance_ || stiffnessForm_; }
+  /// Harmonic index i's block of Z(omega) (the harmonic's 1 or 2 coefficients of every
+  /// DOF; local index a m + j, m = 1 for the mean, 2 otherwise).
+  Eigen::MatrixXd linearHarmonicBlock(double omega, std::size_t i) const;
   /// The elements' force coefficients F_nl(X) and dF_nl/dX alone (both forms).
   void nonlinearForces(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& F, Eigen::MatrixXd* jacobian) const;
   /// The solution without the nonlinear elements.

@@ -33,6 +33,10 @@ public:
   /// Fewest time samples per period that resolve every retained harmonic
   /// without aliasing: 2 maxHarmonic + 1.
   int minimumSamples() const { return 2 * maxHarmonic_ + 1; }
+  /// Samples for nonsmooth element laws (contacts, friction: events between samples
+  /// shift with the sampling): the power of two from 8 (2 maxHarmonic + 1), so that the
+  /// samples grow with the harmonics, eight per period of the highest.
+  int nonsmoothSamples() const;
 
 private:
   std::vector<int> harmonics_;

@@ -75,9 +75,13 @@ HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Br
 /// The larger of the last two raises' changes of the peak when both are at most `target`
 /// (the three last levels found), else -1: where harmonics by an error target stop.
 double levelsMeetTarget(const std::vector<HarmonicsLevel>& levels, double target);
-/// The solvers hold about four dense matrices of the unknowns' size: an InputError
-/// naming `harmonicsKey` where they would not fit in this machine's memory, a warning
-/// where each Newton iteration takes seconds.
-void checkDenseSize(const hbm::HarmonicBalanceSystem& system, const std::string& harmonicsKey);
+/// What the Newton steps' solver holds (the dense one about four matrices of the
+/// unknowns' size; Krylov, where the system has Jacobian blocks and `solver` chooses it,
+/// per harmonic two blocks over the DOFs and GMRES's basis): an InputError naming
+/// `harmonicsKey` where it would not fit in this machine's memory, a warning where each
+/// dense Newton iteration takes seconds.
+void checkSolverSize(const hbm::HarmonicBalanceSystem& system, const std::string& harmonicsKey,
+                     continuation::ContinuationOptions::LinearSolver solver =
+                         continuation::ContinuationOptions::LinearSolver::Auto);
 
 }  // namespace cyclone::response

@@ -1,0 +1,205 @@
+#include "cyclone/hbm/JacobianBlocks.hpp"
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+
+namespace cyclone::hbm {
+
+namespace {
+
+// The coefficient slots of harmonic index i: {cos} for the mean, {cos, sin} otherwise.
+std::vector<int> slotsOf(const HarmonicSet& H, std::size_t i) {
+  const int h = H.harmonics()[i];
+  if (h == 0) return {H.cosIndex(0)};
+  return {H.cosIndex(h), H.sinIndex(h)};
+}
+
+}  // namespace
+
+JacobianBlocks::JacobianBlocks(const HarmonicBalanceSystem& system, double omega, std::vector<ElementBlock> elements)
+    : system_(system), omega_(omega), elements_(std::move(elements)) {
+  const auto& H = system_.aft().harmonics();
+  for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
+    slots_.push_back(slotsOf(H, i));
+    linear_.push_back(system_.linearHarmonicBlock(omega_, i));
+  }
+}
+
+int JacobianBlocks::size() const { return system_.numUnknowns(); }
+
+void JacobianBlocks::scaleRows(Eigen::VectorXd s) {
+  if (s.size() != size()) throw Error("JacobianBlocks: a row scale of the wrong size");
+  rowScale_ = std::move(s);
+}
+
+void JacobianBlocks::blendRows(const std::vector<int>& rows, double scale, double shift) {
+  for (int i : rows)
+    if (i < 0 || i >= size()) throw Error("JacobianBlocks: a blended row out of range");
+  blendedRows_ = rows, blendScale_ = scale, blendShift_ = shift;
+  blockLu_.clear();
+}
+
+// J v = Z v + sum_e B_e Jf_e A_e v, A_e v the element's coordinates' coefficients
+// (Xm W + S Xm W_next on the nc x n matrix of the DOFs' coefficients) and B_e its
+// forces carried back (F W^T + S^T F W_next^T), as HarmonicBalanceSystem's residual.
+void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
+  const int n = system_.numDofs(), nc = system_.numCoefficients();
+  y.resize(v.size());
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    gather(i, v, gathered_);
+    solved_.noalias() = linear_[i] * gathered_;
+    scatter(i, solved_, y);
+  }
+  const Eigen::Map<const Eigen::MatrixXd> Vm(v.data(), nc, n);
+  Eigen::Map<Eigen::MatrixXd> Ym(y.data(), nc, n);
+  const Eigen::MatrixXd& S = system_.nextSectorMap();
+  const auto& connections = system_.elements();
+  Eigen::MatrixXd &w = w_, &wNext = wNext_, &f = f_;
+  for (const ElementBlock& e : elements_) {
+    const auto& c = connections[e.element];
+    const int d = c.element->dimension();
+    const bool across = c.Wnext.size() != 0;
+    w.setZero(nc, d);
+    if (across) wNext.setZero(nc, d);
+    for (int b : e.support) {
+      for (int k = 0; k < d; ++k) {
+        if (c.W(b, k) != 0) w.col(k) += c.W(b, k) * Vm.col(b);
+        if (across && c.Wnext(b, k) != 0) wNext.col(k) += c.Wnext(b, k) * Vm.col(b);
+      }
+    }
+    if (across) w.noalias() += S * wNext;
+    f.resize(nc, d);
+    Eigen::Map<Eigen::VectorXd>(f.data(), nc * d).noalias() =
+        e.jacobian * Eigen::Map<const Eigen::VectorXd>(w.data(), nc * d);
+    if (across) wNext.noalias() = S.transpose() * f;
+    for (int a : e.support)
+      for (int k = 0; k < d; ++k) {
+        if (c.W(a, k) != 0) Ym.col(a) += c.W(a, k) * f.col(k);
+        if (across && c.Wnext(a, k) != 0) Ym.col(a) += c.Wnext(a, k) * wNext.col(k);
+      }
+  }
+  if (rowScale_.size() != 0) y.array() *= rowScale_.array();
+  for (int i : blendedRows_) y(i) = blendScale_ * y(i) + blendShift_ * v(i);
+}
+
+// Harmonic index i's block: the linear part's plus, per element, E^T Jf_hh E with
+// E (d m x |support| m) the map of the support DOFs' harmonic-h coefficients to the
+// element's (block (k, b) = W(b, k) I + W_next(b, k) S_h), its transpose carrying the
+// forces back (S_h^T for W_next).
+Eigen::MatrixXd JacobianBlocks::harmonicBlock(std::size_t i) const {
+  const std::vector<int>& slots = slots_[i];
+  const int m = int(slots.size()), nc = system_.numCoefficients();
+  Eigen::MatrixXd P = linear_[i];
+  const Eigen::MatrixXd& Sfull = system_.nextSectorMap();
+  Eigen::MatrixXd S(m, m);
+  for (int r = 0; r < m; ++r)
+    for (int q = 0; q < m; ++q) S(r, q) = Sfull(slots[r], slots[q]);
+  const auto& connections = system_.elements();
+  for (const ElementBlock& e : elements_) {
+    const auto& c = connections[e.element];
+    const int d = c.element->dimension();
+    const bool across = c.Wnext.size() != 0;
+    const int ns = int(e.support.size());
+    Eigen::MatrixXd Jhh(d * m, d * m), E = Eigen::MatrixXd::Zero(d * m, ns * m);
+    for (int k = 0; k < d; ++k)
+      for (int l = 0; l < d; ++l)
+        for (int r = 0; r < m; ++r)
+          for (int q = 0; q < m; ++q) Jhh(k * m + r, l * m + q) = e.jacobian(k * nc + slots[r], l * nc + slots[q]);
+    for (int bi = 0; bi < ns; ++bi) {
+      const int b = e.support[bi];
+      for (int k = 0; k < d; ++k) {
+        auto block = E.block(k * m, bi * m, m, m);
+        if (c.W(b, k) != 0) block.diagonal().array() += c.W(b, k);
+        if (across && c.Wnext(b, k) != 0) block += c.Wnext(b, k) * S;
+      }
+    }
+    // The forces' map back: W(a, k) I + W_next(a, k) S^T, i.e. E^T.
+    const Eigen::MatrixXd local = E.transpose() * Jhh * E;
+    for (int ai = 0; ai < ns; ++ai)
+      for (int bi = 0; bi < ns; ++bi)
+        P.block(e.support[ai] * m, e.support[bi] * m, m, m) += local.block(ai * m, bi * m, m, m);
+  }
+  return P;
+}
+
+// The blocks are factored without the row scale (precondition divides it out first); a
+// blended row i of diag(s) J, b s_i J_i + shift e_i, is s_i (b J_i + shift / s_i e_i) there.
+void JacobianBlocks::factorPreconditioner() {
+  const int nc = system_.numCoefficients();
+  std::vector<std::vector<int>> blended(slots_.size());  // per harmonic index: local rows
+  if (!blendedRows_.empty()) {
+    for (std::size_t i = 0; i < slots_.size(); ++i)
+      for (int g : blendedRows_) {
+        const int a = g / nc, slot = g % nc;
+        for (std::size_t j = 0; j < slots_[i].size(); ++j)
+          if (slots_[i][j] == slot) blended[i].push_back(a * int(slots_[i].size()) + int(j));
+      }
+  }
+  blockLu_.clear();
+  blockLu_.reserve(slots_.size());
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    Eigen::MatrixXd P = harmonicBlock(i);
+    for (int local : blended[i]) {
+      const int m = int(slots_[i].size());
+      const int g = (local / m) * nc + slots_[i][std::size_t(local % m)];
+      const double s = rowScale_.size() != 0 ? rowScale_(g) : 1.0;
+      P.row(local) *= blendScale_;
+      P(local, local) += blendShift_ / s;
+    }
+    blockLu_.emplace_back(P);
+  }
+}
+
+// The rows' scale s makes the matrix diag(s) J, so its block diagonal's inverse takes
+// r / s first.
+void JacobianBlocks::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  if (blockLu_.empty()) throw Error("JacobianBlocks: precondition() before factorPreconditioner()");
+  z.resize(r.size());
+  if (rowScale_.size() != 0) {
+    unscaled_ = r.cwiseQuotient(rowScale_);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      gather(i, unscaled_, gathered_);
+      solved_ = blockLu_[i].solve(gathered_);
+      scatter(i, solved_, z);
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    gather(i, r, gathered_);
+    solved_ = blockLu_[i].solve(gathered_);
+    scatter(i, solved_, z);
+  }
+}
+
+// Harmonic index i's coefficients of every DOF (local index a m + j), and back.
+void JacobianBlocks::gather(std::size_t i, const Eigen::VectorXd& v, Eigen::VectorXd& local) const {
+  const int n = system_.numDofs(), nc = system_.numCoefficients();
+  const std::vector<int>& slots = slots_[i];
+  const int m = int(slots.size());
+  local.resize(n * m);
+  for (int a = 0; a < n; ++a)
+    for (int j = 0; j < m; ++j) local(a * m + j) = v(a * nc + slots[j]);
+}
+
+void JacobianBlocks::scatter(std::size_t i, const Eigen::VectorXd& local, Eigen::VectorXd& v) const {
+  const int n = system_.numDofs(), nc = system_.numCoefficients();
+  const std::vector<int>& slots = slots_[i];
+  const int m = int(slots.size());
+  for (int a = 0; a < n; ++a)
+    for (int j = 0; j < m; ++j) v(a * nc + slots[j]) = local(a * m + j);
+}
+
+Eigen::MatrixXd JacobianBlocks::dense() const {
+  const int N = size();
+  Eigen::MatrixXd J(N, N);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(N), y;
+  for (int j = 0; j < N; ++j) {
+    e(j) = 1;
+    apply(e, y);
+    J.col(j) = y;
+    e(j) = 0;
+  }
+  return J;
+}
+
+}  // namespace cyclone::hbm

@@ -1,0 +1,119 @@
+// The Jacobian kept as blocks (JacobianBlocks) against the system's formed Jacobian:
+// its products are the dense matrix's, in the matrix form (a cyclic sector with a 3D
+// friction contact to the next sector, a Jenkins element and a cubic spring) and in
+// the dynamic-stiffness receptance form of the same system; the preconditioner's
+// blocks are the dense matrix's harmonic-diagonal blocks, and it inverts them.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+
+#include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/JacobianBlocks.hpp"
+#include "cyclone/hbm/ReceptanceModel.hpp"
+#include "RingSector.hpp"
+
+using namespace cyclone;
+using namespace cyclone::hbm;
+
+namespace {
+
+using test_support::addRingElements;
+using test_support::ringMatrices;
+
+// A motion with every harmonic present, large enough that the contact slips and opens.
+Eigen::VectorXd motion(const HarmonicBalanceSystem& s) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd X(s.numUnknowns());
+  for (Eigen::Index i = 0; i < X.size(); ++i) X(i) = u(rng) * 0.3;
+  return X;
+}
+
+void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega) {
+  const Eigen::VectorXd X = motion(s);
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  s.residual(X, omega, R, &J);
+  auto blocks = s.jacobianBlocks(X, omega);
+  const Eigen::MatrixXd D = blocks->dense();
+  EXPECT_LE((D - J).norm(), 1e-12 * J.norm()) << "the blocks' products are not the formed Jacobian";
+
+  // Row scaling, then each harmonic's block against the scaled dense one.
+  Eigen::VectorXd scale(s.numUnknowns());
+  for (Eigen::Index i = 0; i < scale.size(); ++i) scale(i) = 1.0 + 0.1 * double(i % 5);
+  blocks->scaleRows(scale);
+  const Eigen::MatrixXd Js = scale.asDiagonal() * J;
+  EXPECT_LE((blocks->dense() - Js).norm(), 1e-12 * Js.norm());
+  blocks->factorPreconditioner();
+  const auto& H = s.aft().harmonics();
+  const int nc = s.numCoefficients(), n = s.numDofs();
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(Js.rows(), Js.cols());  // the block diagonal of Js
+  for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
+    const int h = H.harmonics()[i];
+    std::vector<int> slots{H.cosIndex(h)};
+    if (h != 0) slots.push_back(H.sinIndex(h));
+    const Eigen::MatrixXd B = blocks->harmonicBlock(i);
+    const int m = int(slots.size());
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (int r = 0; r < m; ++r)
+          for (int q = 0; q < m; ++q) {
+            EXPECT_NEAR(B(a * m + r, b * m + q), J(a * nc + slots[r], b * nc + slots[q]), 1e-12 * J.norm());
+            P(a * nc + slots[r], b * nc + slots[q]) = Js(a * nc + slots[r], b * nc + slots[q]);
+          }
+  }
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(s.numUnknowns(), -1.0, 2.0);
+  Eigen::VectorXd z;
+  blocks->precondition(r, z);
+  EXPECT_LE((P * z - r).norm(), 1e-10 * r.norm()) << "the preconditioner is not the block diagonal's inverse";
+
+  // A homotopy's blended rows (harmonic 1's of every DOF): rows i become b J_i + c e_i,
+  // in the products and in the preconditioner's block diagonal.
+  std::vector<int> rows;
+  for (int a = 0; a < n; ++a) rows.push_back(a * nc + H.cosIndex(1)), rows.push_back(a * nc + H.sinIndex(1));
+  const double b = 0.3, shift = 2.5;
+  blocks->blendRows(rows, b, shift);
+  Eigen::MatrixXd Jb = Js, Pb = P;
+  for (int i : rows) {
+    Jb.row(i) *= b, Pb.row(i) *= b;
+    Jb(i, i) += shift, Pb(i, i) += shift;
+  }
+  EXPECT_LE((blocks->dense() - Jb).norm(), 1e-12 * Jb.norm());
+  blocks->factorPreconditioner();
+  blocks->precondition(r, z);
+  EXPECT_LE((Pb * z - r).norm(), 1e-10 * r.norm()) << "the blended preconditioner is not the blended block diagonal's inverse";
+}
+
+}  // namespace
+
+TEST(JacobianBlocks, MatrixFormCyclicSector) {
+  const auto m = ringMatrices();
+  HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(5), 64);
+  CyclicCoupling c;
+  c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
+  s.setCyclic(c);
+  addRingElements(s);
+  expectBlocksAreTheJacobian(s, 1.7);
+}
+
+TEST(JacobianBlocks, DynamicStiffnessReceptanceForm) {
+  const auto m = ringMatrices();
+  auto receptance = std::make_shared<MatrixReceptance>(m.M, m.C, m.K, 7, m.Mn, m.Cn, m.Kn);
+  HarmonicBalanceSystem s(receptance, HarmonicSet({0, 1, 2, 3, 5}), 64);
+  CyclicCoupling c;
+  c.sectors = 7, c.engineOrder = 2;
+  s.setCyclic(c);
+  s.useDynamicStiffness(true);
+  addRingElements(s);
+  ASSERT_TRUE(s.hasJacobianBlocks());
+  expectBlocksAreTheJacobian(s, 1.7);
+}
+
+TEST(JacobianBlocks, ComplianceFormHasNone) {
+  const auto m = ringMatrices();
+  auto receptance = std::make_shared<MatrixReceptance>(m.M, m.C, m.K);
+  HarmonicBalanceSystem s(receptance, HarmonicSet::upTo(2), 16);
+  EXPECT_FALSE(s.hasJacobianBlocks());
+  EXPECT_ANY_THROW(s.jacobianBlocks(Eigen::VectorXd::Zero(s.numUnknowns()), 1.0));
+}
