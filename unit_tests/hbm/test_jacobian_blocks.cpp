@@ -2,7 +2,8 @@
 // its products are the dense matrix's, in the matrix form (a cyclic sector with a 3D
 // friction contact to the next sector, a Jenkins element and a cubic spring) and in
 // the dynamic-stiffness receptance form of the same system; the preconditioner's
-// blocks are the dense matrix's harmonic-diagonal blocks, and it inverts them.
+// blocks are the dense matrix's harmonic-diagonal blocks, and it inverts them (to its
+// single-precision factors' accuracy).
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -66,7 +67,10 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega) {
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(s.numUnknowns(), -1.0, 2.0);
   Eigen::VectorXd z;
   blocks->precondition(r, z);
-  EXPECT_LE((P * z - r).norm(), 1e-10 * r.norm()) << "the preconditioner is not the block diagonal's inverse";
+  // The blocks are factored in single precision (a preconditioner's accuracy): the
+  // solve's residual is a float LU's, about eps_f = 6e-8 times the blocks' conditioning.
+  const double singleLu = 1e-5;
+  EXPECT_LE((P * z - r).norm(), singleLu * r.norm()) << "the preconditioner is not the block diagonal's inverse";
 
   // A homotopy's blended rows (harmonic 1's of every DOF): rows i become b J_i + c e_i,
   // in the products and in the preconditioner's block diagonal.
@@ -82,7 +86,7 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega) {
   EXPECT_LE((blocks->dense() - Jb).norm(), 1e-12 * Jb.norm());
   blocks->factorPreconditioner();
   blocks->precondition(r, z);
-  EXPECT_LE((Pb * z - r).norm(), 1e-10 * r.norm()) << "the blended preconditioner is not the blended block diagonal's inverse";
+  EXPECT_LE((Pb * z - r).norm(), singleLu * r.norm()) << "the blended preconditioner is not the blended block diagonal's inverse";
 }
 
 }  // namespace

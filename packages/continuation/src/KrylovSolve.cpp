@@ -175,6 +175,10 @@ KrylovResult solveKrylov(const VectorFunction& apply, const VectorFunction& prec
   params->set("Num Blocks", options.restart);
   params->set("Maximum Restarts", std::max(1, options.maxIterations / std::max(1, options.restart)));
   params->set("Block Size", 1);
+  // Flexible GMRES keeps the preconditioned vectors: the solution is then exactly their
+  // combination, so a preconditioner that is linear only to its rounding (single-precision
+  // factors: hbm::JacobianBlocks) still reaches a double-precision residual.
+  params->set("Flexible Gmres", true);
   params->set("Orthogonalization", std::string("ICGS"));
   params->set("Verbosity", int(Belos::Errors));
   Belos::BlockGmresSolMgr<double, MV, OP> solver(problem, params);

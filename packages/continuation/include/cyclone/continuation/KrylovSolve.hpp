@@ -1,5 +1,5 @@
 #pragma once
-// Right-preconditioned GMRES (Belos' block GMRES with one right-hand side) for a
+// Right-preconditioned flexible GMRES (Belos' block GMRES with one right-hand side) for a
 // linear operator and a preconditioner given as functions on Eigen vectors: the
 // Newton steps of a large harmonic balance (JacobianOperator.hpp), and of the
 // continuation's bordered system [J, b; c^T, d] (BorderedKrylovSolve).

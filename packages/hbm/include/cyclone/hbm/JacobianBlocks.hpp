@@ -9,7 +9,8 @@
 //
 // The preconditioner is the Jacobian's own block diagonal by harmonic: per harmonic h,
 // the linear part's block plus every element's (h, h) block (its coupling of harmonic h
-// to itself: the contact's mean tangent and its 2h-th harmonic), each factored by LU.
+// to itself: the contact's mean tangent and its 2h-th harmonic), each factored by LU in
+// single precision.
 // What it leaves out is the elements' coupling between different harmonics, the part
 // that grows where a contact opens and closes within the period.
 #include <Eigen/Dense>
@@ -56,6 +57,7 @@ public:
 private:
   void gather(std::size_t i, const Eigen::VectorXd& v, Eigen::VectorXd& local) const;
   void scatter(std::size_t i, const Eigen::VectorXd& local, Eigen::VectorXd& v) const;
+  void solveBlock(std::size_t i) const;
   const HarmonicBalanceSystem& system_;
   double omega_;
   std::vector<ElementBlock> elements_;
@@ -65,9 +67,12 @@ private:
   Eigen::VectorXd rowScale_;  // empty: 1
   std::vector<int> blendedRows_;  // blendRows: rows i are blendScale_ J_i + blendShift_ e_i^T
   double blendScale_ = 1, blendShift_ = 0;
-  std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> blockLu_;
+  std::vector<Eigen::MatrixXcd> linearComplex_;  // the same where it is complex-structured (linear_ then empty)
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXf>> blockLu_;  // single precision (solveBlock)
   // Work vectors of precondition() (one harmonic's coefficients): no allocation per call.
   mutable Eigen::VectorXd gathered_, solved_, unscaled_;
+  mutable Eigen::VectorXf gatheredSingle_, solvedSingle_;
+  mutable Eigen::VectorXcd complexIn_, complexOut_;
   mutable Eigen::MatrixXd w_, wNext_, f_;  // apply()'s element coordinates and forces
 };
 
