@@ -198,62 +198,6 @@ std::pair<double, Eigen::VectorXd> flankStart(const hbm::HarmonicBalanceSystem& 
   return {0, Eigen::VectorXd()};
 }
 
-// Where the peak search stops at a fold (a raised harmonic meeting a mode splits the
-// peak and folds the curve: the default disc's 5th harmonic and its ND 9 mode near
-// 7.1 kHz), the level's curve itself over the band from a flank start `startHz` across
-// the peak at `hz` to as far beyond it, traced by arclength (which passes folds), and its
-// largest point (located on the path: the continuation's measure). Found where that
-// point lies inside the band.
-continuation::PeakSearchResult traceBandPeak(const hbm::HarmonicBalanceSystem& system, const Eigen::VectorXd& start,
-                                             double startHz, double hz, double scale, int dof, double tolerance) {
-  continuation::PeakSearchResult result;
-  auto problem = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, scale);
-  const int nc = system.numCoefficients();
-  const auto& H = system.aft().harmonics();
-  const auto measure = [&H, dof, nc](const Eigen::VectorXd& x) {
-    return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc)));
-  };
-  problem.measure = measure;
-  const double reach = std::max(std::abs(hz - startHz), 0.03 * hz);
-  continuation::ContinuationOptions o;
-  o.from = 2 * M_PI * startHz, o.to = 2 * M_PI * (hz + (hz >= startHz ? reach : -reach));
-  o.tolerance = tolerance;
-  o.maxSteps = 2000;
-  const continuation::Branch band = continuation::traceBranch(problem, start, o);
-  std::size_t best = 0;
-  for (std::size_t i = 0; i < band.points.size(); ++i) {
-    const double g = measure(band.points[i].x);
-    result.path.emplace_back(band.points[i].parameter / (2 * M_PI), band.points[i].x);
-    if (g > result.value) best = i, result.value = g;
-  }
-  result.solves = band.statistics.newtonIterations;
-  if (band.points.empty()) {
-    result.reason = "the band's curve did not start: " + band.stopReason;
-    return result;
-  }
-  result.parameter = band.points[best].parameter / (2 * M_PI), result.x = band.points[best].x;
-  result.found = best > 0 && best + 1 < band.points.size() && band.finished;
-  if (!result.found)
-    result.reason = band.finished ? "the band's curve has its largest point at an end of the band"
-                                  : "the band's curve stopped (" + band.stopReason + ")";
-  return result;
-}
-
-// A start for the band's curve farther from the peak, where no flank start converges (a
-// raised harmonic's internal resonance near the peak spoils every start close to it):
-// the level below's peak solution carried up, solved at 3 %, then 6 %, below and above
-// the peak.
-std::pair<double, Eigen::VectorXd> farStart(const hbm::HarmonicBalanceSystem& raised, const Eigen::VectorXd& carried,
-                                            double peakHz, double scale, double tolerance) {
-  const auto byOmega = continuationProblem(raised, ForcedResponseSetup::Parameter::Omega, 0, scale);
-  for (const double offset : {-0.03, 0.03, -0.06, 0.06}) {
-    const double f = peakHz * (1 + offset);
-    Eigen::VectorXd y = carried;
-    if (continuation::solveNewton(byOmega, y, 2 * M_PI * f, tolerance, 30).converged) return {f, y};
-  }
-  return {0, Eigen::VectorXd()};
-}
-
 // The next level of the harmonics check: one harmonic more up to 8, then a quarter more
 // (10, 12, 15, 18, 22, 27, 33, 41, 51, ...: a hammering contact's peak needs tens of
 // harmonics, and one level costs a peak search), never beyond upTo.
@@ -279,7 +223,6 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
   int below = set.maxHarmonic();
   for (int H = set.maxHarmonic(); H <= upTo; below = H, H = nextHarmonicLevel(H, upTo)) {
     Timer timer;
-    Eigen::VectorXd carriedUp;  // the level below's peak solution on this level's harmonics
     const hbm::HarmonicBalanceSystem* lower = system;
     std::vector<int> newHarmonics;
     if (H > set.maxHarmonic()) {
@@ -288,7 +231,6 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
       lowerSystem = std::move(current);  // keeps `lower` alive
       current = raisedSystem(hb, raised);
       X = hbm::transferCoefficients(X, hb.numDofs(), set, raised);
-      carriedUp = X;
       set = raised, system = current.get();
     }
     HarmonicsLevel level;
@@ -315,29 +257,8 @@ std::vector<HarmonicsLevel> peakByHarmonics(const hbm::HarmonicBalanceSystem& hb
       if (start.size() > 0) {
         level.startHz = f;
         level.peak = searchPeak(*system, start, f, scale, dof, tolerance, f - hz);
-        if (!level.peak.found) {  // stopped at a fold: the band's curve by arclength
-          const std::string searched = level.peak.reason;
-          level.peak = traceBandPeak(*system, start, f, hz, scale, dof, tolerance);
-          log::info("harmonics check: H " + std::to_string(H) + ": the peak search from " + std::to_string(f) +
-                    " Hz stopped (" + searched + "); the curve traced over the band: " +
-                    (level.peak.found ? "peak " + std::to_string(level.peak.value) + " at " +
-                                            std::to_string(level.peak.parameter) + " Hz"
-                                      : level.peak.reason));
-          if (!level.peak.found) level.peak.reason = searched + "; " + level.peak.reason;
-        }
-      } else if (const auto [g, far] = farStart(*system, carriedUp, hz, scale, tolerance); far.size() > 0) {
-        level.startHz = g;
-        level.peak = traceBandPeak(*system, far, g, hz, scale, dof, tolerance);
-        log::info("harmonics check: H " + std::to_string(H) + ": no start near the peak; the curve traced over the "
-                  "band from " + std::to_string(g) + " Hz: " +
-                  (level.peak.found ? "peak " + std::to_string(level.peak.value) + " at " +
-                                          std::to_string(level.peak.parameter) + " Hz"
-                                    : level.peak.reason));
-        if (!level.peak.found)
-          level.peak.reason = "no start near the peak, and the band's curve from " + std::to_string(g) +
-                              " Hz: " + level.peak.reason;
       } else {
-        level.peak.reason += ", nor from the level below's solutions on its flank, nor 3-6 % from the peak";
+        level.peak.reason += ", nor from the level below's solutions on its flank";
       }
     }
     if (level.peak.found) level.truncated = hbm::truncatedForce(*system, level.peak.x, 2 * M_PI * level.peak.parameter);
