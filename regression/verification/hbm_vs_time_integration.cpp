@@ -140,8 +140,8 @@ struct ImpactOscillator {
 };
 
 // AFT samples for H harmonics: perPeriod (2H + 1) rounded up to a power of two, at
-// least the contact's recommendedSamples(). 8 per period of the highest harmonic
-// avoid aliasing, but the contact locates its closing instant only to a sample (the
+// least the contact's recommendedSamples(). 8 (2H + 1) (16 or more per period of the
+// highest harmonic) avoid aliasing, but the contact locates its closing instant only to a sample (the
 // slider, reset while open, starts sticking at the first closed sample): an error
 // of first order in 1/N in the tangential force of every impact, 1.7e-3 in max |x(t)|
 // at the resonance with 1024 samples at H = 50, 5e-6 with 4096. Hence 32.
@@ -310,7 +310,7 @@ std::vector<ImpactLevel> impactLevels(const ImpactOscillator& osc, const std::ve
     EXPECT_TRUE(newton.converged);
     std::printf(" %9.2e", relativeDifference(measure(sys, X), refs[k].m));
   }
-  std::printf("  (8 samples per period of H: the closing instants located to 1/%d of the period)\n", fewer);
+  std::printf("  (8 (2H + 1) samples: the closing instants located to 1/%d of the period)\n", fewer);
   return out;
 }
 

@@ -21,6 +21,11 @@ namespace cyclone::continuation {
 
 namespace {
 
+// Belos fills a column its orthogonalisation found dependent with random entries: one
+// engine per solve, seeded at its start (a solve is the same run after run, and a second
+// fill is not the first one again).
+thread_local std::mt19937 randomFill;
+
 class EigenMultiVec final : public Belos::MultiVec<double> {
 public:
   EigenMultiVec(Eigen::Index rows, int columns)
@@ -98,12 +103,10 @@ public:
     const auto& a = cast(A);
     for (std::size_t j = 0; j < index.size(); ++j) col(index[j]) = a.col(int(j));
   }
-  // Seeded: a solve is the same run after run.
   void MvRandom() override {
-    std::mt19937 engine(12345);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int j = 0; j < GetNumberVecs(); ++j)
-      for (Eigen::Index i = 0; i < rows(); ++i) col(j)(i) = u(engine);
+      for (Eigen::Index i = 0; i < rows(); ++i) col(j)(i) = u(randomFill);
   }
   void MvInit(const double alpha) override {
     for (int j = 0; j < GetNumberVecs(); ++j) col(j).setConstant(alpha);
@@ -161,6 +164,7 @@ KrylovResult solveKrylov(const VectorFunction& apply, const VectorFunction& prec
     x.setConstant(std::numeric_limits<double>::quiet_NaN());
     return result;
   }
+  randomFill.seed(12345);
   auto B = Teuchos::rcp(new EigenMultiVec(n, 1));
   B->col(0) = b;
   auto X = Teuchos::rcp(new EigenMultiVec(n, 1));
@@ -203,6 +207,9 @@ BorderedKrylovSolve::BorderedKrylovSolve(std::shared_ptr<const JacobianOperator>
     : J_(std::move(J)), b_(std::move(b)), c_(std::move(c)), d_(d), options_(options) {
   J_->precondition(b_, Pb_);
   schur_ = d_ - c_.dot(Pb_);
+  // A Schur complement that cancels to rounding (P is single precision) would make the
+  // border's part of the preconditioner huge: left out there (preconditionBordered).
+  if (std::abs(schur_) <= 1e-8 * (std::abs(d_) + c_.norm() * Pb_.norm())) schur_ = 0;
 }
 
 void BorderedKrylovSolve::applyBordered(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {

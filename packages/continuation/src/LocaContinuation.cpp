@@ -368,7 +368,7 @@ std::optional<BranchPoint> fixedParameterStepOverKink(const ContinuationProblem&
       const double p = k.b.parameter + sign * f * dp;
       if (p < k.lo || p > k.hi) continue;
       Eigen::VectorXd x = k.b.x;
-      if (!solveNewton(problem, x, p, o.tolerance, 12).converged) continue;  // 2-7 iterations where it passes
+      if (!solveNewton(problem, x, p, o.tolerance, 12, nullptr, o.linearSolver).converged) continue;  // 2-7 iterations where it passes
       if (continuesPast(k, BranchPoint{p, x}, k.L)) return BranchPoint{p, x};
     }
   return std::nullopt;
@@ -447,7 +447,7 @@ Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::Vect
                            const ContinuationOptions& o) {
   Branch branch;
   Eigen::VectorXd x0 = guess;
-  const auto start = solveNewton(problem, x0, o.from, o.tolerance, 100);
+  const auto start = solveNewton(problem, x0, o.from, o.tolerance, 100, nullptr, o.linearSolver);
   if (!start.converged) {
     branch.stopReason = noConvergedStart(start, o.tolerance);
     return branch;

@@ -125,6 +125,7 @@ private:
     Eigen::VectorXd Fe;
     if (krylov_) {
       A.dense.resize(0, 0);
+      A.op.reset();  // the last step's blocks freed before the next are made
       if (!guarded(stats().jacobianSeconds, [&] {
             A.op = problem_.jacobianOperator(z.x, z.p);
             return bool(A.op);

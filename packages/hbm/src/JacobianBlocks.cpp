@@ -59,6 +59,7 @@ int JacobianBlocks::size() const { return system_.numUnknowns(); }
 void JacobianBlocks::scaleRows(Eigen::VectorXd s) {
   if (s.size() != size()) throw Error("JacobianBlocks: a row scale of the wrong size");
   rowScale_ = std::move(s);
+  blockLu_.clear();  // blended rows' shifts are factored in over the row scale
 }
 
 void JacobianBlocks::blendRows(const std::vector<int>& rows, double scale, double shift) {

@@ -211,7 +211,12 @@ ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedRespo
 ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
   Timer timer;
   logProblem(setup);
-  checkSolverSize(*setup.system, setup.harmonicsKey, setup.continuation.linearSolver);
+  // The trace forms the dense Jacobian for LOCA's engine and for a system rebuilt per
+  // value (no operator): the memory check is the dense one there.
+  const bool formsTheMatrix = setup.continuation.engine == continuation::ContinuationOptions::Engine::Loca ||
+                              setup.parameter == ForcedResponseSetup::Parameter::Rebuilt;
+  checkSolverSize(*setup.system, setup.harmonicsKey,
+                  formsTheMatrix ? continuation::ContinuationOptions::LinearSolver::Dense : setup.continuation.linearSolver);
   const StartingPoint start = findStartingPoint(setup);
   if (start.x.size() > 0) {
     std::ostringstream msg;

@@ -67,7 +67,7 @@ StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
   Timer timer;
   StartingPoint start;
   auto attempt = [&](Eigen::VectorXd x, const std::string& method) {
-    if (!continuation::solveNewton(problem, x, o.from, o.tolerance, 100).converged) return false;
+    if (!continuation::solveNewton(problem, x, o.from, o.tolerance, 100, nullptr, o.linearSolver).converged) return false;
     start.x = std::move(x);
     start.method = method;
     start.seconds = timer.seconds();

@@ -35,7 +35,7 @@ public:
   int minimumSamples() const { return 2 * maxHarmonic_ + 1; }
   /// Samples for nonsmooth element laws (contacts, friction: events between samples
   /// shift with the sampling): the power of two from 8 (2 maxHarmonic + 1), so that the
-  /// samples grow with the harmonics, eight per period of the highest.
+  /// samples grow with the harmonics (16 to 32 per period of the highest).
   int nonsmoothSamples() const;
 
 private:
