@@ -25,6 +25,9 @@ namespace {
 // engine per solve, seeded at its start (a solve is the same run after run, and a second
 // fill is not the first one again).
 thread_local std::mt19937 randomFill;
+// MvTimesMatAddMv's work, shared by every view (Belos makes fresh views at every
+// iteration): grown, never shrunk.
+thread_local std::vector<double> productWork;
 
 class EigenMultiVec final : public Belos::MultiVec<double> {
 public:
@@ -60,7 +63,8 @@ public:
                        const Teuchos::SerialDenseMatrix<int, double>& B, const double beta) override {
     const auto& a = cast(A);
     const int k = a.GetNumberVecs(), m = GetNumberVecs();
-    product_.resize(rows(), m);
+    if (productWork.size() < std::size_t(rows() * m)) productWork.resize(std::size_t(rows() * m));
+    Eigen::Map<Eigen::MatrixXd> product_(productWork.data(), rows(), m);
     product_.setZero();
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < k; ++i)
@@ -124,7 +128,6 @@ private:
   }
   std::shared_ptr<Eigen::MatrixXd> data_;
   std::vector<int> cols_;
-  Eigen::MatrixXd product_;  // MvTimesMatAddMv's work
 };
 
 class FunctionOperator final : public Belos::Operator<double> {

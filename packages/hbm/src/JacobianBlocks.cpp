@@ -84,9 +84,10 @@ void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
       for (int a = 0; a < n; ++a) y(a * nc + slots[0]) = complexOut_(a).real(), y(a * nc + slots[1]) = -complexOut_(a).imag();
       continue;
     }
-    gather(i, v, gathered_);
-    solved_.noalias() = linear_[i] * gathered_;
-    scatter(i, solved_, y);
+    const int w = width(i);
+    gather(i, v, gathered_[w]);
+    solved_[w].noalias() = linear_[i] * gathered_[w];
+    scatter(i, solved_[w], y);
   }
   const Eigen::Map<const Eigen::MatrixXd> Vm(v.data(), nc, n);
   Eigen::Map<Eigen::MatrixXd> Ym(y.data(), nc, n);
@@ -205,26 +206,27 @@ void JacobianBlocks::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) 
   if (rowScale_.size() != 0) {
     unscaled_ = r.cwiseQuotient(rowScale_);
     for (std::size_t i = 0; i < slots_.size(); ++i) {
-      gather(i, unscaled_, gathered_);
+      gather(i, unscaled_, gathered_[width(i)]);
       solveBlock(i);
-      scatter(i, solved_, z);
+      scatter(i, solved_[width(i)], z);
     }
     return;
   }
   for (std::size_t i = 0; i < slots_.size(); ++i) {
-    gather(i, r, gathered_);
+    gather(i, r, gathered_[width(i)]);
     solveBlock(i);
-    scatter(i, solved_, z);
+    scatter(i, solved_[width(i)], z);
   }
 }
 
-// solved_ = P_i^-1 gathered_ by the single-precision factors: a preconditioner needs no
-// more digits (GMRES measures its residual on the true operator), and the factors are
-// half the memory each product streams through.
+// solved_ = P_i^-1 gathered_ (of the block's width) by the single-precision factors: a
+// preconditioner needs no more digits (GMRES measures its residual on the true
+// operator), and the factors are half the memory each product streams through.
 void JacobianBlocks::solveBlock(std::size_t i) const {
-  gatheredSingle_ = gathered_.cast<float>();
-  solvedSingle_ = blockLu_[i].solve(gatheredSingle_);
-  solved_ = solvedSingle_.cast<double>();
+  const int w = width(i);
+  gatheredSingle_[w] = gathered_[w].cast<float>();
+  solvedSingle_[w] = blockLu_[i].solve(gatheredSingle_[w]);
+  solved_[w] = solvedSingle_[w].cast<double>();
 }
 
 // Harmonic index i's coefficients of every DOF (local index a m + j), and back.

@@ -70,8 +70,11 @@ private:
   std::vector<Eigen::MatrixXcd> linearComplex_;  // the same where it is complex-structured (linear_ then empty)
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXf>> blockLu_;  // single precision (solveBlock)
   // Work vectors of precondition() (one harmonic's coefficients): no allocation per call.
-  mutable Eigen::VectorXd gathered_, solved_, unscaled_;
-  mutable Eigen::VectorXf gatheredSingle_, solvedSingle_;
+  // Per block width (index 0: the mean's n coefficients, 1: a harmonic's 2n), so that
+  // alternating widths do not reallocate them at every product.
+  int width(std::size_t i) const { return int(slots_[i].size()) - 1; }
+  mutable Eigen::VectorXd gathered_[2], solved_[2], unscaled_;
+  mutable Eigen::VectorXf gatheredSingle_[2], solvedSingle_[2];
   mutable Eigen::VectorXcd complexIn_, complexOut_;
   mutable Eigen::MatrixXd w_, wNext_, f_;  // apply()'s element coordinates and forces
 };
