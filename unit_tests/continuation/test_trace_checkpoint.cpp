@@ -3,9 +3,11 @@
 // computing; traces of other problems or options are filed under other keys.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
+#include "KinkedOscillator.hpp"
 #include "SingleTermOscillator.hpp"
 #include "cyclone/continuation/TraceCheckpoint.hpp"
 #include "FrictionSector.hpp"
@@ -60,6 +62,23 @@ void expectSameBranch(const continuation::Branch& a, const continuation::Branch&
   EXPECT_EQ(a.statistics.rejectedSteps, b.statistics.rejectedSteps);
 }
 
+// A recorder of every step's state, set in `o`.
+std::shared_ptr<MemoryCheckpoints> recordEveryStep(continuation::ContinuationOptions& o) {
+  auto recorder = std::make_shared<MemoryCheckpoints>();
+  recorder->intervalSeconds = 0;
+  o.checkpoints = recorder;
+  return recorder;
+}
+
+// The trace continued from `state`, saved under `key`.
+continuation::Branch resumedFrom(const continuation::ContinuationProblem& problem, const Eigen::VectorXd& start,
+                                 continuation::ContinuationOptions o, const std::string& key, const TraceState& state) {
+  auto seeded = std::make_shared<MemoryCheckpoints>();
+  seeded->stored[key] = state;
+  o.checkpoints = seeded;
+  return continuation::traceBranch(problem, start, o);
+}
+
 }  // namespace
 
 TEST(TraceCheckpoint, AResumedTraceIsTheUninterruptedOne) {
@@ -112,9 +131,7 @@ TEST(TraceCheckpoint, AResumedTraceWithKeptFactorsIsTheUninterruptedOne) {
   const auto reference = continuation::traceBranch(problem, start, o);
   ASSERT_TRUE(reference.finished) << reference.stopReason;
   ASSERT_GT(reference.statistics.reusedFactorizations, 0);
-  auto recorder = std::make_shared<MemoryCheckpoints>();
-  recorder->intervalSeconds = 0;
-  o.checkpoints = recorder;
+  const auto recorder = recordEveryStep(o);
   const auto saved = continuation::traceBranch(problem, start, o);
   expectSameBranch(saved, reference);
   const std::string key = continuation::traceKey(problem, start, o);
@@ -122,11 +139,7 @@ TEST(TraceCheckpoint, AResumedTraceWithKeptFactorsIsTheUninterruptedOne) {
   const std::size_t states = recorder->history.size() - 1;
   for (std::size_t at : {std::size_t(1), states / 2, states - 1}) {
     SCOPED_TRACE("resumed from state " + std::to_string(at));
-    auto seeded = std::make_shared<MemoryCheckpoints>();
-    seeded->stored[key] = recorder->history[at];
-    auto oSeeded = o;
-    oSeeded.checkpoints = seeded;
-    expectSameBranch(continuation::traceBranch(problem, start, oSeeded), reference);
+    expectSameBranch(resumedFrom(problem, start, o, key, recorder->history[at]), reference);
   }
 }
 
@@ -173,4 +186,32 @@ TEST(TraceCheckpoint, OtherProblemsAndOptionsHaveOtherKeys) {
   o2 = o;
   o2.checkpoints = std::make_shared<MemoryCheckpoints>();  // where it is saved is not what it is
   EXPECT_EQ(key, continuation::traceKey(duffing(0.18), rest, o2));
+}
+
+// A trace continued from a state saved while it took secant steps over a stair of kinks
+// (and from one before they began) is the uninterrupted trace to the bit: the secant
+// mode and the steps' verdicts that switch it are part of the state.
+TEST(TraceCheckpoint, AResumedTraceWithSecantStepsIsTheUninterruptedOne) {
+  const auto problem = test_support::KinkedOscillator().problem();
+  auto o = rangeOnly();
+  o.from = 0.9, o.to = 1.1;
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(2);
+  const auto reference = continuation::traceBranch(problem, rest, o);
+  ASSERT_TRUE(reference.finished) << reference.stopReason;
+  ASSERT_GT(reference.statistics.secantSteps, 0);
+  const auto recorder = recordEveryStep(o);
+  expectSameBranch(continuation::traceBranch(problem, rest, o), reference);
+  const std::string key = continuation::traceKey(problem, rest, o);
+  std::vector<std::size_t> secant, counting;  // states in secant steps; before, with verdicts counted
+  for (std::size_t i = 0; i + 1 < recorder->history.size(); ++i) {
+    const auto& s = recorder->history[i];
+    if (s.secant) secant.push_back(i);
+    else if (!s.heldSteps.empty() && std::count(s.heldSteps.begin(), s.heldSteps.end(), 1) > 0) counting.push_back(i);
+  }
+  ASSERT_FALSE(secant.empty());
+  ASSERT_FALSE(counting.empty());
+  for (std::size_t at : {counting[counting.size() / 2], secant.front(), secant[secant.size() / 2]}) {
+    SCOPED_TRACE("resumed from state " + std::to_string(at));
+    expectSameBranch(resumedFrom(problem, rest, o, key, recorder->history[at]), reference);
+  }
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -280,6 +281,7 @@ private:
   void retract(Point& z, Point& t, double& ds);
   bool passWall(Point& z, Point& t, double& ds);
   double nextStep(int iterations, double cosTurn, double ds) const;
+  void switchPredictor(double tangentTurn, double next, double p);
   bool leftTheRange(const Point& previous, const Point& z, const Point& t);
   bool atTheEnd(const Point& z, const Point& t, double ds);
   void logSummary() const;
@@ -317,6 +319,18 @@ private:
   static constexpr int kMaxRetractions = 200;  // a bound on retaken steps (each shortens the step)
   int retractions_ = 0;
   double cornerStep_ = 1e-3;  // a corner's step, max(16 minStep, 1e-3): where the turn stops cutting
+  // Secant steps (see run() and switchPredictor): on where the tangent's turns do not
+  // shrink with the step.
+  bool secant_ = false;
+  std::deque<bool> heldSteps_;  // the last steps' verdicts: held small by the tangent's turn
+  int smoothRun_ = 0;           // secant steps in a row whose tangent turned less than the aim
+  Point lastChord() const {
+    const auto& pts = branch_.points;
+    const Point c = metric_.difference(Point{pts.back().x, pts.back().parameter},
+                                       Point{pts[pts.size() - 2].x, pts[pts.size() - 2].parameter});
+    const double L = metric_.norm(c);
+    return {c.x / L, c.p / L};
+  }
   // The last point a retraction may not drop: one a fixed-parameter step reached (from
   // where the arclength steps had all failed, to which dropping it would return).
   std::size_t anchor_ = 0;
@@ -627,6 +641,7 @@ void Tracer::save(const Point& t, double ds) {
   s.directionX = t.x, s.directionP = t.p, s.step = ds;
   s.scaleX = groupScale_, s.scaleP = metric_.sp, s.largestNorm = largestNorm_, s.scaleFloor = sxFloor_;
   s.retractions = retractions_, s.anchor = long(anchor_), s.creepChecked = long(creepChecked_);
+  s.secant = secant_, s.smoothRun = smoothRun_, s.heldSteps.assign(heldSteps_.begin(), heldSteps_.end());
   checkpointing_->save(s);
   sinceSave_.restart();
 }
@@ -644,6 +659,7 @@ void Tracer::restore(const TraceState& s, Point& z, Point& t, double& ds) {
   groupScale_ = s.scaleX, metric_.sp = s.scaleP, largestNorm_ = s.largestNorm, sxFloor_ = s.scaleFloor;
   setWeights();
   retractions_ = int(s.retractions), anchor_ = std::size_t(s.anchor), creepChecked_ = std::size_t(s.creepChecked);
+  secant_ = s.secant != 0, smoothRun_ = int(s.smoothRun), heldSteps_.assign(s.heldSteps.begin(), s.heldSteps.end());
   z = {branch_.points.back().x, branch_.points.back().parameter};
 }
 
@@ -718,8 +734,9 @@ Tracer::StepOutcome Tracer::correctStep(const Point& z, const Point& t, double d
     const double length = metric_.norm(chord);
     if (length > 3 * ds || onTracedPath(c.z, ds)) continue;
     if (!(c.factored && tangentFrom(c.lu, chord, t1)) && !freshTangent(c.z, chord, t1)) continue;
-    // The turn in the metric of the step (the scale is updated after it).
-    cosTurn = std::clamp(metric_.dot(t, t1), -1.0, 1.0);
+    // The turn in the metric of the step (the scale is updated after it): of the
+    // tangent, or with secant steps of the chord against the last one.
+    cosTurn = std::clamp(secant_ ? metric_.dot(t, chord) / length : metric_.dot(t, t1), -1.0, 1.0);
     // A point behind the last one (a sphere's) or whose tangent reverses is a
     // hairpin's far side only if the path just traced is resolved at this step's
     // scale; after a long last step (which may have crossed a stretch of stick-slip
@@ -779,10 +796,36 @@ bool Tracer::passWall(Point& z, Point& t, double& ds) {
 double Tracer::nextStep(int iterations, double cosTurn, double ds) const {
   const double turn = std::acos(cosTurn);
   const double byNewton = std::clamp(4.0 / std::max(iterations, 1), 0.5, 2.0);
-  const double byTurn = std::clamp(o_.turnAngle / std::max(turn, 1e-12), 0.25, 2.0);
+  // Secant steps are held by the chord's turn only beyond four times the aim (one
+  // radian): over a stair of kinks the chord wanders by up to about that at the kinks'
+  // scale and settles (to less than the aim on the default disc's hammering shroud) only
+  // at steps spanning many of them, which a turn of the aim would never let it reach.
+  const double aim = secant_ ? 4 * o_.turnAngle : o_.turnAngle;
+  const double byTurn = secant_ && turn < aim ? 2.0 : std::clamp(aim / std::max(turn, 1e-12), 0.25, 2.0);
   double next = ds * std::min(byNewton, byTurn);
   if (byTurn < byNewton) next = std::max(next, std::min(ds * byNewton, cornerStep_));
   return std::clamp(next, o_.minStep, o_.maxStep);
+}
+
+// Secant steps where 6 of the last 10 steps were held within twice the corner's size
+// by the tangent's turn (a stair of kinks: the tangent turns about as much whatever the
+// step); back to the tangent after 5 steps in a row whose tangent turned less than the
+// aim (the curve smooth again at the step's scale).
+void Tracer::switchPredictor(double tangentTurn, double next, double p) {
+  if (!o_.secantOverKinks) return;
+  if (!secant_) {
+    heldSteps_.push_back(next <= 2 * cornerStep_ && tangentTurn > o_.turnAngle);
+    if (heldSteps_.size() > 10) heldSteps_.pop_front();
+    if (std::count(heldSteps_.begin(), heldSteps_.end(), true) < 6) return;
+    secant_ = true, smoothRun_ = 0;
+    log::info("continuation: a stair of kinks at p = " + std::to_string(p) + ": secant steps");
+    return;
+  }
+  smoothRun_ = tangentTurn < o_.turnAngle ? smoothRun_ + 1 : 0;
+  if (smoothRun_ < 5) return;
+  secant_ = false;
+  heldSteps_.clear();
+  log::info("continuation: smooth again at p = " + std::to_string(p) + ": tangent steps");
 }
 
 // After a taken step from `previous` to z: true (the trace ends) when z left the range,
@@ -857,7 +900,13 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     Correction c;
     Point t1;
     double cosTurn = 1;
-    const StepOutcome outcome = correctStep(z, t, ds, c, t1, cosTurn);
+    // The predictor: along the tangent, or along the last chord where the curve is a
+    // stair of kinks (a friction contact's stick, slip or lift-off instant crossing a
+    // time sample; the hammering shroud crosses thousands along one resonance): there
+    // the tangent turns by about as much at any step and points anywhere (a micro-fold
+    // reverses it), while the chord over several kinks follows the curve.
+    const Point along = secant_ && branch_.points.size() >= 2 ? lastChord() : t;
+    const StepOutcome outcome = correctStep(z, along, ds, c, t1, cosTurn);
     keepFactors(c);
     if (outcome == StepOutcome::Retract) {
       retract(z, t, ds);
@@ -869,14 +918,17 @@ void Tracer::run(const Eigen::VectorXd& guess) {
       if (ds >= o_.minStep || passWall(z, t, ds)) continue;
       break;
     }
+    if (secant_) ++stats().secantSteps;
     const Point previous = z;
     z = std::move(c.z);
     append(z, t1);
     refinePeak(t);  // a maximum of the measure at the point before, whose tangent t is
     rescale(z);
     const double tnorm = metric_.norm(t1);
+    const double tangentTurn = std::acos(std::clamp(metric_.dot(t, t1) / tnorm, -1.0, 1.0));
     t = {t1.x / tnorm, t1.p / tnorm};
     ds = nextStep(c.iterations, cosTurn, ds);
+    switchPredictor(tangentTurn, ds, z.p);
     if (leftTheRange(previous, z, t)) break;
   }
   stats().seconds = secondsBefore_ + total_.seconds();
@@ -892,6 +944,7 @@ void Tracer::logSummary() const {
       << "), factorisations " << s.factorSeconds << " s (" << s.factorizations;
   if (s.doubleFallbacks > 0) msg << ", " << s.doubleFallbacks << " again in double";
   msg << "), solves " << s.solveSeconds << " s";
+  if (s.secantSteps > 0) msg << "; " << s.secantSteps << " secant steps over stairs of kinks";
   if (s.reusedFactorizations > 0)
     msg << " (" << s.reusedFactorizations << " Newton steps with kept factors, " << s.krylovIterations
         << " GMRES iterations)";

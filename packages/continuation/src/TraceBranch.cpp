@@ -38,9 +38,9 @@ ContinuationOptions locaOptions() {
 
 std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& guess, const ContinuationOptions& o) {
   ContentHash h;
-  h.add(std::string("cyclone trace 6")).add(int(useKrylov(problem, o))).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
+  h.add(std::string("cyclone trace 7")).add(int(useKrylov(problem, o))).add(problem.size).add(int(o.engine)).add(o.from).add(o.to);
   h.add(o.initialStep).add(o.minStep).add(o.maxStep).add(o.maxSteps).add(o.tolerance).add(o.maxNewtonIterations);
-  h.add(o.turnAngle).add(int(o.mixedPrecisionLu)).add(int(o.reuseFactorizations)).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
+  h.add(o.turnAngle).add(int(o.secantOverKinks)).add(int(o.mixedPrecisionLu)).add(int(o.reuseFactorizations)).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
   h.add(int(o.restartWhereTheCorrectorJumps)).add(o.locaParameterPerturbation).add(int(o.lineSearch)).add(int(bool(problem.measure)));
   h.add((long long)guess.size()).add(guess.data(), std::size_t(guess.size()) * sizeof(double));
   h.add((long long)problem.scaleGroups.size());

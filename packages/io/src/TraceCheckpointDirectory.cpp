@@ -74,6 +74,7 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
     writeIntAttribute(h5, "newton_iterations", st.newtonIterations);
     writeIntAttribute(h5, "rejected_steps", st.rejectedSteps);
     writeIntAttribute(h5, "spherical_steps", st.sphericalSteps);
+    writeLong(h5, "secant_steps", st.secantSteps);
     writeLong(h5, "residuals", st.residuals);
     writeLong(h5, "jacobians", st.jacobians);
     writeLong(h5, "factorizations", st.factorizations);
@@ -104,6 +105,9 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
       writeLong(h5, "retractions", s.retractions);
       writeLong(h5, "anchor", s.anchor);
       writeLong(h5, "creep_checked", s.creepChecked);
+      writeLong(h5, "secant", s.secant);
+      writeLong(h5, "smooth_run", s.smoothRun);
+      writeVector(h5, "held_steps", s.heldSteps, H5::PredType::NATIVE_INT);
     }
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + final + ": " + e.getDetailMsg());
@@ -134,6 +138,7 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
     st.newtonIterations = readIntAttribute(h5, "newton_iterations");
     st.rejectedSteps = readIntAttribute(h5, "rejected_steps");
     st.sphericalSteps = readIntAttribute(h5, "spherical_steps");
+    st.secantSteps = readLong(h5, "secant_steps");
     st.residuals = readLong(h5, "residuals");
     st.jacobians = readLong(h5, "jacobians");
     st.factorizations = readLong(h5, "factorizations");
@@ -170,7 +175,11 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
       s.retractions = readLong(h5, "retractions");
       s.anchor = readLong(h5, "anchor");
       s.creepChecked = readLong(h5, "creep_checked");
-      if (s.anchor < 0 || std::size_t(s.anchor) >= P || s.creepChecked < 0) throw Error("counters out of range");
+      s.secant = readLong(h5, "secant");
+      s.smoothRun = readLong(h5, "smooth_run");
+      s.heldSteps = readVector<int>(h5, "held_steps", H5::PredType::NATIVE_INT);
+      if (s.anchor < 0 || std::size_t(s.anchor) >= P || s.creepChecked < 0 || s.smoothRun < 0 || s.heldSteps.size() > 10)
+        throw Error("counters out of range");
     }
   } catch (const std::exception& e) {
     log::warn("continuation: checkpoint " + p + " cannot be read (" + e.what() + "); that trace is computed again");

@@ -70,6 +70,13 @@ struct ContinuationOptions {
   /// (radians). A half circle of the response (the phase through a resonance) takes
   /// about pi / turnAngle points.
   double turnAngle = 0.25;
+  /// PredictorCorrector: where the tangent's turn holds the step at a corner's size for
+  /// most of the last ten steps (a stair of kinks: a sampled contact law's stick, slip and
+  /// lift-off instants crossing the time samples, thousands along a hammering shroud's
+  /// resonance), steps follow the last chord, held by its turn only beyond one radian,
+  /// until the tangent turns less than turnAngle for five steps in a row
+  /// (ContinuationStatistics::secantSteps; docs/solvers.md).
+  bool secantOverKinks = true;
   /// PredictorCorrector: the bordered Jacobian's LU in single precision with every
   /// solve refined in double (DenseLu's mixed precision, from n = 200): the same
   /// iterates to rounding, the LU about 1.9x faster; a matrix single precision cannot
@@ -128,6 +135,9 @@ struct ContinuationStatistics {
   int newtonIterations = 0;  ///< corrector iterations, all steps (rejected ones too)
   int rejectedSteps = 0;     ///< corrections that failed or were refused (the step was cut)
   int sphericalSteps = 0;    ///< steps taken by the spherical corrector (sharp turns)
+  /// Steps taken along the last chord, not the tangent, over a stair of kinks (a
+  /// hammering shroud's contact instants crossing the time samples; PredictorCorrector.cpp).
+  long secantSteps = 0;
   long residuals = 0, jacobians = 0, factorizations = 0;
   /// Factorisations made again in double where the single-precision LU's refinement
   /// did not reach a double LU's accuracy (DenseLu); their time is in factorSeconds.

@@ -30,6 +30,10 @@ struct TraceState {
   double scaleP = 1;
   std::vector<double> scaleX, largestNorm, scaleFloor;  ///< per scale group (ContinuationProblem::scaleGroups)
   long retractions = 0, anchor = 0, creepChecked = 0;
+  /// Secant steps on (a stair of kinks), the last steps' verdicts that switch them on
+  /// (1: held small by the tangent's turn), and the smooth steps in a row that end them.
+  long secant = 0, smoothRun = 0;
+  std::vector<int> heldSteps;
 };
 
 /// Where traces keep their states (io::TraceCheckpointDirectory: HDF5 files).
