@@ -7,6 +7,7 @@
 // nodes) and the kept-factors tests' (10 nodes); the continuation problem over its
 // frequency with the response of DOF 0 as the measure.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -59,6 +60,23 @@ inline continuation::ContinuationProblem frictionSectorProblem(const hbm::Harmon
     return std::make_shared<continuation::JacobianOperatorOf<hbm::JacobianBlocks>>(s.jacobianBlocks(X, p));
   };
   return problem;
+}
+
+/// What a traced curve of the sector is checked by: the largest ||F|| at its points
+/// (each must be a solution) and its largest amplitude (DOF 0, harmonic 1).
+struct SectorCurve {
+  double largestResidual = 0, peak = 0;
+};
+inline SectorCurve checkSectorCurve(const continuation::ContinuationProblem& problem,
+                                    const hbm::HarmonicBalanceSystem& s, const continuation::Branch& b) {
+  SectorCurve c;
+  Eigen::VectorXd F;
+  for (const auto& pt : b.points) {
+    problem.residual(pt.x, pt.parameter, F);
+    c.largestResidual = std::max(c.largestResidual, F.norm());
+    c.peak = std::max(c.peak, s.amplitude(pt.x, 0, 1));
+  }
+  return c;
 }
 
 }  // namespace cyclone::test_support

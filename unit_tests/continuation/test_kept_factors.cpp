@@ -30,12 +30,9 @@ TEST(KeptFactors, SameFrictionCurveWithFewerFactorisations) {
     branches[reuse] = continuation::traceBranch(problem, s->linearizedSolution(o.from), o);
     const auto& b = branches[reuse];
     ASSERT_TRUE(b.finished) << b.stopReason;
-    for (std::size_t i = 0; i < b.points.size(); ++i) {
-      Eigen::VectorXd F;
-      problem.residual(b.points[i].x, b.points[i].parameter, F);
-      EXPECT_LT(F.norm(), 1e-9) << "reuse " << reuse << ", point " << i;
-      peaks[reuse] = std::max(peaks[reuse], s->amplitude(b.points[i].x, 0, 1));
-    }
+    const auto curve = test_support::checkSectorCurve(problem, *s, b);
+    EXPECT_LT(curve.largestResidual, 1e-9) << "reuse " << reuse;
+    peaks[reuse] = curve.peak;
     const auto& st = b.statistics;
     std::printf("reuse %d: %zu points, %d Newton iterations, %ld factorisations, %ld steps with kept factors, "
                 "%ld GMRES iterations, peak %.9f\n",

@@ -116,12 +116,9 @@ TEST(KrylovSolve, SameFrictionCurveAsDense) {
     branches[krylov] = traceBranch(problem, s->linearizedSolution(o.from), o);
     const auto& b = branches[krylov];
     ASSERT_TRUE(b.finished) << b.stopReason;
-    for (std::size_t i = 0; i < b.points.size(); ++i) {
-      Eigen::VectorXd F;
-      problem.residual(b.points[i].x, b.points[i].parameter, F);
-      EXPECT_LT(F.norm(), 1e-9) << "krylov " << krylov << ", point " << i;
-      peaks[krylov] = std::max(peaks[krylov], s->amplitude(b.points[i].x, 0, 1));
-    }
+    const auto curve = test_support::checkSectorCurve(problem, *s, b);
+    EXPECT_LT(curve.largestResidual, 1e-9) << "krylov " << krylov;
+    peaks[krylov] = curve.peak;
     const auto& st = b.statistics;
     std::printf("%s: %zu points, %d Newton iterations, %ld factorisations, %ld Krylov solves, %ld GMRES iterations "
                 "(%.1f a solve), peak %.9f, %.2f s\n",

@@ -28,6 +28,8 @@ continuation::TraceState unfinishedState() {
   s.directionX = Eigen::VectorXd::Random(7), s.directionP = -0.7, s.step = 3.3e-4;
   s.scaleX = {2.5, 0.7}, s.scaleP = 1.5, s.largestNorm = {3.1, 0.9}, s.scaleFloor = {1e-9, 2e-9};
   s.retractions = 4, s.anchor = 3, s.creepChecked = 2;
+  s.secant = 1, s.smoothRun = 3, s.heldSteps = {1, 0, 1, 1};
+  s.branch.statistics.secantSteps = 41;
   return s;
 }
 
@@ -67,6 +69,10 @@ TEST(TraceCheckpointFile, AnUnfinishedStateReadsBackExactly) {
   EXPECT_EQ(r->retractions, 4);
   EXPECT_EQ(r->anchor, 3);
   EXPECT_EQ(r->creepChecked, 2);
+  EXPECT_EQ(r->secant, 1);
+  EXPECT_EQ(r->smoothRun, 3);
+  EXPECT_EQ(r->heldSteps, s.heldSteps);
+  EXPECT_EQ(r->branch.statistics.secantSteps, 41);
 
   // A finished one replaces it; its stop reason and flags come back.
   continuation::TraceState done;

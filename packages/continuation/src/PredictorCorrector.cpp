@@ -923,9 +923,10 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     z = std::move(c.z);
     append(z, t1);
     refinePeak(t);  // a maximum of the measure at the point before, whose tangent t is
+    // The tangent's own turn (the switch to and from secant steps), in the step's metric.
+    const double tangentTurn = std::acos(std::clamp(metric_.dot(t, t1) / metric_.norm(t1), -1.0, 1.0));
     rescale(z);
     const double tnorm = metric_.norm(t1);
-    const double tangentTurn = std::acos(std::clamp(metric_.dot(t, t1) / tnorm, -1.0, 1.0));
     t = {t1.x / tnorm, t1.p / tnorm};
     ds = nextStep(c.iterations, cosTurn, ds);
     switchPredictor(tangentTurn, ds, z.p);
