@@ -206,7 +206,7 @@ std::vector<std::string> readAnalyses(SceneSection& scene) {
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   scene.rejectKeysOtherThan({"analysis", "output_directory", "mesh", "material", "constraints", "loads", "solver",
                              "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
-                             "samples", "continuation", "output", "static_loads", "reduced_model",
+                             "harmonics_tolerance", "harmonics_max", "samples", "continuation", "output", "static_loads", "reduced_model",
                              "disc_response"});
   // A mass matrix needs a density: with rho = 0 the eigen-solver spun for minutes (issue 20).
   if (wants("modal") || wants("disc_response") || wants("reduced_model")) {
