@@ -14,7 +14,7 @@ Eigen::MatrixXd ScalarElementAdapter::forceSamples(const Aft& aft, const Eigen::
   const Eigen::VectorXd w = aft.toTime(wCoefficients);
   Eigen::VectorXd wdot, f;
   if (element_->usesVelocity()) wdot = aft.toTime(Eigen::VectorXd(omega * (aft.derivativeMatrix() * wCoefficients)));
-  element_->evaluate(w, wdot, f, nullptr, nullptr);
+  element_->lawSamples(w, wdot, f);
   return f;
 }
 

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "LocatedUnilateralForce.hpp"
 #include "cyclone/core/Error.hpp"
 
 #include <cmath>
@@ -18,23 +19,33 @@ UnilateralSpring::UnilateralSpring(double k, double gap) : k_(k), gap_(gap) {
 void UnilateralSpring::evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& f,
                                 Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const {
   const Eigen::Index n = w.size();
-  f.resize(n);
   if (dfdw) dfdw->setZero(n, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double penetration = w[i] - gap_;
-    const bool closed = penetration > 0;
-    f[i] = closed ? k_ * penetration : 0.0;
-    if (dfdw && closed) (*dfdw)(i, i) = k_;  // one-sided: 0 exactly at contact onset
-  }
+  const Eigen::VectorXd g = k_ * (w.array() - gap_).matrix();
+  detail::locatedUnilateralForce(g, f, [&](Eigen::Index i, Eigen::Index j, double ii, double ij, double ji, double jj) {
+    if (!dfdw) return;
+    (*dfdw)(i, i) += k_ * ii, (*dfdw)(i, j) += k_ * ij, (*dfdw)(j, i) += k_ * ji, (*dfdw)(j, j) += k_ * jj;
+  });
   if (dfdwdot) dfdwdot->setZero(n, n);
 }
 
 void UnilateralSpring::forceSensitivity(const Eigen::VectorXd& w, const Eigen::VectorXd&, const Eigen::MatrixXd& dw,
                                         const Eigen::MatrixXd&, Eigen::VectorXd& f, Eigen::MatrixXd& df) const {
-  const Eigen::ArrayXd penetration = w.array() - gap_;
-  const Eigen::ArrayXd closed = (penetration > 0).cast<double>();  // one-sided: 0 exactly at onset
-  f = (k_ * closed * penetration).matrix();
-  df = (k_ * closed).matrix().asDiagonal() * dw;
+  const Eigen::VectorXd g = k_ * (w.array() - gap_).matrix();
+  df.setZero(dw.rows(), dw.cols());
+  detail::locatedUnilateralForce(g, f, [&](Eigen::Index i, Eigen::Index j, double ii, double ij, double ji, double jj) {
+    df.row(i) += k_ * (ii * dw.row(i) + ij * dw.row(j));
+    df.row(j) += k_ * (ji * dw.row(i) + jj * dw.row(j));
+  });
+}
+
+void UnilateralSpring::lawSamples(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& f) const {
+  f = (k_ * (w.array() - gap_).max(0.0)).matrix();
+}
+
+double UnilateralSpring::incremental(double w, double, double&, double& dfdw, double& dfdwdot) const {
+  const double penetration = w - gap_;
+  dfdw = penetration > 0 ? k_ : 0.0, dfdwdot = 0;
+  return penetration > 0 ? k_ * penetration : 0.0;
 }
 
 std::shared_ptr<const ScalarElement> UnilateralSpring::withParameter(const std::string& name, double value) const {

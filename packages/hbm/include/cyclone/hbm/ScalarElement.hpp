@@ -25,6 +25,13 @@ public:
   virtual void evaluate(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f,
                         Eigen::MatrixXd* dfdw, Eigen::MatrixXd* dfdwdot) const = 0;
 
+  /// The law's own force at each sample (a hysteresis loop's points, the contact
+  /// states): evaluate()'s samples, unless they are not the law at the samples but what
+  /// its harmonics are taken from (UnilateralSpring: the instants located between them).
+  virtual void lawSamples(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f) const {
+    evaluate(w, wdot, f, nullptr, nullptr);
+  }
+
   /// The force samples f and their sensitivity df = dfdw dw + dfdwdot dwdot (N x m) to
   /// m quantities the samples depend on, given dw (N x m) and dwdot (N x m; empty when
   /// the element does not use the velocity). The AFT Jacobian needs only this product
