@@ -20,15 +20,18 @@ namespace {
 // Two DOFs, a friction contact from DOF 0 to ground under a constant normal load (kn =
 // 0: a Jenkins element of slip force mu N0 = 0.05, as hbm_vs_time_integration's friction
 // damper; the contact element, which asks for its samples), forced on DOF 0, traced in
-// the frequency over 0.3..2.
-response::ForcedResponseSetup jenkinsChain(int maxPoints) {
+// the frequency over 0.3..2. With tangentialDirections = 2 (a 3D contact moved along one
+// tangential direction: the same law) the contact's force is the sampled law, whose
+// corners move with the samples; with 1 its instants are located between the samples.
+response::ForcedResponseSetup jenkinsChain(int maxPoints, int tangentialDirections = 1) {
   Eigen::MatrixXd M = Eigen::MatrixXd::Identity(2, 2), K(2, 2);
   K << 2.0, -1.0, -1.0, 1.0;
   const Eigen::MatrixXd C = 0.01 * K;
   auto sys = std::make_unique<hbm::HarmonicBalanceSystem>(M, C, K, hbm::HarmonicSet::upTo(3), 256);
   hbm::FrictionContactParameters p;
+  p.tangentialDirections = tangentialDirections;
   p.kt = 1.0, p.kn = 0.0, p.mu = 0.05, p.preload = 1.0;
-  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2, 2);  // w = [t, n]: t = x0, n not moved
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2, tangentialDirections + 1);  // w = [t1, (t2), n]: t1 = x0
   W(0, 0) = 1.0;
   sys->addElement(std::make_shared<hbm::FrictionContact>(p), W);
   sys->addExcitation(0, 1, 0.2);
@@ -72,9 +75,11 @@ private:
 // (a first sweep that folds back to the range's start is not judged so: the loss-factor
 // scene test's curve at 0.003 does that at 256 and 512 samples, and is whole at 1024,
 // where the sweep from the end finds its start).
-// The curve cut short by a point budget of 10 per sweep: with 512 samples the first
-// sweep gets further (0.511 against 0.488: the steps follow the sampled law's corners),
-// so that stop is not taken for a wall and 1024 is tried too. With the default budget
+// The curve cut short by a point budget of 10 per sweep, with the sampled law (a 3D
+// contact): with 512 samples the first sweep gets further (0.511 against 0.488: the steps
+// follow the sampled law's corners), so that stop is not taken for a wall and 1024 is
+// tried too. (With the instants located, the 2D contact's stop stays with 512 samples.)
+// With the default budget
 // and no wall the curve is whole at 256 samples, nothing traced again.
 TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   auto walled = jenkinsChain(continuation::ContinuationOptions().maxSteps);
@@ -88,7 +93,7 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
       << wall.stopReason;
   EXPECT_EQ(walled.system->aft().numSamples(), 256);  // the first curve and its system kept
 
-  auto budget = jenkinsChain(10);
+  auto budget = jenkinsChain(10, 2);
   const auto stopped = response::traceForcedResponse(budget);
   std::printf("budget of 10 points: %zu points, %s\n", stopped.points.size(), stopped.stopReason.c_str());
   EXPECT_FALSE(stopped.finished);

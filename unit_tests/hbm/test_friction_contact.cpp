@@ -66,29 +66,45 @@ Eigen::MatrixXd marchedForceSamples(const FrictionContact& contact, const Aft& a
 
 }  // namespace
 
-// Constant normal load (kn = 0): the tangential part is the Jenkins element;
-// its describing function under u = U cos t (k = 2, slip force 3, U = 5) is
-// known in closed form: 2.523158 cos, -2.673803 sin.
+// Constant normal load (kn = 0): the tangential part is the Jenkins element
+// (k = 2, slip force 3). Its describing function under u = U cos t (U = 5) is known
+// in closed form, a1 = (k U / pi) (b - sin(2 b) / 2), b1 = -(4 fs / pi) (1 - fs / (k U)),
+// cos b = 1 - 2 fs / (k U): the contact (its instants located between the samples)
+// converges to it at fourth order in 1 / N, the sampled Jenkins element at first.
+// On a multi-harmonic motion the two agree to the sampled element's error.
 TEST(FrictionContact, ConstantNormalLoadIsJenkins) {
-  const FrictionContact contact(params(1, 2.0, 0.0, 0.5, 6.0));
-  const JenkinsElement jenkins(2.0, 3.0);
-  for (int samples : {256, 4096}) {
+  const double k = 2.0, fs = 3.0, U = 5.0;
+  const FrictionContact contact(params(1, k, 0.0, 0.5, 6.0));
+  const JenkinsElement jenkins(k, fs);
+  const double b = std::acos(1 - 2 * fs / (k * U));
+  const Eigen::Vector2d exact(k * U / M_PI * (b - std::sin(2 * b) / 2), -4 * fs / M_PI * (1 - fs / (k * U)));
+  std::printf("Jenkins under U cos t: samples, error of the located contact, of the sampled element\n");
+  double located[2] = {0, 0};
+  for (int samples : {64, 128, 256, 512}) {
     const Aft aft(HarmonicSet::upTo(5), samples);
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 2);
-    W(aft.harmonics().cosIndex(1), 0) = 5.0;
-    W(aft.harmonics().cosIndex(3), 0) = 0.7;  // a multi-harmonic motion for the cross-check
+    W(aft.harmonics().cosIndex(1), 0) = U;
     W(aft.harmonics().cosIndex(0), 1) = 0.3;  // normal motion does nothing when kn = 0
     const Eigen::MatrixXd F = force(contact, aft, W);
     const Eigen::VectorXd Fj = harmonicForce(jenkins, aft, Eigen::VectorXd(W.col(0)));
-    EXPECT_LT((F.col(0) - Fj).norm(), 1e-12 * Fj.norm()) << samples;
+    const int c1 = aft.harmonics().cosIndex(1), s1 = aft.harmonics().sinIndex(1);
+    const double error = (Eigen::Vector2d(F(c1, 0), F(s1, 0)) - exact).norm() / exact.norm();
+    const double sampled = (Eigen::Vector2d(Fj(c1), Fj(s1)) - exact).norm() / exact.norm();
+    std::printf("  %4d  %.2e  %.2e\n", samples, error, sampled);
     EXPECT_NEAR(F(aft.harmonics().cosIndex(0), 1), 6.0, 1e-12);
+    if (samples == 128) located[0] = error;
+    if (samples == 512) located[1] = error;
   }
-  const Aft aft(HarmonicSet::upTo(1), 1 << 16);
-  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 2);
-  W(1, 0) = 5.0;
+  EXPECT_LT(located[1], 1e-7);
+  EXPECT_GT(located[0] / located[1], 64.0);  // fourth order: 256 from 128 to 512 samples
+  const Aft aft(HarmonicSet::upTo(5), 4096);
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(aft.numCoefficients(), 2);
+  W(aft.harmonics().cosIndex(1), 0) = U;
+  W(aft.harmonics().cosIndex(3), 0) = 0.7;
+  W(aft.harmonics().sinIndex(2), 0) = -0.9;
   const Eigen::MatrixXd F = force(contact, aft, W);
-  EXPECT_NEAR(F(1, 0), 2.523158, 2e-5);
-  EXPECT_NEAR(F(2, 0), -2.673803, 2e-5);
+  const Eigen::VectorXd Fj = harmonicForce(jenkins, aft, Eigen::VectorXd(W.col(0)));
+  EXPECT_LT((F.col(0) - Fj).norm(), 1e-3 * Fj.norm());
 }
 
 // The normal force is the unilateral spring's law max(N0 + kn n, 0) = kn max(n + N0/kn, 0),
@@ -365,8 +381,9 @@ TEST(FrictionContact, StuckStateIsNearestTheRelaxedOne) {
 }
 
 // The force samples are the contact law itself: the slip plateau at exactly
-// mu N0, whose harmonics are harmonicForce's; the truncated Fourier series of
-// those harmonics (the base-class default) overshoots the plateau (Gibbs).
+// mu N0, whose harmonics are harmonicForce's up to the sampling's error (the
+// harmonic force locates the instants between the samples); the truncated Fourier
+// series of those harmonics (the base-class default) overshoots the plateau (Gibbs).
 TEST(FrictionContact, ForceSamplesAreTheSampledLaw) {
   const FrictionContact contact(params(1, 2.0, 0.0, 0.5, 6.0));  // slip force 3
   const Aft aft(HarmonicSet::upTo(5), 256);
@@ -376,7 +393,7 @@ TEST(FrictionContact, ForceSamplesAreTheSampledLaw) {
   EXPECT_NEAR(f.col(0).cwiseAbs().maxCoeff(), 3.0, 1e-12);
   EXPECT_NEAR(f.col(1).minCoeff(), 6.0, 1e-12);
   const Eigen::MatrixXd F = force(contact, aft, W);
-  EXPECT_LT((aft.toFrequency(Eigen::VectorXd(f.col(0))) - F.col(0)).norm(), 1e-13 * F.norm());
+  EXPECT_LT((aft.toFrequency(Eigen::VectorXd(f.col(0))) - F.col(0)).norm(), 1e-4 * F.norm());
   const Eigen::MatrixXd smooth = contact.NonlinearElement::forceSamples(aft, W, 1.0);
   EXPECT_GT(smooth.col(0).cwiseAbs().maxCoeff(), 3.0 + 1e-3);
 }
@@ -423,4 +440,49 @@ TEST(FrictionContact, ForceIsContinuousThroughTheOnsetOfSlip) {
   }
   std::printf("40 orbits through the onset of slip: largest force change over 2e-8 of the amplitude %.2e\n",
               largest);
+}
+
+// Where the contact opens, closes, sticks and slips every period, each instant crosses
+// the samples as the motion changes. The sampled law's harmonics have a kink at every
+// crossing. Along a path that moves the instants across many samples (64 of them; the
+// normal mean and the tangential amplitude grow), the largest change of the
+// finite-difference slope between neighbouring steps: for a 2D contact (one tangential
+// direction) with its instants located it falls with the step (by 8 from 2e-3 to
+// 2.5e-4), as a C1 function's must, while the sampled law's stays (2.8: a kink's jump
+// does not fall).
+TEST(FrictionContact, LocatedInstantsLeaveNoKinks) {
+  for (int dirs : {1}) {  // (a 3D contact keeps the sampled law: docs/solvers.md)
+    const FrictionContact contact(params(dirs, 2.0, 50.0, 0.3, 2.0));
+    const Aft aft(HarmonicSet::upTo(5), 64);
+    const int nc = aft.numCoefficients(), d = dirs + 1;
+    Eigen::MatrixXd W0 = Eigen::MatrixXd::Zero(nc, d), V = Eigen::MatrixXd::Zero(nc, d);
+    W0(aft.harmonics().cosIndex(1), 0) = 1.0, W0(aft.harmonics().sinIndex(2), 0) = 0.2;
+    if (dirs == 2) W0(aft.harmonics().sinIndex(1), 1) = 0.7, W0(aft.harmonics().cosIndex(3), 1) = 0.1;
+    W0(aft.harmonics().cosIndex(1), d - 1) = 0.5, W0(aft.harmonics().sinIndex(1), d - 1) = 0.2;
+    V(aft.harmonics().cosIndex(0), d - 1) = 0.2, V(aft.harmonics().cosIndex(1), 0) = 0.3;
+    auto largestSlopeJump = [&](bool located, double step) {
+      auto F = [&](double a) {
+        const Eigen::MatrixXd W = W0 + a * V;
+        if (located) return Eigen::MatrixXd(force(contact, aft, W));
+        const Eigen::MatrixXd f = contact.forceSamples(aft, W, 1.0);
+        Eigen::MatrixXd Fs(nc, d);
+        for (int c = 0; c < d; ++c) Fs.col(c) = aft.toFrequency(Eigen::VectorXd(f.col(c)));
+        return Fs;
+      };
+      double jump = 0;
+      Eigen::MatrixXd previous = F(0.0), slope;
+      for (int k = 1; k * step <= 1.0 + 1e-12; ++k) {
+        const Eigen::MatrixXd next = F(k * step), nextSlope = (next - previous) / step;
+        if (k > 1) jump = std::max(jump, (nextSlope - slope).norm());
+        slope = nextSlope, previous = next;
+      }
+      return jump;
+    };
+    const double located[2] = {largestSlopeJump(true, 2e-3), largestSlopeJump(true, 2.5e-4)};
+    const double sampled[2] = {largestSlopeJump(false, 2e-3), largestSlopeJump(false, 2.5e-4)};
+    std::printf("%dD contact: largest slope jump at steps 2e-3 and 2.5e-4: located %.2e %.2e, sampled law %.2e %.2e\n",
+                d, located[0], located[1], sampled[0], sampled[1]);
+    EXPECT_LT(sampled[0] / sampled[1], 2.0) << d << "D";
+    EXPECT_GT(located[0] / located[1], 6.0);
+  }
 }

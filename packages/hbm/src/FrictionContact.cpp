@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "LocatedFrictionForce.hpp"
 #include "StuckSliderState.hpp"
 #include "cyclone/core/Error.hpp"
 
@@ -149,6 +150,14 @@ long FrictionContact::unsettledEvaluations() { return unsettled.load(); }
 
 void FrictionContact::harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double, Eigen::MatrixXd& F,
                                     Eigen::MatrixXd* jacobian) const {
+  if (p_.tangentialDirections == 1) {
+    if (W.rows() != aft.numCoefficients() || W.cols() != 2)
+      throw InputError("friction contact", "expected " + std::to_string(aft.numCoefficients()) +
+                                               " x 2 coefficients, got " + std::to_string(W.rows()) + " x " +
+                                               std::to_string(W.cols()));
+    if (!detail::locatedFrictionForce(p_, aft, W, F, jacobian)) ++unsettled;
+    return;
+  }
   Eigen::MatrixXd w, f;
   sampledForce(aft, W, w, f, jacobian);
   F.resize(aft.numCoefficients(), dimension());
