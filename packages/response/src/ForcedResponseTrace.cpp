@@ -12,7 +12,9 @@
 #include <optional>
 #include <sstream>
 
+#include "cyclone/continuation/HomotopySolve.hpp"
 #include "cyclone/continuation/NewtonSolve.hpp"
+#include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
@@ -59,6 +61,67 @@ std::string rampSignature(const continuation::ContinuationOptions& r) {
   return s.str();
 }
 
+// Newton on fewer harmonics first: H = 1 from rest or the linear solution, then twice
+// as many at each level up to 8 and two more at each after (a raise of eight harmonics
+// at once met the impact oscillator's internal resonance near its 14th and stalled), each level's solution carried up and, where
+// Newton from it stalls, the added harmonics switched on by a homotopy
+// (continuation::solveByHomotopy). With tens of harmonics Newton from rest stalls where
+// the first harmonics' answer, carried up, converges (the impact oscillator with
+// friction at H = 8 to 32, whose ramp of the excitation took most of its curve's time).
+// Empty where a level is not solved or the system has too few harmonics for it to help.
+Eigen::VectorXd startFromFewerHarmonics(const hbm::HarmonicBalanceSystem& hb, double omega, double scale,
+                                        const continuation::ContinuationOptions& o) {
+  const auto& set = hb.aft().harmonics();
+  if (set.maxHarmonic() < 4) return {};
+  Eigen::VectorXd x;
+  std::vector<int> below;  // the last level's harmonics
+  for (int level = 1;; level = std::min(level < 8 ? 2 * level : level + 2, set.maxHarmonic())) {
+    std::vector<int> harmonics;
+    for (int h : set.harmonics())
+      if (h <= level) harmonics.push_back(h);
+    std::unique_ptr<hbm::HarmonicBalanceSystem> copy;
+    if (level < set.maxHarmonic()) {
+      try {
+        copy = hbm::withHarmonics(hb, hbm::HarmonicSet(harmonics), hb.aft().numSamples());
+      } catch (const InputError&) {  // excitation on a harmonic above the level
+        continue;
+      }
+    }
+    const hbm::HarmonicBalanceSystem& system = copy ? *copy : hb;
+    const auto problem = continuationProblem(system, ForcedResponseSetup::Parameter::ForceScale, omega);
+    auto newton = [&](Eigen::VectorXd& y) {
+      return continuation::solveNewton(problem, y, scale, o.tolerance, 100, nullptr, o.linearSolver).converged;
+    };
+    Eigen::VectorXd y;
+    bool solved = false;
+    if (x.size() == 0) {
+      y = Eigen::VectorXd::Zero(system.numUnknowns());
+      solved = newton(y);
+      if (!solved) y = system.linearSolution(omega, scale), solved = newton(y);
+    } else {
+      const hbm::HarmonicSet from(below);
+      y = hbm::transferCoefficients(x, hb.numDofs(), from, system.aft().harmonics());
+      const Eigen::VectorXd carried = y;
+      solved = newton(y);
+      if (!solved) {
+        std::vector<int> added;
+        const int nc = system.numCoefficients();
+        for (int d = 0; d < hb.numDofs(); ++d)
+          for (int h : harmonics) {
+            if (from.contains(h)) continue;
+            added.push_back(d * nc + system.aft().harmonics().cosIndex(h));
+            if (h > 0) added.push_back(d * nc + system.aft().harmonics().sinIndex(h));
+          }
+        y = carried;
+        solved = continuation::solveByHomotopy(problem, y, scale, added, o.tolerance).newton.converged;
+      }
+    }
+    if (!solved) return {};
+    x = std::move(y), below = harmonics;
+    if (level == set.maxHarmonic()) return x;
+  }
+}
+
 StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
   const auto& hb = *setup.system;
   const auto& o = setup.continuation;
@@ -90,6 +153,18 @@ StartingPoint searchStart(ForcedResponseSetup& setup, StartSearches& searches) {
       return start;
     }
     searches.entries.push_back({o.from, "newton", Eigen::VectorXd(), "stagnated"});
+  }
+  if (const auto* ladder = searches.find(o.from, "ladder")) {
+    if (ladder->x.size() > 0) {
+      reuse(*ladder);
+      return start;
+    }
+  } else if (const auto x = startFromFewerHarmonics(hb, omega, scale, o); x.size() > 0 &&
+             attempt(x, "Newton from the first harmonics' solution carried up")) {
+    searches.entries.push_back({o.from, "ladder", start.x, start.method});
+    return start;
+  } else {
+    searches.entries.push_back({o.from, "ladder", Eigen::VectorXd(), "stagnated"});
   }
 
   // The ramp: the excitation scale from 0 to the start's scale at the start frequency.
