@@ -21,7 +21,8 @@ struct SliderState {
 
 // One contact's continuous-time law marched along the Hermite interpolant of its
 // motion's samples, interval by interval; when recording, the hat-weighted integrals
-// of the force (fbar, N x 2) and their sensitivities to the coefficients.
+// of what the force leaves out of the linear springs (fbar, N x 2) and their
+// sensitivities to the coefficients.
 class IntervalMarch {
 public:
   IntervalMarch(const FrictionContactParameters& p, const Aft& aft, const Eigen::MatrixXd& W, bool sensitivities)

@@ -32,11 +32,15 @@ public:
 
   int dimension() const override { return p_.tangentialDirections + 1; }
   int recommendedSamples() const override { return 256; }
-  /// Marches the slider over the samples from the relaxed state (z = 0) until
-  /// the state at the end of a period repeats, then records one more period;
-  /// a 3D contact that can stay stuck all period rests at the stuck state
-  /// nearest the relaxed one. Either way the result (and its mean) is unique
-  /// and a time shift of the motion shifts the force. The Jacobian is exact.
+  /// A 2D contact: its law followed in continuous time along the Hermite
+  /// interpolant of the motion's samples, every instant (closing, opening, stick,
+  /// slip) located between the samples, the harmonics C1 in the motion
+  /// (LocatedFrictionForce). A 3D contact: the sampled law, the slider marched over
+  /// the samples from the relaxed state (z = 0) until the state at the end of a
+  /// period repeats, then one more period recorded; one that can stay stuck all
+  /// period rests at the stuck state nearest the relaxed one. Either way the result
+  /// (and its mean) is unique and a time shift of the motion shifts the force. The
+  /// Jacobian is exact.
   void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                      Eigen::MatrixXd* jacobian) const override;
   /// Force evaluations, process-wide over all contacts, whose slider state did not
