@@ -106,7 +106,8 @@ private:
       auto consider = [&](double t, Phase phase, double direction) {
         if (t < te) te = t, next.phase = phase, next.direction = direction;
       };
-      if (events == 16) {
+      if (events >= 16) {
+        // no further instant in this interval
       } else if (s.phase == Phase::Open) {
         consider(firstCrossing(N, 1, ta), Phase::Stick, 0);  // closing: phase decided below
       } else {
