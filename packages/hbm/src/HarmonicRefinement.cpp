@@ -19,6 +19,18 @@ Eigen::VectorXd transferCoefficients(const Eigen::VectorXd& X, int n, const Harm
   return Y;
 }
 
+std::vector<int> addedCoefficients(int numDofs, const HarmonicSet& from, const HarmonicSet& to) {
+  std::vector<int> added;
+  const int nc = to.numCoefficients();
+  for (int d = 0; d < numDofs; ++d)
+    for (int h : to.harmonics()) {
+      if (from.contains(h)) continue;
+      added.push_back(d * nc + to.cosIndex(h));
+      if (h > 0) added.push_back(d * nc + to.sinIndex(h));
+    }
+  return added;
+}
+
 std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem& s, HarmonicSet harmonics,
                                                      int samples) {
   const HarmonicSet& from = s.aft().harmonics();

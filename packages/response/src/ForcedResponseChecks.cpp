@@ -149,14 +149,11 @@ continuation::HomotopyResult solveCarried(const hbm::HarmonicBalanceSystem& syst
                                           double tolerance) {
   const auto byOmega = continuationProblem(system, ForcedResponseSetup::Parameter::Omega, 0, excitationScale);
   const auto& set = system.aft().harmonics();
-  const int nc = system.numCoefficients();
-  std::vector<int> added;
-  for (int d = 0; d < system.numDofs(); ++d)
-    for (int h : newHarmonics) {
-      added.push_back(d * nc + set.cosIndex(h));
-      if (h > 0) added.push_back(d * nc + set.sinIndex(h));
-    }
-  return continuation::solveByHomotopy(byOmega, X, 2 * M_PI * hz, added, tolerance);
+  std::vector<int> kept;
+  for (int h : set.harmonics())
+    if (std::find(newHarmonics.begin(), newHarmonics.end(), h) == newHarmonics.end()) kept.push_back(h);
+  return continuation::solveByHomotopy(byOmega, X, 2 * M_PI * hz,
+                                       hbm::addedCoefficients(system.numDofs(), hbm::HarmonicSet(kept), set), tolerance);
 }
 
 

@@ -99,21 +99,18 @@ Eigen::VectorXd startFromFewerHarmonics(const hbm::HarmonicBalanceSystem& hb, do
       solved = newton(y);
       if (!solved) y = system.linearSolution(omega, scale), solved = newton(y);
     } else {
+      // Newton from the carried solution (up to 100 steps: solveByHomotopy's own first
+      // try is shorter and stalls where this converges), else the homotopy.
       const hbm::HarmonicSet from(below);
       y = hbm::transferCoefficients(x, hb.numDofs(), from, system.aft().harmonics());
       const Eigen::VectorXd carried = y;
       solved = newton(y);
       if (!solved) {
-        std::vector<int> added;
-        const int nc = system.numCoefficients();
-        for (int d = 0; d < hb.numDofs(); ++d)
-          for (int h : harmonics) {
-            if (from.contains(h)) continue;
-            added.push_back(d * nc + system.aft().harmonics().cosIndex(h));
-            if (h > 0) added.push_back(d * nc + system.aft().harmonics().sinIndex(h));
-          }
         y = carried;
-        solved = continuation::solveByHomotopy(problem, y, scale, added, o.tolerance).newton.converged;
+        solved = continuation::solveByHomotopy(problem, y, scale,
+                                               hbm::addedCoefficients(hb.numDofs(), from, system.aft().harmonics()),
+                                               o.tolerance)
+                     .newton.converged;
       }
     }
     if (!solved) return {};

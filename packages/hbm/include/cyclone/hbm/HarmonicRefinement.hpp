@@ -3,6 +3,7 @@
 // carried over to it: how a solution is refined (raise H, double N) to check
 // its truncation, or continued from a cheap H = 1 start.
 #include <memory>
+#include <vector>
 
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 
@@ -18,5 +19,10 @@ std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem
 /// new ones zero, dropped ones discarded.
 Eigen::VectorXd transferCoefficients(const Eigen::VectorXd& X, int numDofs, const HarmonicSet& from,
                                      const HarmonicSet& to);
+
+/// The unknowns of `to` (numDofs DOFs) that `from` lacks: each DOF's coefficients of
+/// the harmonics `to` adds, the equations a homotopy switches on when a solution is
+/// carried up (continuation::solveByHomotopy).
+std::vector<int> addedCoefficients(int numDofs, const HarmonicSet& from, const HarmonicSet& to);
 
 }  // namespace cyclone::hbm
