@@ -51,6 +51,9 @@ void writeForcedResponse(const response::ForcedResponseSetup& setup, const respo
   }
   if (!result.samplesCheck.text.empty()) summary.computed.push_back(result.samplesCheck.text);
   if (!result.harmonicsCheck.text.empty()) summary.computed.push_back(result.harmonicsCheck.text);
+  for (const auto& other : result.otherPeakChecks)
+    summary.computed.push_back("another peak of the curve, " + other.text);
+  if (!result.harmonicsTarget.text.empty()) summary.computed.push_back(result.harmonicsTarget.text);
 }
 
 response::ForcedResponseResult traceAndWriteForcedResponse(response::ForcedResponseSetup& setup,

@@ -181,16 +181,23 @@ std::vector<PeakStart> prominentPeaks(const Branch& curve, const std::function<d
   const auto& pts = curve.points;
   std::vector<double> m;
   for (const auto& p : pts) m.push_back(measure(p.x));
+  std::vector<std::size_t> bounds{0};
+  for (std::size_t s : curve.segmentStarts)
+    if (s > bounds.back() && s < pts.size()) bounds.push_back(s);
+  bounds.push_back(pts.size());
   std::vector<PeakStart> out;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    // Interior points only: at a curve's end the response may rise beyond it.
-    if (i == 0 || i + 1 == pts.size() || m[i] < m[i - 1] || m[i] < m[i + 1]) continue;
-    // The lowest point on each side before the path rises above m[i] (or ends).
-    double lowLeft = m[i], lowRight = m[i];
-    for (std::size_t j = i; j-- > 0 && m[j] <= m[i];) lowLeft = std::min(lowLeft, m[j]);
-    for (std::size_t j = i + 1; j < pts.size() && m[j] <= m[i]; ++j) lowRight = std::min(lowRight, m[j]);
-    if (m[i] - std::max(lowLeft, lowRight) < prominence * m[i]) continue;
-    out.push_back({pts[i].x, pts[i].parameter, m[i]});
+  for (std::size_t b = 0; b + 1 < bounds.size(); ++b) {
+    const std::size_t begin = bounds[b], end = bounds[b + 1];
+    for (std::size_t i = begin + 1; i + 1 < end; ++i) {
+      // Interior points only: at a sweep's end the response may rise beyond it.
+      if (m[i] < m[i - 1] || m[i] < m[i + 1]) continue;
+      // The lowest point on each side before the path rises above m[i] (or ends).
+      double lowLeft = m[i], lowRight = m[i];
+      for (std::size_t j = i; j-- > begin && m[j] <= m[i];) lowLeft = std::min(lowLeft, m[j]);
+      for (std::size_t j = i + 1; j < end && m[j] <= m[i]; ++j) lowRight = std::min(lowRight, m[j]);
+      if (m[i] - std::max(lowLeft, lowRight) < prominence * m[i]) continue;
+      out.push_back({pts[i].x, pts[i].parameter, m[i], i});
+    }
   }
   std::sort(out.begin(), out.end(), [](const PeakStart& a, const PeakStart& b) { return a.measure > b.measure; });
   return out;

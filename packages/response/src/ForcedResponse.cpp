@@ -1,12 +1,14 @@
 #include "cyclone/response/ForcedResponse.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/continuation/PeakFollowing.hpp"
 #include "cyclone/hbm/BifurcationFlags.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/hbm/HillStability.hpp"
@@ -154,9 +156,99 @@ std::map<std::string, int> ForcedResponseResult::flagCounts() const {
 
 namespace {
 
-// setup.harmonicsTolerance on a traced curve: the level the harmonics check stopped at
-// when its last two raises met the tolerance, and the curve traced again, whole, with
-// that level's harmonics (setup.system becomes it). Otherwise the curve stays, said.
+// The curve's frequencies in Hz, per point.
+std::vector<double> pointHz(const ForcedResponseResult& result) {
+  std::vector<double> hz;
+  for (double w : result.omega) hz.push_back(w / (2 * M_PI));
+  return hz;
+}
+
+// The checks' index whose highest level found is largest (0 when none is found).
+std::size_t largestConverged(const std::vector<HarmonicsCheck>& checks) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < checks.size(); ++i)
+    if (checks[i].converged.found && (!checks[best].converged.found || checks[i].converged.value > checks[best].converged.value))
+      best = i;
+  return best;
+}
+
+// Makes the largest converged of `checks` the headline's (result.harmonicsCheck), the
+// rest the other peaks'.
+void chooseHeadline(std::vector<HarmonicsCheck> checks, ForcedResponseResult& result) {
+  const std::size_t best = largestConverged(checks);
+  result.harmonicsCheck = checks[best];
+  result.otherPeakChecks.clear();
+  for (std::size_t i = 0; i < checks.size(); ++i)
+    if (i != best) result.otherPeakChecks.push_back(std::move(checks[i]));
+}
+
+// The harmonics check of the curve's largest point and, on a frequency curve whose
+// largest point is an interior peak, of its other prominent peaks (continuation::
+// prominentPeaks) at least half as high, not within 0.5 % in frequency of a peak checked
+// or within 1 % of one in `followedHz` (already followed), at most 4 checks in all: two
+// resonances of similar height need not keep their order as H grows.
+std::vector<HarmonicsCheck> checkPeaks(ForcedResponseSetup& setup, const ForcedResponseResult& result,
+                                       const std::vector<double>& followedHz = {}) {
+  constexpr double kHeight = 0.5, kSamePeak = 5e-3, kFollowed = 1e-2;
+  constexpr std::size_t kMostChecks = 4;
+  const auto hz = pointHz(result);
+  std::vector<double> checkedHz = followedHz;
+  auto near = [&](double f) {
+    for (std::size_t k = 0; k < checkedHz.size(); ++k)
+      if (std::abs(f - checkedHz[k]) <= (k < followedHz.size() ? kFollowed : kSamePeak) * checkedHz[k]) return true;
+    return false;
+  };
+  std::vector<HarmonicsCheck> checks;
+  if (followedHz.empty()) {
+    checks.push_back(checkHarmonics(setup, result.branch, result.peakIndex, result.peak));
+    if (checks.front().levels.empty()) return checks;  // no interior peak, or not a frequency curve
+    checkedHz.push_back(hz[result.peakIndex]);
+  }
+  const auto& hb = *setup.system;
+  const int dof = setup.outputDofs.front(), nc = hb.numCoefficients();
+  const auto& set = hb.aft().harmonics();
+  const auto measure = [&](const Eigen::VectorXd& x) {
+    return hbm::peakMagnitude(set, Eigen::VectorXd(x.segment(dof * nc, nc)));
+  };
+  for (const auto& peak : continuation::prominentPeaks(result.branch, measure)) {
+    if (checks.size() + followedHz.size() >= kMostChecks) break;
+    const double f = hz[peak.index];
+    if (peak.measure < kHeight * result.peak || near(f)) continue;
+    checkedHz.push_back(f);
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "harmonics check: the curve's peak " << peak.measure << " at " << f << " Hz followed as well";
+    log::info(msg.str());
+    auto check = checkHarmonics(setup, result.branch, peak.index, peak.measure);
+    if (!check.levels.empty()) checks.push_back(std::move(check));
+  }
+  return checks;
+}
+
+// Each followed peak's outcome against the target: levelsMeetTarget, -1 where not met.
+std::vector<double> peakChanges(const ForcedResponseResult& r, double target) {
+  std::vector<double> changes{levelsMeetTarget(r.harmonicsCheck.levels, target)};
+  for (const auto& c : r.otherPeakChecks) changes.push_back(levelsMeetTarget(c.levels, target));
+  return changes;
+}
+
+// Where a followed peak other than the headline's did not meet the target: said.
+std::string othersNotMet(const ForcedResponseResult& r, double target) {
+  std::ostringstream text;
+  text.precision(6);
+  for (const auto& c : r.otherPeakChecks) {
+    if (levelsMeetTarget(c.levels, target) >= 0) continue;
+    text << "; the peak near " << c.levels.front().peak.parameter << " Hz did not meet it";
+    if (!c.levels.back().peak.found) text << " (H = " << c.levels.back().maxHarmonic << " not found)";
+  }
+  return text.str();
+}
+
+// setup.harmonicsTolerance on a traced curve: met when every followed peak's check
+// stopped where its last two raises met the tolerance; the curve is then traced again,
+// whole, with the highest of those levels (setup.system becomes it), and the peaks that
+// curve shows and no check followed (an internal resonance that only the raised
+// harmonics reach) are checked from there. Otherwise the curve stays, said.
 ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedResponseResult traced) {
   HarmonicsTarget target;
   target.tolerance = setup.harmonicsTolerance;
@@ -164,41 +256,70 @@ ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedRespo
   const auto& levels = traced.harmonicsCheck.levels;
   std::ostringstream text;
   text.precision(3);
-  const double change = levelsMeetTarget(levels, target.tolerance);
-  if (change < 0) {
+  const auto changes = peakChanges(traced, target.tolerance);
+  if (*std::min_element(changes.begin(), changes.end()) < 0) {
     text << "harmonics by error target " << 100 * target.tolerance << " %: not met";
     if (levels.empty()) text << " (no peak search: " << traced.harmonicsCheck.text << ")";
+    else if (changes.front() >= 0) text << " by every peak";
     else if (!levels.back().peak.found) text << ": H = " << levels.back().maxHarmonic << " not found";
     else text << " by H = " << levels.back().maxHarmonic << " (the largest tried)";
+    text << othersNotMet(traced, target.tolerance);
     text << "; the curve stays the one traced with H = " << target.tracedHarmonic << ", its peak an estimate";
     target.text = text.str();
     log::warn(target.text);
     traced.harmonicsTarget = target;
     return traced;
   }
-  const auto& reached = levels.back();
-  target.reached = reached.maxHarmonic;
-  target.change = change;
+  // The highest level any peak needed.
+  const HarmonicsLevel* reached = &levels.back();
+  for (const auto& c : traced.otherPeakChecks)
+    if (c.levels.back().maxHarmonic > reached->maxHarmonic) reached = &c.levels.back();
+  target.reached = reached->maxHarmonic;
+  target.change = *std::max_element(changes.begin(), changes.end());
   Timer timer;
-  setup.system = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(reached.harmonics), reached.samples);
+  setup.system = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(reached->harmonics), reached->samples);
   const double tolerance = setup.harmonicsTolerance;
   const int checkTo = setup.harmonicsCheckTo;
   setup.harmonicsTolerance = 0, setup.harmonicsCheckTo = -1;  // the levels are known: no second check
   std::ostringstream met;
-  met << "harmonics by error target: the peak met " << 100 * tolerance << " % at H = " << target.reached
-      << "; the curve traced again with it";
+  met << "harmonics by error target: the peak" << (traced.otherPeakChecks.empty() ? "" : "s") << " met "
+      << 100 * tolerance << " % at H = " << target.reached << "; the curve traced again with it";
   log::info(met.str());
   ForcedResponseResult result = solveForcedResponse(setup);
   setup.harmonicsTolerance = tolerance, setup.harmonicsCheckTo = checkTo;
   target.retraced = true;
   target.retraceSeconds = timer.seconds();
   result.harmonicsCheck = traced.harmonicsCheck;
-  text << "harmonics by error target " << 100 * target.tolerance << " %: met at H = " << target.reached
-       << " (the last two raises changed the peak by at most " << 100 * change << " %); the curve traced whole with "
-       << "H = " << target.reached << " (" << result.branch.points.size() << " points, " << target.retraceSeconds
-       << " s), its largest point ";
+  result.otherPeakChecks = traced.otherPeakChecks;
+  // Peaks of the retraced curve that no check followed, checked from its harmonics up.
+  std::vector<double> followedHz{traced.harmonicsCheck.converged.hz};
+  for (const auto& c : traced.otherPeakChecks) followedHz.push_back(c.converged.hz);
+  if (!result.branch.points.empty() && !setup.outputDofs.empty()) {
+    auto added = checkPeaks(setup, result, followedHz);
+    if (!added.empty()) {
+      added.push_back(result.harmonicsCheck);
+      for (auto& c : result.otherPeakChecks) added.push_back(std::move(c));
+      chooseHeadline(std::move(added), result);
+    }
+  }
+  const auto after = peakChanges(result, tolerance);
+  text << "harmonics by error target " << 100 * target.tolerance << " %: ";
+  if (*std::min_element(after.begin(), after.end()) < 0) {
+    // A peak the raised harmonics brought out did not meet the target.
+    target.reached = -1, target.change = -1;
+    text << "not met" << othersNotMet(result, tolerance) << "; the curve traced with H = "
+         << result.harmonicsCheck.converged.maxHarmonic;
+  } else {
+    text << "met at H = " << target.reached << " (the last two raises changed "
+         << (result.otherPeakChecks.empty() ? "the peak" : "each of the curve's " +
+                                                                std::to_string(1 + result.otherPeakChecks.size()) + " peaks")
+         << " by at most " << 100 * target.change << " %)";
+  }
+  text << "; the curve traced whole with H = " << reached->maxHarmonic << " (" << result.branch.points.size()
+       << " points, " << target.retraceSeconds << " s), its largest point ";
   text.precision(7);
-  text << result.peak << " against the peak search's " << reached.peak.value;
+  text << result.peak << " against the peak search's " << result.harmonicsCheck.converged.value << " at "
+       << result.harmonicsCheck.converged.hz << " Hz";
   target.text = text.str();
   log::info(target.text);
   result.harmonicsTarget = target;
@@ -249,8 +370,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
     result.peakParameter = pt.parameter;
     result.peakOmega = result.omega[result.peakIndex];
     result.samplesCheck = checkSamples(setup, pt, result.peak);
-    if (setup.harmonicsCheckTo >= 0)
-      result.harmonicsCheck = checkHarmonics(setup, result.branch, result.peakIndex, result.peak);
+    if (setup.harmonicsCheckTo >= 0) chooseHeadline(checkPeaks(setup, result), result);
   }
   result.seconds = timer.seconds();
   if (setup.harmonicsTolerance > 0 && setup.parameter == ForcedResponseSetup::Parameter::Omega &&

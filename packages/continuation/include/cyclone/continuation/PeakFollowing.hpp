@@ -57,12 +57,15 @@ struct FollowedPeakCurve {
 struct PeakStart {
   Eigen::VectorXd x;
   double frequency = 0, measure = 0;
+  std::size_t index = 0;  ///< the point's index in the traced curve
 };
 
 /// The interior local maxima of a traced frequency curve that stand out: each one's
 /// prominence (how far the measure falls, along the path, before it rises above the
-/// peak again or the curve ends, the lesser of both sides) at least `prominence` of
-/// its value (a curve's kinks make tiny maxima that are not peaks). Largest first.
+/// peak again or the sweep ends, the lesser of both sides) at least `prominence` of
+/// its value (a curve's kinks make tiny maxima that are not peaks). Each sweep of the
+/// curve (Branch::segmentStarts) is a path of its own: the last point of one and the
+/// first of the next are not neighbours. Largest first.
 std::vector<PeakStart> prominentPeaks(const Branch& curve, const std::function<double(const Eigen::VectorXd&)>& measure,
                                       double prominence = 0.05);
 

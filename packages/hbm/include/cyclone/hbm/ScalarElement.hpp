@@ -16,6 +16,8 @@ public:
   /// Whether the force depends on the velocity (callers may then skip
   /// computing velocity samples: wdot is passed empty).
   virtual bool usesVelocity() const { return false; }
+  /// As NonlinearElement::recommendedSamples: 0 if any AFT size will do.
+  virtual int recommendedSamples() const { return 0; }
 
   /// Force samples f[n] over one period from relative displacement samples
   /// w[n] and velocity samples wdot[n] = dw/dt (= omega dw/dtau), n = 0..N-1,

@@ -16,6 +16,7 @@ public:
 
   int dimension() const override { return 1; }
   bool usesVelocity() const override { return element_->usesVelocity(); }
+  int recommendedSamples() const override { return element_->recommendedSamples(); }
   void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                      Eigen::MatrixXd* jacobian) const override;
   /// The scalar law applied to the sampled motion (a Jenkins element's loop with sharp

@@ -50,7 +50,13 @@ struct ForcedResponseResult {
   double peakParameter = 0;   ///< the continuation parameter there
   double peakOmega = 0;       ///< the frequency there (rad/s)
   SamplesCheck samplesCheck;      ///< at the peak point (empty text: not run)
-  HarmonicsCheck harmonicsCheck;  ///< at the peak point (empty text: not run)
+  /// The headline's: of the curve's prominent peaks (prominentPeaks), the one whose
+  /// highest level found is largest (empty text: not run). On a frequency curve every
+  /// prominent peak is followed through the raised harmonics, since the peak largest
+  /// with few harmonics need not be the largest with enough (a hammering resonance falls
+  /// with H where a linear one beside it does not).
+  HarmonicsCheck harmonicsCheck;
+  std::vector<HarmonicsCheck> otherPeakChecks;  ///< the other prominent peaks' checks
   HarmonicsTarget harmonicsTarget;  ///< setup.harmonicsTolerance's outcome (tolerance 0: not asked)
   double seconds = 0;
 
