@@ -19,6 +19,7 @@
 #include "cyclone/mesh/Mesh.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/hbm/ElementStates.hpp"
@@ -95,6 +96,14 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   auto& ct = spec.contact;
   ct.leftSet = c.getString("left_node_set", ct.leftSet);
   ct.rightSet = c.getString("right_node_set", ct.rightSet);
+  // kn, kt and preload per node pair, or per unit area of the interface (kn, kt in N/mm^3,
+  // preload the interface's total load): ShroudContactSpec::Law.
+  const std::string law = c.getString("law", "per_pair");
+  if (law == "per_area") ct.law = disc::ShroudContactSpec::Law::PerArea;
+  else if (law != "per_pair")
+    throw InputError(c.where("law"), "'" + law + "': per_pair (kn, kt in N/mm and the preload per node pair) or "
+                                     "per_area (kn, kt in N/mm^3 and the interface's total preload in N, spread by "
+                                     "each node's tributary area)");
   ct.kn = c.getDouble("kn", ct.kn);
   ct.kt = c.getDouble("kt", ct.kt);
   ct.mu = c.getDouble("mu", ct.mu);
@@ -181,6 +190,15 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     }
     if (r.has("nodal_diameters"))
       throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
+    // Contact faces that do not pair under the sector rotation are refused before any FE work.
+    // So are a law per area whose faces carry no area, and its bad values.
+    mesh::NodePairing pairs;
+    try {
+      pairs = disc::shroudContactPairs(mesh, sectors, plan.modelSpec.axis, spec.contact);
+    } catch (const InputError& e) {
+      throw InputError(d.where("contact"), e.problem());
+    }
+    disc::shroudContactValues(mesh, pairs, spec.contact);
   } else {
     plan.nds = r.getIntList("nodal_diameters", {});
     if (plan.nds.empty())

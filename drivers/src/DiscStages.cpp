@@ -20,6 +20,7 @@
 #include "cyclone/mesh/Mesh.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
+#include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/hbm/ElementStates.hpp"
@@ -227,6 +228,11 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   line << "engine order " << spec.engineOrder << " on ND " << plan.modelSpec.checkNodalDiameter << ": "
        << solved.estimateText << "; sweep " << solved.fromHz << " -> " << solved.toHz << " Hz";
   summary.computed.push_back(line.str());
+  // The interface the contacts make up: its law, total stiffness and load.
+  const auto contact = disc::shroudContactValues(
+      mesh, disc::shroudContactPairs(mesh, models.sectors, models.sector.axis, spec.contact), spec.contact);
+  summary.computed.push_back(contact.text);
+  log::info(contact.text);
   log::info(line.str());
   const auto& reference = solved.curve;
   if (reference.branch.points.empty())

@@ -727,6 +727,14 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   msg = failure(scene(3) + "    stability: never\n", early);
   EXPECT_NE(msg.find("disc_response/stability"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(early / "reduced_models")) << "models built before the key was read";
+  // The contact law's key, and contact faces that do not pair, before the models too.
+  msg = failure(scene(3) + "    contact:\n      law: per_node\n", early);
+  EXPECT_NE(msg.find("disc_response/contact/law"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("per_area"), std::string::npos) << msg;
+  msg = failure(scene(3) + "    contact:\n      right_node_set: disc_right\n", early);
+  EXPECT_NE(msg.find("disc_response/contact"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("do not pair"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(early / "reduced_models")) << "models built before the contact was checked";
 }
 
 namespace {

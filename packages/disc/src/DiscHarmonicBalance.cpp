@@ -1,5 +1,7 @@
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 
+#include "cyclone/disc/ShroudContactLaw.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -100,6 +102,26 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
   return E;
 }
 
+mesh::NodePairing shroudContactPairs(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                                     const ShroudContactSpec& contact) {
+  const auto& left = mesh.nodeSet(contact.leftSet);
+  const auto& right = mesh.nodeSet(contact.rightSet);
+  if (left.size() != right.size())
+    throw InputError("contact", "node sets '" + contact.leftSet + "' (" + std::to_string(left.size()) +
+                                    " nodes) and '" + contact.rightSet + "' (" + std::to_string(right.size()) +
+                                    ") do not pair");
+  double size = 0;
+  const Eigen::Vector3d p0(axis.point[0], axis.point[1], axis.point[2]);
+  for (const auto& c : mesh.coords) size = std::max(size, (vec(c) - p0).norm());
+  try {
+    return mesh::pairRotatedNodes(mesh, left, right, 2 * M_PI / sectors, axis, 1e-6 * size,
+                                  "contact node sets '" + contact.leftSet + "' and '" + contact.rightSet +
+                                      "' (each right node the image of a left node under the sector rotation)");
+  } catch (const InputError& e) {
+    throw InputError("contact", e.where() + ": " + e.problem());
+  }
+}
+
 namespace {
 
 // An engine order the sectors carry as a travelling wave: 1 <= EO < N.
@@ -117,31 +139,6 @@ void checkEngineOrder(int engineOrder, int N) {
     throw InputError("disc_response/engine_order", std::to_string(N) + " on " + std::to_string(N) +
                                                        " sectors folds to 0: every sector in phase (nodal diameter 0); "
                                                        "not a travelling wave, use the nodal-diameter-0 response");
-}
-
-// The contact pairs: right[i] of this sector against left[i] of the next, which must be
-// its image under the sector rotation.
-void checkContactPairs(const mesh::Mesh& mesh, const DiscReducedModels& models, const ShroudContactSpec& contact) {
-  const auto& left = mesh.nodeSet(contact.leftSet);
-  const auto& right = mesh.nodeSet(contact.rightSet);
-  if (left.size() != right.size())
-    throw InputError("contact", "node sets '" + contact.leftSet + "' (" + std::to_string(left.size()) +
-                                    " nodes) and '" + contact.rightSet + "' (" + std::to_string(right.size()) +
-                                    ") do not pair");
-  const Eigen::Matrix3d Q = models.sector.rotation();
-  const Eigen::Vector3d p0 = models.sector.axis.point;
-  double size = 0;
-  for (const auto& c : mesh.coords) size = std::max(size, (vec(c) - p0).norm());
-  for (std::size_t i = 0; i < left.size(); ++i) {
-    const double gap = (Q * (vec(mesh.coords[left[i]]) - p0) + p0 - vec(mesh.coords[right[i]])).norm();
-    if (gap > 1e-6 * size) {
-      std::ostringstream msg;
-      msg << "contact node pairs do not match: right node " << mesh.nodeIds[right[i]] << " is " << gap
-          << " away from the rotated left node " << mesh.nodeIds[left[i]]
-          << " (pair i: right[i] = R(2 pi/N) left[i], in set order)";
-      throw InputError("contact", msg.str());
-    }
-  }
 }
 
 // Which pairs carry a gap element instead of friction (checked), and that element.
@@ -162,11 +159,11 @@ std::shared_ptr<const hbm::NonlinearElement> gapElementFor(const ShroudGapSpec& 
   return std::make_shared<hbm::ScalarElementAdapter>(std::make_shared<hbm::UnilateralSpring>(gap.kn, gap.clearance));
 }
 
-// The shroud contacts' 3D friction law (InputError naming `contact` for bad parameters).
-std::shared_ptr<const hbm::NonlinearElement> frictionElement(const ShroudContactSpec& contact) {
+// A shroud contact's 3D friction law (InputError naming `contact` for bad parameters).
+std::shared_ptr<const hbm::NonlinearElement> frictionElement(double kn, double kt, double mu, double preload) {
   hbm::FrictionContactParameters p;
-  p.tangentialDirections = 2, p.kn = contact.kn, p.kt = contact.kt, p.mu = contact.mu;
-  p.preload = contact.preload;
+  p.tangentialDirections = 2, p.kn = kn, p.kt = kt, p.mu = mu;
+  p.preload = preload;
   try {
     return std::make_shared<hbm::FrictionContact>(p);
   } catch (const InputError& e) {
@@ -174,13 +171,15 @@ std::shared_ptr<const hbm::NonlinearElement> frictionElement(const ShroudContact
   }
 }
 
-// One element per pair, on w = E^T (Q^T u_next,left - u_right): friction, or a gap on the
-// normal (the frame's last column) only.
+// One element per pair, on w = E^T (Q^T u_next,left - u_right): friction (one element
+// for all pairs where the law is per pair, each pair's own where it is per area), or a
+// gap on the normal (the frame's last column) only.
 void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                        const DiscResponseSpec& spec, const std::shared_ptr<const hbm::NonlinearElement>& element,
-                        ForcedResponseSetup& setup) {
-  const auto& left = mesh.nodeSet(spec.contact.leftSet);
-  const auto& right = mesh.nodeSet(spec.contact.rightSet);
+                        const DiscResponseSpec& spec, const mesh::NodePairing& pairs,
+                        const ShroudContactValues& values, ForcedResponseSetup& setup) {
+  const auto &left = pairs.left, &right = pairs.right;
+  const bool shared = spec.contact.law == ShroudContactSpec::Law::PerPair;
+  const auto sharedElement = frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
   const Eigen::Matrix3d Q = models.sector.rotation();
   const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
   std::vector<bool> isGap;
@@ -194,7 +193,10 @@ void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, 
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
     W.middleRows(3 * r, 3) = -Ei;                    // - this sector's right node
     Wnext.middleRows(3 * l, 3) = Q.transpose() * Ei;  // + the next sector's left node, rotated into this frame
-    hb.addElement(isGap[i] ? gapElement : element, W, Wnext);
+    hb.addElement(isGap[i]  ? gapElement
+                  : shared ? sharedElement
+                           : frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]),
+                  W, Wnext);
     setup.elementNames.push_back(isGap[i] ? "gap" : "contact");
   }
 }
@@ -236,8 +238,9 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   auto receptance = std::make_shared<rom::SectorReceptance>(N, models.models);
   const hbm::HarmonicSet harmonics(spec.harmonics);
   for (int k : nodalDiametersFor(N, spec.engineOrder, spec.harmonics)) receptance->model(k);  // all there?
-  checkContactPairs(mesh, models, spec.contact);
-  const auto element = frictionElement(spec.contact);
+  const auto pairs = shroudContactPairs(mesh, models.sectors, models.sector.axis, spec.contact);
+  const auto values = shroudContactValues(mesh, pairs, spec.contact);
+  const auto element = frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
   const int samples = spec.samples > 0 ? spec.samples : std::max(element->recommendedSamples(), harmonics.nonsmoothSamples());
   ForcedResponseSetup setup;
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
@@ -253,7 +256,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     if (h && !h->hasStaticCorrection()) invertible = false;
   }
   hb.useDynamicStiffness(invertible);
-  addContactElements(hb, mesh, models, spec, element, setup);
+  addContactElements(hb, mesh, models, spec, pairs, values, setup);
   addExcitationAndOutputs(hb, mesh, models, spec, setup);
   if (spec.condensed) condenseOntoContacts(setup);
   setup.parameter = ForcedResponseSetup::Parameter::Omega;

@@ -1,5 +1,7 @@
 #include "cyclone/disc/DiscPeakFollowing.hpp"
 
+#include "cyclone/disc/ShroudContactLaw.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -236,9 +238,20 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   } else if (byClearance) {
     response::selectElementParameter(setup, "gap", "gap", out.referenceValue);  // the unilateral spring's gap
   } else {
-    response::selectElementParameter(
-        setup, "contact", following.parameter == DiscStudyParameter::ContactStiffness ? "stiffness" : name,
-        out.referenceValue);
+    const bool stiffness = following.parameter == DiscStudyParameter::ContactStiffness;
+    // A law per unit area: each contact's preload is its share of the total, its stiffness
+    // the value per area times its area.
+    std::vector<double> weights;
+    if (spec.contact.law == ShroudContactSpec::Law::PerArea &&
+        following.parameter != DiscStudyParameter::FrictionCoefficient) {
+      const auto values = shroudContactValues(
+          mesh, shroudContactPairs(mesh, models.sectors, models.sector.axis, spec.contact), spec.contact);
+      std::vector<bool> gap(values.kn.size(), false);
+      for (int i : spec.gap.pairs) gap[std::size_t(i)] = true;
+      for (std::size_t i = 0; i < gap.size(); ++i)
+        if (!gap[i]) weights.push_back(stiffness ? values.stiffnessFactor[i] : values.preloadShare[i]);
+    }
+    response::selectElementParameter(setup, "contact", stiffness ? "stiffness" : name, out.referenceValue, weights);
   }
   const auto problem = response::peakFollowingProblem(setup);
   // Every peak of the reference curve that stands out (5 %), so one that overtakes the

@@ -80,7 +80,7 @@ continuation::ContinuationProblem continuationProblem(const hbm::HarmonicBalance
 }
 
 void selectElementParameter(ForcedResponseSetup& setup, const std::string& element, const std::string& parameter,
-                            double probe) {
+                            double probe, std::vector<double> weights) {
   setup.parameter = ForcedResponseSetup::Parameter::ElementParameter;
   setup.elementParameter = parameter;
   setup.parameterElements.clear();
@@ -92,6 +92,11 @@ void selectElementParameter(ForcedResponseSetup& setup, const std::string& eleme
       setup.baseElements.back()->withParameter(parameter, probe);  // InputError for an unknown parameter
     }
   if (setup.parameterElements.empty()) throw InputError("continuation", "no nonlinear element named '" + element + "'");
+  if (!weights.empty() && weights.size() != setup.parameterElements.size())
+    throw InputError("continuation", std::to_string(weights.size()) + " weights for the " +
+                                         std::to_string(setup.parameterElements.size()) + " elements named '" +
+                                         element + "'");
+  setup.parameterWeights = std::move(weights);
 }
 
 std::string ForcedResponseSetup::parameterName() const {
@@ -116,7 +121,9 @@ std::pair<double, double> ForcedResponseSetup::apply(double p) {
       break;
     case Parameter::ElementParameter:
       for (std::size_t i = 0; i < parameterElements.size(); ++i)
-        system->replaceElement(parameterElements[i], baseElements[i]->withParameter(elementParameter, p));
+        system->replaceElement(parameterElements[i],
+                               baseElements[i]->withParameter(
+                                   elementParameter, parameterWeights.empty() ? p : parameterWeights[i] * p));
       break;
   }
   return {omega, excitationScale};

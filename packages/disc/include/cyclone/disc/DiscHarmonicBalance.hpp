@@ -11,15 +11,26 @@
 #include <Eigen/Dense>
 
 #include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/mesh/RotatedNodePairing.hpp"
 #include "cyclone/response/ForcedResponseSetup.hpp"
 
 namespace cyclone::disc {
 
-/// Per contact node pair (Scalvini 2021, Table 8.4: kn = kt = 1e4 N/mm, mu = 0.4).
+/// The shroud contacts' friction law (Scalvini 2021, Table 8.4: kn = kt = 1e4 N/mm, mu = 0.4,
+/// per contact element of 2.4 mm^2).
 struct ShroudContactSpec {
-  std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";  ///< pair order: right[i] = R left[i]
-  double kn = 1e4, kt = 1e4, mu = 0.4;
-  double preload = 0;  ///< N0: normal force at zero relative displacement (N)
+  /// How kn, kt and preload are given. PerPair: each node pair's (N/mm, N), so the
+  /// interface's total stiffness and load grow with the number of pairs a mesh has.
+  /// PerArea: kn and kt per unit area of the interface (N/mm^3) and preload the
+  /// interface's total normal load (N), spread over the pairs by each right-face node's
+  /// tributary area (mesh::tributaryAreas, shroudContactValues): the same interface at any mesh.
+  enum class Law { PerPair, PerArea };
+  Law law = Law::PerPair;
+  /// The faces' contact nodes, in any order: each right node is paired with the left
+  /// node whose image under the sector rotation it is (shroudContactPairs).
+  std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";
+  double kn = 1e4, kt = 1e4, mu = 0.4;  ///< N/mm per pair, or N/mm^3 (Law::PerArea)
+  double preload = 0;  ///< N0: normal force at zero relative displacement per pair, or the interface's (N)
   /// The contact frame, unit and orthogonal: the normal points from this sector into the
   /// next; zero vectors: the cyclic plane's normal at the right face and the radial direction.
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(), tangent = Eigen::Vector3d::Zero();
@@ -54,6 +65,14 @@ struct DiscResponseSpec {
   /// nodes' motion in the solution; the condensed form's reference in the tests).
   bool condensed = true;
 };
+
+/// The contact pairs of the spec's node sets: each left node with the right node at its
+/// image under the rotation by 2 pi / sectors about `axis` (to 1e-6 of the mesh's size),
+/// any order in the sets; pairs in the left set's order (what the gap elements' and the
+/// contact outputs' pair indices count). InputError naming `contact` where the sets do
+/// not pair so (their sizes, the nodes without a partner).
+mesh::NodePairing shroudContactPairs(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                                     const ShroudContactSpec& contact);
 
 /// The contact frame [t1, t2, n] (columns) of the spec; InputError if the given one is not orthonormal.
 Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,

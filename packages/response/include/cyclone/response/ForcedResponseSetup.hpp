@@ -38,6 +38,9 @@ struct ForcedResponseSetup {
   std::vector<int> parameterElements;
   std::string elementParameter;  ///< ElementParameter: which of their parameters
   std::vector<std::shared_ptr<const hbm::NonlinearElement>> baseElements;  ///< ElementParameter: as the scene gives them
+  /// ElementParameter: element i gets parameterWeights[i] p (empty: p each); e.g. a
+  /// total normal load spread over contacts by their areas.
+  std::vector<double> parameterWeights;
   /// Rebuilt: the system at a value (called when apply() gets a value other than the last
   /// one: a parameter study evaluates one value at a time), and the parameter's name.
   std::function<std::unique_ptr<hbm::HarmonicBalanceSystem>(double)> rebuild;
@@ -76,9 +79,10 @@ struct ForcedResponseSetup {
 };
 
 /// Makes the continuation parameter `parameter` (e.g. preload) of every element named
-/// `element` (InputError if none, or if `probe` is not a valid value of it).
+/// `element`, each element taking weights[i] p (empty: p; InputError if no element has
+/// that name, the weights are not one per such element, or `probe` is not a valid value).
 void selectElementParameter(ForcedResponseSetup& setup, const std::string& element, const std::string& parameter,
-                            double probe);
+                            double probe, std::vector<double> weights = {});
 
 /// The continuation problem of a scene's system in its parameter (the closures
 /// keep a reference to `setup` and call setup.apply(p)).
