@@ -19,7 +19,6 @@
 #include "cyclone/mesh/Mesh.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
-#include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/hbm/ElementStates.hpp"
@@ -190,15 +189,16 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     }
     if (r.has("nodal_diameters"))
       throw InputError(r.where("nodal_diameters"), "is chosen by disc_response (engine order and harmonics)");
-    // Contact faces that do not pair under the sector rotation are refused before any FE work.
-    // So are a law per area whose faces carry no area, and its bad values.
-    mesh::NodePairing pairs;
+    // The contact (faces that do not pair under the sector rotation, a law per area whose
+    // faces carry no area, the friction and gap values), the excitation and the node sets
+    // named are refused before any FE work, under the scene's key.
     try {
-      pairs = disc::shroudContactPairs(mesh, sectors, plan.modelSpec.axis, spec.contact);
+      disc::checkDiscResponse(mesh, sectors, plan.modelSpec.axis, spec);
     } catch (const InputError& e) {
-      throw InputError(d.where("contact"), e.problem());
+      for (const char* section : {"contact", "gap", "excitation"})
+        if (e.where().rfind(section, 0) == 0) throw InputError(d.where(e.where()), e.problem());
+      throw;
     }
-    disc::shroudContactValues(mesh, pairs, spec.contact);
   } else {
     plan.nds = r.getIntList("nodal_diameters", {});
     if (plan.nds.empty())

@@ -734,6 +734,15 @@ TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   msg = failure(scene(3) + "    contact:\n      right_node_set: disc_right\n", early);
   EXPECT_NE(msg.find("disc_response/contact"), std::string::npos) << msg;
   EXPECT_NE(msg.find("do not pair"), std::string::npos) << msg;
+  // Issue 49's list: friction and excitation values, node sets named.
+  msg = failure(scene(3) + "    contact:\n      mu: -0.1\n", early);
+  EXPECT_NE(msg.find("disc_response/contact"), std::string::npos) << msg;
+  msg = failure(scene(3) + "    contact:\n      kt: 0.0\n", early);
+  EXPECT_NE(msg.find("disc_response/contact"), std::string::npos) << msg;
+  msg = failure(scene(3) + "    excitation:\n      direction: [0.0, 0.0, 0.0]\n", early);
+  EXPECT_NE(msg.find("disc_response/excitation/direction"), std::string::npos) << msg;
+  msg = failure(scene(3) + "    excitation:\n      node_set: no_such_set\n", early);
+  EXPECT_NE(msg.find("no_such_set"), std::string::npos) << msg;
   EXPECT_FALSE(fs::exists(early / "reduced_models")) << "models built before the contact was checked";
 }
 

@@ -6,6 +6,8 @@
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
+#include <H5Cpp.h>
+
 #include <filesystem>
 
 #include "cyclone/core/Log.hpp"
@@ -22,6 +24,24 @@ mesh::ShroudedSectorParameters smallDisc() {  // the small disc of the reduced-m
   p.meshSize = 14.0;
   p.boreRadius = 70.0;
   return p;
+}
+// The unprestressed small disc's hybrid models (4 modes) cached in a fresh directory.
+struct CacheCase {
+  mesh::Mesh mesh;
+  disc::DiscModelSpec spec;
+  fs::path dir;
+  disc::DiscReducedModels build(const std::vector<int>& nds) const {
+    return disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  }
+};
+CacheCase unprestressedCase(const std::string& directory) {
+  const auto p = smallDisc();
+  CacheCase c{mesh::generateShroudedSector(p), {}, fs::temp_directory_path() / directory};
+  fs::remove_all(c.dir);
+  c.spec.sectors = p.sectors;
+  c.spec.prestress = cyclic::PrestressKind::None;
+  c.spec.modes = 4;
+  return c;
 }
 }  // namespace
 
@@ -65,20 +85,13 @@ TEST(ReducedModelCache, EveryKindIsReusedExactly) {
 // rebuilt, and the rebuilt model is the first one (to the eigen-solver's precision).
 TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   log::setQuiet(true);
-  const auto p = smallDisc();
-  const auto mesh = mesh::generateShroudedSector(p);
-  const auto dir = fs::temp_directory_path() / "cyclone_reduced_model_cache_truncated";
-  fs::remove_all(dir);
-  disc::DiscModelSpec spec;
-  spec.sectors = p.sectors;
-  spec.prestress = cyclic::PrestressKind::None;
-  spec.modes = 4;
+  const auto c = unprestressedCase("cyclone_reduced_model_cache_truncated");
   const std::vector<int> nds{1};
-  const auto built = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto built = c.build(nds);
   const auto path = built.files.at(1);
   const auto size = fs::file_size(path);
   fs::resize_file(path, size / 3);
-  const auto again = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto again = c.build(nds);
   EXPECT_EQ(again.built, 1);
   EXPECT_EQ(again.reused, 0);
   EXPECT_EQ(fs::file_size(path), size);
@@ -86,8 +99,43 @@ TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   // A new eigen-solution (Anasazi's random start): the same model to solver precision.
   const Eigen::MatrixXcd A = built.models.at(1)->compliance(w);
   EXPECT_LT((again.models.at(1)->compliance(w) - A).norm() / A.norm(), 1e-9);
-  const auto reused = disc::buildDiscReducedModels(mesh, spec, nds, dir.string(), Tpetra::getDefaultComm());
+  const auto reused = c.build(nds);
   EXPECT_EQ(reused.reused, 1);
+}
+
+// A cached file whose content is not what its name and digest promise is computed again,
+// not trusted (issue 49: ND 6's file copied over ND 3's name was "reused (inputs
+// unchanged)" and moved the friction-damped peak from 0.239 to 0.168 mm with exit 0; one
+// eigenvalue scaled by 1.01 moved it by 21 %). Both are rebuilt here, each the model built
+// first to solver precision, and the file holds it again afterwards.
+TEST(ReducedModelCache, ACopiedOrEditedCachedModelIsRebuilt) {
+  log::setQuiet(true);
+  const auto c = unprestressedCase("cyclone_reduced_model_cache_edited");
+  const std::vector<int> nds{1, 2};
+  const auto built = c.build(nds);
+  const double w = 2 * M_PI * built.naturalHz.at(1).front() * 0.7;
+  const Eigen::MatrixXcd A = built.models.at(1)->compliance(w);
+  auto expectRebuilt = [&](const std::string& what) {
+    const auto again = c.build(nds);
+    EXPECT_EQ(again.built, 1) << what;
+    EXPECT_EQ(again.reused, 1) << what;
+    EXPECT_LT((again.models.at(1)->compliance(w) - A).norm() / A.norm(), 1e-9) << what;
+    const auto reused = c.build(nds);
+    EXPECT_EQ(reused.reused, 2) << what << ": the rebuilt file is reused";
+  };
+  // ND 2's file under ND 1's name.
+  fs::copy_file(built.files.at(2), built.files.at(1), fs::copy_options::overwrite_existing);
+  expectRebuilt("ND 2's file under ND 1's name");
+  // One eigenvalue of ND 1's file scaled by 1.01.
+  {
+    H5::H5File h5(built.files.at(1), H5F_ACC_RDWR);
+    auto set = h5.openDataSet("eigenvalues");
+    std::vector<double> values(std::size_t(set.getSpace().getSimpleExtentNpoints()));
+    set.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    values.front() *= 1.01;
+    set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+  }
+  expectRebuilt("an eigenvalue scaled by 1.01");
 }
 
 // A nodal diameter's model does not depend on which others are built in the same run:

@@ -202,6 +202,44 @@ TEST(ReducedModelFile, VersionOneFilesReadAsHybridOrTruncation) {
   }
 }
 
+// The content digest written last: a file read back is verified; one value changed by
+// 1e-12 (relative) in any dataset is refused, naming the file and the digest.
+TEST(ReducedModelFile, ContentIsVerifiedByItsDigest) {
+  const auto dir = fs::temp_directory_path() / "cyclone_rom_file_digest";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto path = (dir / "model.h5").string();
+  const auto rec = io::makeReducedModelRecord(syntheticModel(true), 1, 8, 0, {1, 1, 1, 2, 2, 2}, {0, 1, 2, 0, 1, 2},
+                                              {0, 0, 0, 1, 1, 1});
+  for (const std::string dataset : {"eigenvalues", "shapes", "static_compliance"}) {
+    io::writeReducedModelHdf5(path, rec);
+    EXPECT_TRUE(io::readReducedModelHdf5(path).contentVerified);
+    {
+      H5::H5File h5(path, H5F_ACC_RDWR);
+      auto set = h5.openDataSet(dataset);
+      std::vector<double> values(std::size_t(set.getSpace().getSimpleExtentNpoints()));
+      set.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+      values.back() *= 1 + 1e-12;
+      set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+    }
+    try {
+      io::readReducedModelHdf5(path);
+      ADD_FAILURE() << dataset << " edited and read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("model.h5"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("does not match the digest"), std::string::npos) << e.what();
+    }
+  }
+  // So is a changed label (the nodal diameter the file claims).
+  io::writeReducedModelHdf5(path, rec);
+  {
+    H5::H5File h5(path, H5F_ACC_RDWR);
+    const int other = 3;
+    h5.openAttribute("harmonic").write(H5::PredType::NATIVE_INT, &other);
+  }
+  EXPECT_THROW(io::readReducedModelHdf5(path), InputError);
+}
+
 TEST(ReducedModelFile, BadFilesAndLabelsAreNamed) {
   const auto dir = fs::temp_directory_path() / "cyclone_rom_file_bad";
   fs::remove_all(dir);

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <H5Cpp.h>
+
+#include "cyclone/io/ResultCheckpointDirectory.hpp"
 #include "cyclone/io/TraceCheckpointDirectory.hpp"
 
 using namespace cyclone;
@@ -100,4 +103,46 @@ TEST(TraceCheckpointFile, AnUnfinishedStateReadsBackExactly) {
   readOnly.save("0789", s);
   EXPECT_FALSE(fs::exists(dir / "trace_0789.h5"));
   fs::remove_all(dir);
+}
+
+// A checkpoint whose content was edited, or that was copied under another trace's key,
+// reads as none (computed again), not as a wrong curve (issue 49: scaled values in a
+// modal checkpoint moved a frequency from 476.73 to 481.49 Hz after --resume, exit 0).
+// The same for result checkpoints (the modal and static stages').
+TEST(TraceCheckpointFile, EditedOrMisfiledCheckpointsReadAsNone) {
+  const fs::path dir = fs::temp_directory_path() / "cyclone_trace_checkpoint_digest";
+  fs::remove_all(dir);
+  io::TraceCheckpointDirectory store(dir.string());
+  store.save("0123", unfinishedState());
+  ASSERT_TRUE(store.load("0123").has_value());
+  {
+    H5::H5File h5((dir / "trace_0123.h5").string(), H5F_ACC_RDWR);
+    auto set = h5.openDataSet("parameter");
+    std::vector<double> values(std::size_t(set.getSpace().getSimpleExtentNpoints()));
+    set.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    values[2] *= 1 + 1e-12;
+    set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+  }
+  EXPECT_FALSE(store.load("0123").has_value());
+  store.save("0123", unfinishedState());
+  fs::copy_file(dir / "trace_0123.h5", dir / "trace_0456.h5");
+  EXPECT_FALSE(store.load("0456").has_value());
+  EXPECT_TRUE(store.load("0123").has_value());
+
+  io::ResultCheckpointDirectory results(dir.string());
+  results.save("modes_a", {476.73, 512.0, 0.25});
+  ASSERT_TRUE(results.load("modes_a").has_value());
+  EXPECT_EQ(*results.load("modes_a"), (std::vector<double>{476.73, 512.0, 0.25}));
+  {
+    H5::H5File h5((dir / "result_modes_a.h5").string(), H5F_ACC_RDWR);
+    auto set = h5.openDataSet("values");
+    std::vector<double> values(3);
+    set.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    values[0] = 481.49;
+    set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+  }
+  EXPECT_FALSE(results.load("modes_a").has_value());
+  results.save("modes_a", {476.73, 512.0, 0.25});
+  fs::copy_file(dir / "result_modes_a.h5", dir / "result_modes_b.h5");
+  EXPECT_FALSE(results.load("modes_b").has_value());
 }

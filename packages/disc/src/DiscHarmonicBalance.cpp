@@ -231,6 +231,24 @@ void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& m
 
 }  // namespace
 
+void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                       const DiscResponseSpec& spec) {
+  checkEngineOrder(spec.engineOrder, sectors);
+  const hbm::HarmonicSet harmonics(spec.harmonics);
+  const auto pairs = shroudContactPairs(mesh, sectors, axis, spec.contact);
+  const auto values = shroudContactValues(mesh, pairs, spec.contact);
+  frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
+  for (std::size_t i = 0; i < values.kn.size(); ++i)
+    frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]);
+  std::vector<bool> isGap;
+  gapElementFor(spec.gap, pairs.left.size(), isGap);
+  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  if (!std::isfinite(spec.excitation.amplitude))
+    throw InputError("excitation/amplitude", "must be finite, got " + std::to_string(spec.excitation.amplitude));
+  mesh.nodeSet(spec.excitation.nodeSet);
+  for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
+}
+
 ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                            const DiscResponseSpec& spec, double referenceHz) {
   const int N = models.sectors;

@@ -150,11 +150,26 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
               "); rebuilding it");
     return false;
   }
+  const auto& record = *cached;
+  // The file's content must be what it was written with (its digest) and what its name
+  // promises: a copied, renamed or edited file is computed again, not trusted.
+  std::ostringstream wrong;
+  if (!record.contentVerified) wrong << "it carries no content digest (written by an older version)";
+  else if (record.kind != reducedModelKindName(spec.kind))
+    wrong << "it holds a " << record.kind << " model, " << reducedModelKindName(spec.kind) << " expected";
+  else if (record.nodalDiameter != k)
+    wrong << "it holds the model of nodal diameter " << record.nodalDiameter << ", " << k << " expected";
+  else if (record.sectors != spec.sectors)
+    wrong << "it holds a model of " << record.sectors << " sectors, " << spec.sectors << " expected";
+  else if (record.rpm != spec.rpm)
+    wrong << "it holds a model at " << record.rpm << " rpm, " << spec.rpm << " expected";
+  if (!wrong.str().empty()) {
+    log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " is not reused: " + wrong.str() +
+              "; rebuilding it");
+    return false;
+  }
   if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
     out.check = readCheck(path + ".check.csv", k);
-  const auto& record = *cached;
-  if (record.kind != reducedModelKindName(spec.kind))
-    throw InputError(path, "holds a " + record.kind + " model, " + reducedModelKindName(spec.kind) + " expected");
   // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
   out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
                          ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)
@@ -163,7 +178,7 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
   out.models[k] = record.model();
   out.files[k] = path;
   ++out.reused;
-  log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged)");
+  log::info("reduced model ND " + std::to_string(k) + ": reused " + path + " (inputs unchanged, content verified)");
   return true;
 }
 

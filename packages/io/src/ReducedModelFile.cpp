@@ -4,6 +4,7 @@
 
 #include "Hdf5Datasets.hpp"
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/ContentHash.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/rom/CraigBamptonModel.hpp"
 #include "cyclone/rom/GuyanModel.hpp"
@@ -114,6 +115,44 @@ ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, i
   return rec;
 }
 
+namespace {
+
+void addMatrix(ContentHash& h, const Eigen::MatrixXd& m) {
+  h.add((long long)m.rows()).add((long long)m.cols());
+  if (m.size()) h.add(m.data(), sizeof(double) * std::size_t(m.size()));
+}
+
+}  // namespace
+
+std::string contentDigest(const ReducedModelRecord& rec) {
+  ContentHash h;
+  h.add(std::string("cyclone reduced model content v1")).add(rec.kind).add(rec.nodalDiameter).add(rec.sectors);
+  h.add(rec.rpm).add(rec.lossFactor);
+  h.addAll(rec.retainedNodes).addAll(rec.retainedDirections).addAll(rec.retainedCopies);
+  addMatrix(h, rec.retainedAxes);
+  if (modal(rec.kind)) {
+    h.add(rec.modes.copies).addAll(rec.modes.eigenvalues);
+    addMatrix(h, rec.modes.shapes);
+    addMatrix(h, rec.modes.loads);
+    h.add(rec.staticCorrection ? 1 : 0);
+    if (rec.staticCorrection) {
+      addMatrix(h, rec.staticCompliance.matrix);
+      addMatrix(h, rec.staticCompliance.loadResponse);
+    }
+  } else {
+    h.add(rec.reduction.copies);
+    addMatrix(h, rec.reduction.stiffness);
+    addMatrix(h, rec.reduction.mass);
+    if (rec.kind == "craig_bampton") {
+      h.addAll(rec.reduction.interfaceEigenvalues);
+      addMatrix(h, rec.reduction.massCoupling);
+    }
+  }
+  h.add(rec.staticCompliance.omega0).add(rec.staticCompliance.shift);
+  h.addAll(rec.fullModelEigenvalues);
+  return h.hex();
+}
+
 void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& rec) {
   if (!modal(rec.kind) && !boundary(rec.kind)) throw Error("reduced model: unknown kind '" + rec.kind + "'");
   const Eigen::Index r = retainedSize(rec);
@@ -165,6 +204,7 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
     writeDoubleAttribute(h5, "omega0", rec.staticCompliance.omega0);
     writeDoubleAttribute(h5, "shift", rec.staticCompliance.shift);
     writeDoubleAttribute(h5, "rpm", rec.rpm);
+    writeStringAttribute(h5, "content_digest", contentDigest(rec));  // last: a file cut short has none
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + path + ": " + e.getDetailMsg());
   }
@@ -216,6 +256,13 @@ ReducedModelRecord readReducedModelHdf5(const std::string& path) {
     rec.sectors = readIntAttribute(h5, "sectors");
     rec.lossFactor = readDoubleAttribute(h5, "loss_factor");
     rec.rpm = readDoubleAttribute(h5, "rpm");
+    if (h5.attrExists("content_digest")) {
+      const std::string written = readStringAttribute(h5, "content_digest");
+      if (written != contentDigest(rec))
+        throw InputError(path, "its content does not match the digest written with it (" + written +
+                                   "): a damaged or edited file");
+      rec.contentVerified = true;
+    }
   } catch (const H5::Exception& e) {
     throw InputError(path, "not a Cyclone reduced-model HDF5 file: " + e.getDetailMsg());
   } catch (const InputError&) {

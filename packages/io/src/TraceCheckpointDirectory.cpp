@@ -7,6 +7,7 @@
 #include "Hdf5Datasets.hpp"
 
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/ContentHash.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 
@@ -40,6 +41,35 @@ std::vector<Eigen::VectorXd> readRows(H5::H5File& h5, const char* name) {
   for (hsize_t i = 0; i < dims[0]; ++i)
     rows.push_back(Eigen::Map<const Eigen::VectorXd>(flat.data() + i * dims[1], Eigen::Index(dims[1])));
   return rows;
+}
+
+// A digest of what a state holds that the trace's answer depends on (the points, how
+// the trace ended, the stepper's state for a resume; not its timings), with the key it
+// is filed under: an edited or damaged checkpoint, or one copied under another key, does
+// not match it.
+std::string stateDigest(const std::string& key, const TraceState& s) {
+  ContentHash h;
+  h.add(std::string("cyclone trace checkpoint v1")).add(key);
+  const auto& b = s.branch;
+  h.add((long long)b.points.size());
+  for (const auto& pt : b.points) {
+    h.add(pt.parameter).add((long long)pt.x.size());
+    if (pt.x.size()) h.add(pt.x.data(), sizeof(double) * std::size_t(pt.x.size()));
+  }
+  for (std::size_t v : b.segmentStarts) h.add((long long)v);
+  h.add(s.complete ? 1 : 0).add(b.finished ? 1 : 0).add(b.returnedToStart ? 1 : 0).add(b.reached).add(b.stopReason);
+  if (!s.complete) {
+    for (const auto& t : s.tangentX) {
+      h.add((long long)t.size());
+      if (t.size()) h.add(t.data(), sizeof(double) * std::size_t(t.size()));
+    }
+    h.addAll(s.tangentP).addAll(s.measures).add((long long)s.directionX.size());
+    if (s.directionX.size()) h.add(s.directionX.data(), sizeof(double) * std::size_t(s.directionX.size()));
+    h.add(s.directionP).add(s.step).add(s.scaleP).addAll(s.scaleX).addAll(s.largestNorm).addAll(s.scaleFloor);
+    h.add((long long)s.retractions).add((long long)s.anchor).add((long long)s.creepChecked);
+    h.add((long long)s.secant).add((long long)s.smoothRun).addAll(s.heldSteps);
+  }
+  return h.hex();
 }
 
 void writeLong(H5::H5File& h5, const char* name, long v) { writeAttribute(h5, name, v, H5::PredType::NATIVE_LONG); }
@@ -109,6 +139,7 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
       writeLong(h5, "smooth_run", s.smoothRun);
       writeVector(h5, "held_steps", s.heldSteps, H5::PredType::NATIVE_INT);
     }
+    writeStringAttribute(h5, "content_digest", stateDigest(key, s));  // last: a file cut short has none
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + final + ": " + e.getDetailMsg());
   }
@@ -181,6 +212,10 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
       if (s.anchor < 0 || std::size_t(s.anchor) >= P || s.creepChecked < 0 || s.smoothRun < 0 || s.heldSteps.size() > 10)
         throw Error("counters out of range");
     }
+    if (!h5.attrExists("content_digest")) throw Error("no content digest (written by an older version)");
+    if (readStringAttribute(h5, "content_digest") != stateDigest(key, s))
+      throw Error("its content does not match the digest written with it: a damaged or edited file, or one "
+                  "filed under another trace's key");
   } catch (const std::exception& e) {
     log::warn("continuation: checkpoint " + p + " cannot be read (" + e.what() + "); that trace is computed again");
     return std::nullopt;

@@ -78,6 +78,13 @@ mesh::NodePairing shroudContactPairs(const mesh::Mesh& mesh, int sectors, const 
 Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                    const ShroudContactSpec& contact);
 
+/// What makeDiscForcedResponse checks in the spec that needs no reduced model: the engine
+/// order, the harmonics, the contact pairs and law (its values, the friction and gap
+/// elements' parameters), the excitation's direction and amplitude, the node sets named.
+/// InputError naming the key; so a scene can refuse them before any FE work.
+void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                       const DiscResponseSpec& spec);
+
 /// The system: receptance form over `models`, one friction3d element named "contact" per
 /// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), or a
 /// unilateral spring named "gap" on w_n for the pairs spec.gap names, the

@@ -20,7 +20,9 @@
 //     /retained_copies     [r]        real-form copy (0: real part, 1: imaginary part)
 //     /retained_axes       [r x 3]    optional: each DOF's unit vector (a local frame's); absent: x, y, z
 //   attributes on /: format_version (2; 1: no kind, hybrid or truncation), kind (string),
-//                    harmonic, sectors, copies, static_correction (0/1), loss_factor, omega0, shift, rpm
+//                    harmonic, sectors, copies, static_correction (0/1), loss_factor, omega0, shift, rpm,
+//                    content_digest (string, written last: contentDigest of what the file holds;
+//                    files written before it have none)
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +52,9 @@ struct ReducedModelRecord {
   // guyan and craig_bampton: K_g, M_g (and the interface modes kept, M_bm); copies
   rom::BoundaryReduction reduction;
   std::vector<double> fullModelEigenvalues;  ///< optional: the full model's omega_j^2 (e.g. for a resonance estimate)
+  /// Read back: the file carried a content digest and it matched what was read (false: a
+  /// file written without one).
+  bool contentVerified = false;
 
   /// The model this record describes, whatever its kind.
   std::shared_ptr<const rom::ComplianceModel> model() const;
@@ -68,9 +73,14 @@ ReducedModelRecord makeReducedModelRecord(const rom::CraigBamptonModel& model, i
                                           std::vector<int> nodes, std::vector<int> directions,
                                           std::vector<int> copies);
 
+/// A digest of everything the record holds that a file stores (its values, bit for bit,
+/// and its labels): a changed value, label or size changes it.
+std::string contentDigest(const ReducedModelRecord& record);
+
 /// Written under a temporary name and renamed when complete; read back bit-identical.
 void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& record);
-/// InputError naming the file if it is not such a file or is inconsistent.
+/// InputError naming the file if it is not such a file or is inconsistent, or if its
+/// content does not match the digest written with it (a damaged or edited file).
 ReducedModelRecord readReducedModelHdf5(const std::string& path);
 
 }  // namespace cyclone::io
