@@ -180,6 +180,7 @@ DiscReducedModels reducedModelsStage(const mesh::Mesh& mesh, const DiscPlan& pla
     estimate << "largest relative error " << c.maxError() << " against the full FE compliance at ND "
              << c.nodalDiameter << " over " << c.hz.size() << " frequencies (" << c.hz.front() << ".." << c.hz.back()
              << " Hz)";
+    if (c.reused) estimate << "; the model reused, checked when it was built (" << c.checkedAt << ")";
     if (comm->getRank() == 0) {
       post::SvgPlot plot("Reduced model (" + kind + ", " + std::to_string(ms.modes) +
                              " modes) against the full FE model, ND " + std::to_string(c.nodalDiameter),

@@ -600,6 +600,7 @@ TEST(Scenes, ReducedModelsAreReusedWhileTheirInputsMatch) {
   EXPECT_NE(line(first).find("1 built, 0 reused"), std::string::npos) << line(first);
   const auto second = scenes::runSceneText(scene(6, "[2]"), "rom.yaml", o, Tpetra::getDefaultComm());
   EXPECT_NE(line(second).find("0 built, 1 reused"), std::string::npos) << line(second);
+
   const auto third = scenes::runSceneText(scene(7, "[2]"), "rom.yaml", o, Tpetra::getDefaultComm());
   EXPECT_NE(line(third).find("1 built, 0 reused"), std::string::npos) << line(third);
   int files = 0;

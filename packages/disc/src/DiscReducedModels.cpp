@@ -3,6 +3,8 @@
 #include <Teuchos_Comm.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -168,8 +170,18 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
               "; rebuilding it");
     return false;
   }
-  if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv"))
+  if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv")) {
     out.check = readCheck(path + ".check.csv", k);
+    out.check.reused = true;
+    // When it was checked: the check file's modification time, UTC.
+    const auto written = std::filesystem::last_write_time(path + ".check.csv");
+    const auto system = std::chrono::time_point_cast<std::chrono::system_clock::duration>(
+        written - std::filesystem::file_time_type::clock::now() + std::chrono::system_clock::now());
+    const std::time_t t = std::chrono::system_clock::to_time_t(system);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
+    out.check.checkedAt = text;
+  }
   // Guyan and Craig-Bampton files carry the full model's natural frequencies computed beside them.
   out.naturalHz[k] = record.kind == "guyan" || record.kind == "craig_bampton"
                          ? distinctHz(record.fullModelEigenvalues, record.reduction.copies)

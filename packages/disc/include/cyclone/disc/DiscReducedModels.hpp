@@ -56,6 +56,10 @@ struct ReducedModelCheck {
   std::vector<double> hz, reduced, full;  ///< |A| at the first retained DOF of the excitation direction...
   std::vector<double> error;              ///< ||A_reduced - A_full||_F / ||A_full||_F per frequency
   double seconds = 0;                     ///< the full solves
+  /// Read back with a reused model: the check was made when the model was built, at
+  /// `checkedAt` (the check file's time, UTC), not in this run.
+  bool reused = false;
+  std::string checkedAt;
   double maxError() const;
 };
 
