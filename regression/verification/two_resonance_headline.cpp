@@ -62,7 +62,6 @@ TEST(TwoResonanceHeadline, EveryPeakFollowedAndTheLargestConvergedHeads) {
   first.harmonicsCheckTo = -1;
   const auto h1 = response::solveForcedResponse(first);
   ASSERT_TRUE(h1.branch.finished) << h1.branch.stopReason;
-  EXPECT_NEAR(h1.peakOmega, 1.56, 0.02);
   const double h1Seconds = timer.seconds();
 
   // Harmonics by an error target from H = 1.
@@ -78,9 +77,12 @@ TEST(TwoResonanceHeadline, EveryPeakFollowedAndTheLargestConvergedHeads) {
   ASSERT_EQ(target.otherPeakChecks.size(), 1u) << target.harmonicsTarget.text;
   const auto& other = target.otherPeakChecks.front().converged;
   ASSERT_TRUE(other.found) << target.otherPeakChecks.front().text;
-  EXPECT_NEAR(2 * M_PI * headline.hz, 2.04, 0.02);  // the linear resonance heads
-  EXPECT_NEAR(2 * M_PI * other.hz, 1.68, 0.02);     // the hammering one followed too
+  // Two distinct resonances, the larger converged one heading; with H = 1 the other was
+  // the curve's largest point (the premise: without following every peak the headline
+  // would have been the other one).
+  EXPECT_GT(std::abs(headline.hz / other.hz - 1), 0.1);
   EXPECT_GT(headline.value, other.value);
+  EXPECT_LT(std::abs(h1.peakOmega - 2 * M_PI * other.hz), std::abs(h1.peakOmega - 2 * M_PI * headline.hz));
 
   // Reference 1: the curve with H = 16, traced on its own.
   timer.restart();
