@@ -22,10 +22,12 @@ int main(int argc, char** argv) {
   disc::DiscModelSpec models;
   models.sectors = p.sectors;
   models.rpm = 10000;
-  disc::DiscResponseSpec spec;  // 3D friction at the shroud: kn = kt = 1e4 N/mm, mu = 0.4
+  // 3D friction at the shroud: kn = kt = 4167 N/mm^3 per unit area of the interface, mu = 0.4
+  // (the defaults); the preload is the interface's total, spread by each node's area.
+  disc::DiscResponseSpec spec;
   spec.engineOrder = 3;
   spec.harmonics = {0, 1};
-  spec.contact.preload = 5.0;         // N
+  spec.contact.preload = 100.0;       // N
   spec.excitation.amplitude = 20.0;   // N at the mid-blade node, axial
   const auto nds = disc::nodalDiametersFor(p.sectors, spec.engineOrder, {0, 1, 2});
   const auto reduced = disc::buildDiscReducedModels(mesh, models, nds, "reduced_models", env.comm());
@@ -38,10 +40,10 @@ int main(int argc, char** argv) {
   std::printf("%zu points, %s\n%s\n", response.curve.branch.points.size(), response.curve.branch.stopReason.c_str(),
               response.headline.text.c_str());
 
-  // 3. The preload study: one curve per preload over the same range (5 N is the
+  // 3. The preload study: one curve per preload over the same range (100 N is the
   //    reference: its curve, not traced again).
   const auto study = disc::studyDisc(mesh, reduced, spec, response, disc::DiscStudyParameter::Preload,
-                                     {1.0, 5.0, 20.0}, sweep);
+                                     {25.0, 100.0, 400.0}, sweep);
 
   // 4. What friction must give: the peak between the linear limits (shroud free and
   //    contacts stuck), rising in frequency as more preload holds the contacts.

@@ -194,7 +194,10 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     following.from = study.from, following.to = study.to, following.values = study.values;
     if (study.continuation) following.method = disc::DiscPeakFollowingSpec::Method::Continuation;
     const auto listedHere = listed.count(name) ? listed.at(name) : std::vector<StudyPeak>{};
-    for (const auto& p : listedHere) following.extraValues.push_back(p.value);
+    for (const auto& p : listedHere) {
+      following.extraValues.push_back(p.value);
+      following.knownPeaks.push_back({p.value, {p.x, p.omega, p.peak, 0}});
+    }
     // The speed: the scene's reduced models (same kind, nodal diameters and cache) at each speed.
     following.modelsAtSpeed = [&mesh, &plan, comm](double speed) {
       auto ms = plan.modelSpec;

@@ -97,9 +97,14 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   ct.rightSet = c.getString("right_node_set", ct.rightSet);
   // kn, kt and preload per node pair, or per unit area of the interface (kn, kt in N/mm^3,
   // preload the interface's total load): ShroudContactSpec::Law.
-  const std::string law = c.getString("law", "per_pair");
+  const std::string law = c.getString("law", "per_area");
   if (law == "per_area") ct.law = disc::ShroudContactSpec::Law::PerArea;
-  else if (law != "per_pair")
+  else if (law == "per_pair") {
+    // The thesis' stiffness per contact element (Scalvini 2021, Table 8.4), the per-area
+    // default's source, where kn or kt is not given.
+    ct.law = disc::ShroudContactSpec::Law::PerPair;
+    ct.kn = ct.kt = 1e4;
+  } else
     throw InputError(c.where("law"), "'" + law + "': per_pair (kn, kt in N/mm and the preload per node pair) or "
                                      "per_area (kn, kt in N/mm^3 and the interface's total preload in N, spread by "
                                      "each node's tributary area)");

@@ -307,7 +307,7 @@ int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, 
       plot.addLine(hz, std::vector<double>(r.measure.begin() + long(bounds[k]), r.measure.begin() + long(bounds[k + 1])),
                    post::SvgPlot::palette(index), k == 0 ? label.str() : std::string());
     }
-    if (r.peak > 0) peaks.push_back({c.value, r.peak, r.peakOmega});
+    if (r.peak > 0) peaks.push_back({c.value, r.peak, r.peakOmega, r.branch.points[r.peakIndex].x});
     table << c.value << "," << r.peakOmega / (2 * M_PI) << "," << r.peak << "," << r.branch.points.size() << ","
           << (r.branch.finished ? 1 : 0) << "," << c.seconds << "\n";
     ++index;

@@ -132,6 +132,7 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
 /// A value-list study's peak at one value (its frequency curve's largest point).
 struct StudyPeak {
   double value = 0, peak = 0, omega = 0;
+  Eigen::VectorXd x;  ///< the curve's point at its peak (a known peak for the peak studies)
 };
 
 /// One peak study of disc_response/peak_studies: the parameter, its range and values.

@@ -69,6 +69,7 @@ DiscResponseSpec responseSpec(std::vector<int> harmonics, double preload, double
   DiscResponseSpec s;
   s.engineOrder = kEngineOrder;
   s.harmonics = std::move(harmonics);
+  s.contact.law = ShroudContactSpec::Law::PerPair;  // the limits' stiffness is each pair's
   s.contact.preload = preload, s.contact.kn = kn, s.contact.kt = kt;
   s.excitation.amplitude = 20.0;
   return s;

@@ -270,6 +270,7 @@ disc::DiscResponseSpec sectorResponseSpec(int EO) {
   responseSpec.engineOrder = EO;
   responseSpec.harmonics = {0, 1};
   responseSpec.contact.leftSet = "ring_contact_left", responseSpec.contact.rightSet = "ring_contact_right";
+  responseSpec.contact.law = disc::ShroudContactSpec::Law::PerPair;  // as the full ring's contacts
   responseSpec.contact.kn = responseSpec.contact.kt = 1e4;
   responseSpec.contact.mu = 0.4;
   responseSpec.contact.preload = 1.0;  // recalibrated below

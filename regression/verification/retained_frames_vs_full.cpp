@@ -142,6 +142,12 @@ TEST(RetainedFrames, ReducedModelsInFrameAgainstFull) {
   const Eigen::MatrixXd T = ref.transform(kContact, kMidBlade);
   const Eigen::MatrixXd Az = T.transpose() * ref.xyz->zeroFrequencyCompliance() * T;
 
+  // Guyan's and Craig-Bampton's static compliance is exact: against the reference's it
+  // differs by the static solves' rounding, about eps cond(K) (1.1e-10 measured once the
+  // mid-blade point became a mesh node, a smaller element beside it), far below the
+  // truncation errors the test tells apart (1e-3 and above).
+  constexpr double kStaticRounding = 1e-9;
+
   // Compliance models: the hybrid model and truncation in the frame (20 modes).
   Timer timer;
   const auto modes = framed.modes(20);
@@ -161,7 +167,7 @@ TEST(RetainedFrames, ReducedModelsInFrameAgainstFull) {
   const double guyanZero = relativeError(guyan.zeroFrequencyCompliance(), Az);
   const double guyanError = worstError(guyan, ref, T);
   std::printf("  Guyan %.3e, at zero frequency %.3e (%.1f s)\n", guyanError, guyanZero, timer.seconds());
-  EXPECT_LT(guyanZero, 1e-10);
+  EXPECT_LT(guyanZero, kStaticRounding);
   // Fewer boundary DOFs, a subspace of the Ritz space with all 3 global directions:
   // its eigenvalues at or above that model's, which are at or above the full model's.
   const rom::GuyanModel guyanXyz(rom::reduceOntoRetainedDofs(*ref.xyz, 0), kEta);
@@ -183,7 +189,7 @@ TEST(RetainedFrames, ReducedModelsInFrameAgainstFull) {
     std::printf("  Craig-Bampton %d interface modes %.3e, at zero frequency %.3e\n", m, error,
                 relativeError(cb.zeroFrequencyCompliance(), Az));
     EXPECT_LT(error, previous);
-    EXPECT_LT(relativeError(cb.zeroFrequencyCompliance(), Az), 1e-10);
+    EXPECT_LT(relativeError(cb.zeroFrequencyCompliance(), Az), kStaticRounding);
     previous = error;
   }
   std::printf("  (reduction with 40 interface modes and the 3 models: %.1f s)\n", timer.seconds());

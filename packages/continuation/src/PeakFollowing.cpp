@@ -58,6 +58,23 @@ class Follower {
 
   void run(const Eigen::VectorXd& x0, double w0);
 
+  // The known peaks at p (options.knownPeaks) searched from; where one is larger than
+  // `peak` by more than the search's tolerance, it replaces it, marked as a jump.
+  void takeKnownPeaks(double p, FollowedPeak& peak) {
+    for (const auto& known : o_.knownPeaks) {
+      if (std::abs(known.parameter - p) > 1e-12 * std::max(std::abs(p), 1e-300)) continue;
+      FollowedPeak other;
+      if (!searchFrom(p, known.peak.x, known.peak.frequency, other)) continue;
+      if (other.measure <= peak.measure * (1 + 1e-6)) continue;
+      std::ostringstream msg;
+      msg << "peak following: at p = " << p << " a known peak at frequency " << other.frequency << " (" << other.measure
+          << ") is above the followed one at " << peak.frequency << " (" << peak.measure << "); followed from it";
+      log::info(msg.str());
+      other.jump = true;
+      peak = std::move(other);
+    }
+  }
+
  private:
   void locateOptimum();
 
@@ -100,6 +117,7 @@ void Follower::run(const Eigen::VectorXd& x0, double w0) {
           << a.parameter << " and " << p << "; the band's largest is at " << next.frequency;
       log::info(msg.str());
     }
+    takeKnownPeaks(p, next);
     out_.points.push_back(std::move(next));
   }
   out_.complete = true;

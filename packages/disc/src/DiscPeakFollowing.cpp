@@ -267,6 +267,7 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   o.bandFrom = 2 * M_PI * bandFromHz, o.bandTo = 2 * M_PI * bandToHz;
   o.sweep = reference.continuation;
   o.sweep.checkpoints = nullptr;
+  o.knownPeaks = following.knownPeaks;
   // Over the force the grid's optimum; over the loss factor the peak falls as the damping
   // grows, so the optimum is the range's end, not located.
   o.locateOptimum = !out.byForce && !byLossFactor && !bySpeed;

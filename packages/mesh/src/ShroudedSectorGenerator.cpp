@@ -111,6 +111,12 @@ int buildSectorGeometry(const ShroudedSectorParameters& p) {
   if (fused.size() != 1)
     throw Error("shrouded sector: disc, blade and shroud did not fuse into one volume (" +
                 std::to_string(fused.size()) + " volumes)");
+  // A mesh node at the blade's mid-height centre (on the stacking line, inside the plate):
+  // the response and excitation point named mid_blade stays the same material point at
+  // every mesh size, so a response there converges with the mesh.
+  const int midBlade = occ::addPoint(p.rimRadius + 0.5 * p.bladeHeight, 0, 0);
+  occ::synchronize();
+  gmsh::model::mesh::embed(0, {midBlade}, 3, fused[0].second);
   gmsh::model::addPhysicalGroup(3, {fused[0].second}, 1);
   gmsh::model::setPhysicalName(3, 1, "sector");
 
@@ -212,6 +218,9 @@ void addNodeSets(Mesh& mesh, const ShroudedSectorParameters& p) {
   mesh.nodeSets["disc_right"] = discR;
   mesh.nodeSets["shroud_left"] = shroudL;
   mesh.nodeSets["shroud_right"] = shroudR;
+  if (best > tol)
+    throw Error("shrouded sector: no mesh node at the embedded mid-blade point (nearest " + std::to_string(best) +
+                " away)");
   mesh.nodeSets["mid_blade"] = {midBlade};
   const RotationAxis axis;
   pairRotatedNodes(mesh, discL, discR, alpha, axis, 1e-6 * rTip, "disc side faces");

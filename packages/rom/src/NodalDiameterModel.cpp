@@ -130,6 +130,36 @@ Eigen::MatrixXcd NodalDiameterModel::compliance(double omega) const {
   return A;
 }
 
+Eigen::MatrixXcd NodalDiameterModel::complianceTimes(double omega, const Eigen::MatrixXd& X) const {
+  const auto& I = *impl_;
+  const auto nd = I.dofs.size();
+  if (X.rows() != I.size())
+    throw InputError("compliance times", std::to_string(X.rows()) + " rows; the model has " +
+                                             std::to_string(I.size()) + " retained DOFs");
+  // A = [L_a, -L_b; L_b, L_a] with [L_a; L_b] copy a's loads' responses (compliance()):
+  // A X = L X_a + [-L_b X_b; L_a X_b], L Y the responses to the loads G_a Y.
+  const auto p = X.cols();
+  const int copies = I.op.copies;
+  linalg::MultiVector rhs(I.G->getMap(), std::size_t(copies * p));
+  for (int c = 0; c < copies; ++c)
+    for (Eigen::Index j = 0; j < p; ++j)
+      for (Eigen::Index k = 0; k < nd; ++k)
+        if (const double a = X(c * nd + k, j); a != 0)
+          rhs.getVectorNonConst(std::size_t(c * p + j))->update(a, *I.G->getVector(std::size_t(k)), 1.0);
+  const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
+  linalg::MultiVector xr(I.G->getMap(), std::size_t(copies * p)), xi(I.G->getMap(), std::size_t(copies * p));
+  solver.solve(rhs, xr, xi);
+  Eigen::MatrixXcd LY(I.size(), copies * p);
+  LY.real() = I.retained(xr);
+  LY.imag() = I.retained(xi);
+  Eigen::MatrixXcd AX = LY.leftCols(p);
+  if (copies == 2) {
+    AX.topRows(nd) -= LY.rightCols(p).bottomRows(nd);
+    AX.bottomRows(nd) += LY.rightCols(p).topRows(nd);
+  }
+  return AX;
+}
+
 std::vector<Eigen::Vector3cd> NodalDiameterModel::fieldResponse(double omega, const Eigen::VectorXcd& forces,
                                                                  int sign) const {
   const auto& I = *impl_;

@@ -22,6 +22,19 @@
 
 namespace cyclone::continuation {
 
+/// A peak to follow: a solution near it and its frequency.
+struct PeakStart {
+  Eigen::VectorXd x;
+  double frequency = 0, measure = 0;
+  std::size_t index = 0;  ///< the point's index in the traced curve
+};
+
+/// A peak known at one parameter value (e.g. the top of a frequency curve traced there).
+struct KnownPeak {
+  double parameter = 0;
+  PeakStart peak;
+};
+
 struct PeakFollowingOptions {
   /// The parameter values, monotone; the first is the start's (logarithmicValues()
   /// spaces them evenly in log p).
@@ -32,6 +45,11 @@ struct PeakFollowingOptions {
                                     ///< it are set per value
   ContinuationOptions sweep;        ///< the band sweeps' options (from, to are the band)
   bool locateOptimum = true;        ///< the smallest peak by golden section between its grid neighbours
+  /// At these parameter values a search from each known peak too, the larger of it and
+  /// the followed one taken (marked as a jump where the known one is larger): a peak that
+  /// rises between two values of the grid, and overtakes the followed one without it
+  /// vanishing, is seen where a curve was traced; the following goes on from it.
+  std::vector<KnownPeak> knownPeaks;
 };
 
 struct FollowedPeak {
@@ -53,12 +71,6 @@ struct FollowedPeakCurve {
   bool optimumLocated = false;
 };
 
-/// A peak to follow: a solution near it and its frequency.
-struct PeakStart {
-  Eigen::VectorXd x;
-  double frequency = 0, measure = 0;
-  std::size_t index = 0;  ///< the point's index in the traced curve
-};
 
 /// The interior local maxima of a traced frequency curve that stand out: each one's
 /// prominence (how far the measure falls, along the path, before it rises above the

@@ -16,20 +16,21 @@
 
 namespace cyclone::disc {
 
-/// The shroud contacts' friction law (Scalvini 2021, Table 8.4: kn = kt = 1e4 N/mm, mu = 0.4,
-/// per contact element of 2.4 mm^2).
+/// The shroud contacts' friction law. The defaults are Scalvini 2021's (Table 8.4: kn = kt =
+/// 1e4 N/mm per contact element of 2.4 mm^2, mu = 0.4) per unit area.
 struct ShroudContactSpec {
   /// How kn, kt and preload are given. PerPair: each node pair's (N/mm, N), so the
   /// interface's total stiffness and load grow with the number of pairs a mesh has.
   /// PerArea: kn and kt per unit area of the interface (N/mm^3) and preload the
   /// interface's total normal load (N), spread over the pairs by each right-face node's
-  /// tributary area (mesh::tributaryAreas, shroudContactValues): the same interface at any mesh.
+  /// tributary area (mesh::tributaryAreas, shroudContactValues): the same interface at any
+  /// mesh, so the default; PerPair only where a caller names it.
   enum class Law { PerPair, PerArea };
-  Law law = Law::PerPair;
+  Law law = Law::PerArea;
   /// The faces' contact nodes, in any order: each right node is paired with the left
   /// node whose image under the sector rotation it is (shroudContactPairs).
   std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";
-  double kn = 1e4, kt = 1e4, mu = 0.4;  ///< N/mm per pair, or N/mm^3 (Law::PerArea)
+  double kn = 1e4 / 2.4, kt = 1e4 / 2.4, mu = 0.4;  ///< N/mm^3 (Law::PerArea), or N/mm per pair
   double preload = 0;  ///< N0: normal force at zero relative displacement per pair, or the interface's (N)
   /// The contact frame, unit and orthogonal: the normal points from this sector into the
   /// next; zero vectors: the cyclic plane's normal at the right face and the radial direction.

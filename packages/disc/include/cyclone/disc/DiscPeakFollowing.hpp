@@ -31,6 +31,11 @@ struct DiscPeakFollowingSpec {
   std::function<DiscReducedModels(double rpm)> modelsAtSpeed;
   /// Values added to the grid (e.g. a value-list study's, so that the two can be compared).
   std::vector<double> extraValues;
+  /// Peaks known at some values (the tops of a value-list study's curves: the point's x,
+  /// its frequency in rad/s): Method::PeakSearch searches from them too at those values
+  /// and takes the larger (continuation::PeakFollowingOptions::knownPeaks), so a peak that
+  /// overtakes the followed one between two values of the grid is not missed there.
+  std::vector<continuation::KnownPeak> knownPeaks;
   /// PeakSearch: a peak search per value of the grid. Continuation: the peak continued by
   /// LOCA on the peak condition (continuation::continuePeak, the frequency curve
   /// parametrised by the response's phase) from the reference value to each end of the

@@ -38,7 +38,8 @@ struct ShroudedSectorParameters {
 ///   disc_left, disc_right             disc side faces (angle -pi/N, +pi/N)
 ///   shroud_left, shroud_right         shroud side faces
 ///   shroud_contact_left/right         shroud face nodes in pair order: right[i] = R left[i]
-///   mid_blade                         one node nearest the blade's mid-height centre
+///   mid_blade                         the node at the blade's mid-height centre, embedded in
+///                                     the mesh (the same material point at every mesh size)
 /// One element block "sector". Progress goes to the log.
 Mesh generateShroudedSector(const ShroudedSectorParameters& parameters);
 

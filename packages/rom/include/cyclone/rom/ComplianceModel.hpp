@@ -22,6 +22,12 @@ public:
   virtual Eigen::Index size() const = 0;
   /// A(omega) (complex symmetric), omega in rad/s.
   virtual Eigen::MatrixXcd compliance(double omega) const = 0;
+  /// A(omega) X for a block of real columns X (size() rows): what a check by a few probe
+  /// vectors needs. By default the formed compliance times X; the full FE model solves
+  /// for the block alone (a factorization and a solve per column, not per retained DOF).
+  virtual Eigen::MatrixXcd complianceTimes(double omega, const Eigen::MatrixXd& X) const {
+    return compliance(omega) * X.cast<std::complex<double>>();
+  }
   /// The undamped compliance at omega = 0 (real): what the mean (harmonic 0) of a
   /// harmonic balance solution sees. Structural damping has no meaning at zero
   /// frequency, so this is not compliance(0). InputError for a model with rigid-body modes.

@@ -62,6 +62,8 @@ public:
 
   /// The full-FE compliance at the retained DOFs (one complex factorization).
   Eigen::MatrixXcd compliance(double omega) const override;
+  /// A(omega) X by one complex factorization and a solve per column of X and copy.
+  Eigen::MatrixXcd complianceTimes(double omega, const Eigen::MatrixXd& X) const override;
   /// G^T K^{-1} G (CHOLMOD); InputError when K is singular (a free sector).
   Eigen::MatrixXd zeroFrequencyCompliance() const override;
   /// G^T ((1 + i eta) K - w^2 M)^{-1} F for the load patterns F (one complex factorization):
