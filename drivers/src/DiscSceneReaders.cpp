@@ -159,6 +159,8 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
   if (cs.has("engine")) sweep.fallback.reset();
   readContinuationSteps(cs, sweep.continuation, "predictor_corrector");
   sweep.continuation.tolerance = cs.getDouble("tolerance", sweep.continuation.tolerance);
+  if (!(sweep.continuation.tolerance > 0 && sweep.continuation.tolerance < 1))
+    throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");
   cs.rejectUnknownKeys();
   sweep.continuation.checkpoints = checkpoints;
   if (sweep.fallback) sweep.fallback->checkpoints = checkpoints;

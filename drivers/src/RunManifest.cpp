@@ -4,6 +4,9 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <csignal>
+#include <cstring>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -22,6 +25,32 @@ std::string utcNow() {
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
   return text;
+}
+
+// What a SIGTERM or SIGINT writes: the manifest saying "interrupted", composed while the
+// run starts, since a signal handler may only make system calls (open, write, rename:
+// async-signal-safe). One run per process, so one of each.
+char gInterruptedText[4096], gInterruptedTemp[4096], gManifestPath[4096];
+std::size_t gInterruptedLength = 0;
+
+extern "C" void markInterrupted(int signal) {
+  const int fd = ::open(gInterruptedTemp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd >= 0) {
+    ssize_t ignored = ::write(fd, gInterruptedText, gInterruptedLength);
+    (void)ignored;
+    ::close(fd);
+    ::rename(gInterruptedTemp, gManifestPath);
+  }
+  // Then what the signal would have done: the process ends by it (the lock goes with it).
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// Copies `text` into a fixed buffer (truncated to it), for the handler.
+void keep(char* buffer, std::size_t size, const std::string& text) {
+  const std::size_t n = std::min(size - 1, text.size());
+  std::memcpy(buffer, text.data(), n);
+  buffer[n] = '\0';
 }
 
 // key -> value of the manifest's "key: value" lines (the first of each key).
@@ -48,14 +77,29 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
                                  ", started " + manifestValue(manifest, "started") +
                                  "): wait for it, or give this run another output_directory");
   }
-  if (std::filesystem::exists(manifest) && manifestValue(manifest, "status") == "running")
+  const std::string previous = std::filesystem::exists(manifest) ? manifestValue(manifest, "status") : "";
+  if (previous == "running" || previous == "interrupted")
     previousUnfinished = "the previous run into " + outDir + " (scene " + manifestValue(manifest, "scene") +
                          ", started " + manifestValue(manifest, "started") +
                          ") stopped without finishing: files this run does not write again are that run's";
   write("running", "");
+  // SIGTERM and SIGINT (a batch system's stop, Ctrl-C) mark the run interrupted; its
+  // checkpoints stay for --resume. SIGKILL cannot be caught: the manifest says running.
+  std::ostringstream text;
+  text << "status: interrupted\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_
+       << "\nerror: stopped by a signal (SIGTERM or SIGINT); run again with --resume to continue from its "
+          "checkpoints\n";
+  keep(gInterruptedText, sizeof gInterruptedText, text.str());
+  gInterruptedLength = std::strlen(gInterruptedText);
+  keep(gInterruptedTemp, sizeof gInterruptedTemp, manifest + ".interrupted.tmp");
+  keep(gManifestPath, sizeof gManifestPath, manifest);
+  std::signal(SIGTERM, markInterrupted);
+  std::signal(SIGINT, markInterrupted);
 }
 
 RunManifest::~RunManifest() {
+  std::signal(SIGTERM, SIG_DFL);
+  std::signal(SIGINT, SIG_DFL);
   if (!finished_) {
     try {
       write("failed", "error: stopped before the end\n");

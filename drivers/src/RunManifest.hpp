@@ -2,7 +2,8 @@
 // A run's mark in its output directory: `run_manifest.txt` says "running" from the
 // start (with the scene, the process and the time), and "complete" with the files
 // written, or "failed" with the reason, at the end; a run killed on the way leaves
-// "running", so its directory is never mistaken for a finished run's. A lock file
+// "running", so its directory is never mistaken for a finished run's; one stopped by
+// SIGTERM or SIGINT says "interrupted" (its checkpoints kept for --resume). A lock file
 // held for the run's life (flock: released by the kernel when the process dies)
 // refuses a second run into the same directory while the first is alive.
 #include <string>

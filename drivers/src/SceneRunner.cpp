@@ -197,6 +197,9 @@ namespace {
 // matrix) its density checked before anything runs, so a typo costs no computation.
 std::vector<std::string> readAnalyses(SceneSection& scene) {
   const auto analyses = scene.getStringList("analysis", {"static"});
+  if (analyses.empty())
+    throw InputError(scene.where("analysis"), "lists no analysis (use static, modal, mesh, reduced_model, "
+                                              "disc_response or forced_response, or a list of them)");
   for (const auto& a : analyses)
     if (a != "static" && a != "mesh" && a != "modal" && a != "forced_response" && a != "reduced_model" &&
         a != "disc_response")

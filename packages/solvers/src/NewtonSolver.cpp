@@ -4,6 +4,7 @@
 
 #include <NOX.H>
 #include <NOX_Thyra_Vector.H>
+#include <Teuchos_oblackholestream.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -165,6 +166,10 @@ NewtonReport solveNewton(const NewtonProblem& problem, linalg::MultiVector& u, c
   params->sublist("Line Search").set("Method", "Backtrack");
   params->sublist("Line Search").sublist("Backtrack").set("Max Iters", 8);
   params->sublist("Printing").set("Output Information", 0);  // failures are reported by the caller
+  // NOX prints its errors whatever the output level (the Broyden direction's "Unable to
+  // compute Jacobian" at every intended restart below): they go nowhere, the report says it.
+  params->sublist("Printing").set("Error Stream",
+                                  Teuchos::RCP<std::ostream>(Teuchos::rcp(new Teuchos::oblackholestream)));
   if (problem.approximateFactor) {
     if (!problem.approximateJacobian) throw Error("solveNewton: an approximate factor needs its matrix");
     // Restarted (with the true Jacobian) only when the residual falls by less than half.
