@@ -44,7 +44,7 @@ struct StepSensitivity {
 
 using Tangential = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 2, 1>;
 
-void contactStep(const FrictionContactParameters& p, const Eigen::VectorXd& wt, double n, Eigen::VectorXd& z,
+void contactStep(const FrictionContactParameters& p, const Eigen::Ref<const Eigen::VectorXd>& wt, double n, Eigen::VectorXd& z,
                  Eigen::VectorXd& f, StepSensitivity* s) {
   const int dt = p.tangentialDirections;
   const double normal = p.preload + p.kn * n;
@@ -339,6 +339,13 @@ Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eig
   dfdw = df;
   dfdwdot = Eigen::MatrixXd::Zero(d, d);
   return f;
+}
+
+// The force alone: contactStep without the sensitivities, no temporaries on the heap.
+void FrictionContact::stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,
+                                Eigen::VectorXd& f) const {
+  const int dt = p_.tangentialDirections;
+  contactStep(p_, w.head(dt), w(dt), state, f, nullptr);
 }
 
 std::shared_ptr<const NonlinearElement> FrictionContact::withParameter(const std::string& name, double value) const {

@@ -56,4 +56,17 @@ std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem
   return out;
 }
 
+std::unique_ptr<HarmonicBalanceSystem> withReceptance(const HarmonicBalanceSystem& s,
+                                                      std::shared_ptr<const ReceptanceModel> model) {
+  if (!s.isReceptance()) throw InputError("receptance", "the system is not in receptance form");
+  if (!model || model->numDofs() != s.numDofs() || model->sectors() != s.receptance()->sectors())
+    throw InputError("receptance", "the new model must have the system's DOFs and sectors");
+  auto out = std::make_unique<HarmonicBalanceSystem>(std::move(model), s.aft().harmonics(), s.aft().numSamples());
+  if (s.isCyclic()) out->setCyclic(s.cyclic());
+  for (const auto& c : s.elements()) out->addElement(c.element, c.W, c.Wnext);
+  out->addExcitationCoefficients(s.excitation());
+  out->addStaticLoadCoefficients(s.staticLoad());
+  return out;
+}
+
 }  // namespace cyclone::hbm

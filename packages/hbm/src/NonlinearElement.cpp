@@ -12,6 +12,12 @@ Eigen::MatrixXd NonlinearElement::forceSamples(const Aft& aft, const Eigen::Matr
   return f;
 }
 
+void NonlinearElement::stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
+                                 Eigen::VectorXd& f) const {
+  Eigen::MatrixXd dfdw, dfdwdot;
+  f = incremental(w, wdot, state, dfdw, dfdwdot);
+}
+
 std::shared_ptr<const NonlinearElement> NonlinearElement::withParameter(const std::string& name, double) const {
   throw InputError("nonlinear element", "this element has no parameter '" + name + "' to vary");
 }

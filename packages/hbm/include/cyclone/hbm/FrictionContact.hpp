@@ -53,6 +53,8 @@ public:
   int stateSize() const override { return p_.tangentialDirections; }
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
+  void stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
+                 Eigen::VectorXd& f) const override;
   /// kt, kn, stiffness (kn = kt = value together), mu, preload.
   std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 

@@ -15,6 +15,12 @@ namespace cyclone::hbm {
 std::unique_ptr<HarmonicBalanceSystem> withHarmonics(const HarmonicBalanceSystem& system, HarmonicSet harmonics,
                                                      int samples);
 
+/// A copy of the receptance-form `system` (cyclic settings, elements, excitation, static
+/// loads, harmonics and samples) over another model of the same DOFs: the same
+/// contacts and loads on another linear part (a modal truncation to integrate in time).
+std::unique_ptr<HarmonicBalanceSystem> withReceptance(const HarmonicBalanceSystem& system,
+                                                      std::shared_ptr<const ReceptanceModel> model);
+
 /// X (laid out for `from`) re-laid out for `to`: shared harmonics copied,
 /// new ones zero, dropped ones discarded.
 Eigen::VectorXd transferCoefficients(const Eigen::VectorXd& X, int numDofs, const HarmonicSet& from,

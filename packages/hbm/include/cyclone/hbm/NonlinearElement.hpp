@@ -49,6 +49,11 @@ public:
   /// copy). dfdw and dfdwdot are set to d x d.
   virtual Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                                       Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const = 0;
+  /// The same step without its derivatives, f set to d values: what an explicit time
+  /// integration calls for every element of every sector at every step (by default
+  /// `incremental`; elements with a cheaper force alone override it).
+  virtual void stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
+                         Eigen::VectorXd& f) const;
 
   /// A copy with one named parameter changed (parameter studies and
   /// continuation in it); InputError naming the element's parameters otherwise.
