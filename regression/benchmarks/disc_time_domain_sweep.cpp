@@ -10,7 +10,9 @@
 // over the same band (each traced whole; a trace that stops says where).
 //   build/regression/disc_time_domain_sweep [preload N (2000)] [from Hz (1400)] [to Hz (1560)]
 //                                          [frequencies (9)] [steps a period (1024)] [H (3)]
-//                                          [max periods (1500)]
+//                                          [max periods (1500)] [history csv ("")]
+// The csv (if named): frequency, period, max |x(t)| over that period, for every
+// frequency: how each run settled, or what the motion did where it did not.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -38,6 +40,7 @@ int main(int argc, char** argv) {
   const int steps = argc > 5 ? std::atoi(argv[5]) : 1024;
   const int maxH = argc > 6 ? std::atoi(argv[6]) : 3;
   const int maxPeriods = argc > 7 ? std::atoi(argv[7]) : 1500;
+  const std::string historyFile = argc > 8 ? argv[8] : "";
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
   mesh::ShroudedSectorParameters p;
@@ -66,6 +69,8 @@ int main(int argc, char** argv) {
   opt.amplitudeTolerance = 1e-3;
   hbm::TravellingWaveState state;
   double best = 0, bestHz = 0;
+  std::FILE* history = historyFile.empty() ? nullptr : std::fopen(historyFile.c_str(), "w");
+  if (history) std::fprintf(history, "frequency_hz,period,amplitude_mm\n");
   Timer total;
   for (int i = 0; i < count; ++i) {
     const double hz = count == 1 ? fromHz : fromHz + (toHz - fromHz) * i / (count - 1);
@@ -76,9 +81,14 @@ int main(int argc, char** argv) {
                                                                                           : "not steady";
     std::printf("  %9.3f Hz  %.6f mm  (%s; %d periods, change %.1e a period, amplitude spread %.1e; %.1f s)\n", hz,
                 r.peak(out), how, r.periods, r.periodChange, r.amplitudeSpread, r.seconds);
-    if (r.peak(out) > best) best = r.peak(out), bestHz = hz;
+    if (r.converged && r.peak(out) > best) best = r.peak(out), bestHz = hz;
+    if (history)
+      for (std::size_t k = 0; k < r.amplitudeHistory.size(); ++k)
+        std::fprintf(history, "%.3f,%zu,%.9g\n", hz, k + 1, r.amplitudeHistory[k]);
   }
-  std::printf("time domain: largest %.6f mm at %.3f Hz (%.0f s in all)\n", best, bestHz, total.seconds());
+  if (history) std::fclose(history);
+  std::printf("time domain: largest steady amplitude %.6f mm at %.3f Hz (%.0f s in all)\n", best, bestHz,
+              total.seconds());
 
   for (int H = 1; H <= maxH; ++H) {
     Timer timer;

@@ -154,6 +154,8 @@ TEST(TravellingWaveIntegration, RefusesWhatItCannotIntegrate) {
     ASSERT_TRUE(tw.converged);
     const double linear = std::abs(causal->compliance(0.5, 1)(0, 0));
     EXPECT_NEAR(tw.peak(0), linear, 1e-5 * linear);
+    ASSERT_EQ(int(tw.amplitudeHistory.size()), tw.periods);  // one amplitude a period, the last the result's
+    EXPECT_EQ(tw.amplitudeHistory.back(), tw.peak(0));
     // Started from the harmonic balance's (exact) linear solution, it is steady at once.
     Eigen::VectorXd X = t.linearSolution(0.5);
     const TravellingWaveState start = travellingWaveStart(t, X, 0.5);

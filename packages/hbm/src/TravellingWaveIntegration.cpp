@@ -245,6 +245,7 @@ TravellingWaveResponse integrateTravellingWave(const HarmonicBalanceSystem& sys,
       for (int a = 0; a < n; ++a) watched.push_back(a);
     // per DOF watched, the last `window` periods' max |x| (a ring buffer)
     Eigen::MatrixXd amplitudes(int(watched.size()), std::max(opt.window, 2));
+    std::vector<double> history;
     bool diverged = false, converged = false;
     double nextReport = 10;
     int periods = 0;
@@ -301,6 +302,7 @@ TravellingWaveResponse integrateTravellingWave(const HarmonicBalanceSystem& sys,
         diverged = true;
         break;
       }
+      history.push_back(motion.col(watched.front()).cwiseAbs().maxCoeff());
       if (k >= 2) {
         const double size = std::max(motion.cwiseAbs().maxCoeff(), 1e-300);
         change = (motion - last).cwiseAbs().maxCoeff() / size;
@@ -311,8 +313,8 @@ TravellingWaveResponse integrateTravellingWave(const HarmonicBalanceSystem& sys,
         if (timer.seconds() > nextReport) {  // long runs show their progress
           nextReport += 10;
           log::info("time integration at " + std::to_string(omega / (2 * M_PI)) + " Hz: period " + std::to_string(k) +
-                    ", change " + std::to_string(change) + ", max |x| of the first DOF " +
-                    std::to_string(motion.col(0).cwiseAbs().maxCoeff()));
+                    ", change " + std::to_string(change) + ", max |x| of DOF " + std::to_string(watched.front()) +
+                    " " + std::to_string(history.back()));
         }
         if (k >= 3 && estimate <= opt.tolerance) {
           converged = true;
@@ -351,6 +353,7 @@ TravellingWaveResponse integrateTravellingWave(const HarmonicBalanceSystem& sys,
     out.converged = converged;
     out.ending = ending;
     out.amplitudeSpread = spread;
+    out.amplitudeHistory = std::move(history);
     out.state.q = q;
     out.state.velocity.resize(np);
     for (std::size_t k = 0; k < np; ++k) out.state.velocity[k] = (q[k] - qPrev[k]) / dt;

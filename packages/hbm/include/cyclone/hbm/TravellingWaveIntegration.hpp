@@ -67,6 +67,9 @@ struct TravellingWaveResponse {
   enum class Ending { Periodic, SteadyAmplitude, NotSteady } ending = Ending::NotSteady;
   bool converged = false;  ///< Periodic or SteadyAmplitude
   double amplitudeSpread = 0;  ///< over the last window, relative to the largest amplitude
+  /// Per period, max |x(t)| of the first DOF watched (steadyDofs, else DOF 0): the
+  /// transient's course, and where the motion never settles, what it does instead.
+  std::vector<double> amplitudeHistory;
   double seconds = 0;
   TravellingWaveState state;
   /// max |x(t)| of a DOF of sector 0 over the last period.
