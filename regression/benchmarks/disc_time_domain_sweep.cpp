@@ -87,8 +87,11 @@ int main(int argc, char** argv) {
         std::fprintf(history, "%.3f,%zu,%.9g\n", hz, k + 1, r.amplitudeHistory[k]);
   }
   if (history) std::fclose(history);
-  std::printf("time domain: largest steady amplitude %.6f mm at %.3f Hz (%.0f s in all)\n", best, bestHz,
-              total.seconds());
+  if (best > 0)
+    std::printf("time domain: largest steady amplitude %.6f mm at %.3f Hz (%.0f s in all)\n", best, bestHz,
+                total.seconds());
+  else
+    std::printf("time domain: no frequency steady (%.0f s in all)\n", total.seconds());
 
   for (int H = 1; H <= maxH; ++H) {
     Timer timer;
