@@ -11,10 +11,15 @@
 //   build/regression/disc_time_domain_sweep [preload N (2000)] [from Hz (1400)] [to Hz (1560)]
 //                                          [frequencies (9)] [steps a period (1024)] [H (3)]
 //                                          [max periods (1500)] [history csv ("")]
+//                                          [Hill's method at these Hz ("": none), e.g. 1500,1520]
 // The csv (if named): frequency, period, max |x(t)| over that period, for every
-// frequency: how each run settled, or what the motion did where it did not.
+// frequency: how each run settled, or what the motion did where it did not. With
+// frequencies for Hill's method, each harmonic balance curve's point nearest each is
+// checked (its leading Floquet exponent): whether the periodic solution the ring does
+// not settle on is unstable there. 0 frequencies skip the time domain.
 #include <cmath>
 #include <cstdio>
+#include <complex>
 #include <cstdlib>
 #include <string>
 
@@ -23,6 +28,7 @@
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/fe/Environment.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
+#include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/ModalReceptance.hpp"
 #include "cyclone/hbm/TravellingWaveIntegration.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
@@ -41,6 +47,12 @@ int main(int argc, char** argv) {
   const int maxH = argc > 6 ? std::atoi(argv[6]) : 3;
   const int maxPeriods = argc > 7 ? std::atoi(argv[7]) : 1500;
   const std::string historyFile = argc > 8 ? argv[8] : "";
+  std::vector<double> hillHz;
+  for (std::string rest = argc > 9 ? argv[9] : ""; !rest.empty();) {
+    const auto comma = rest.find(',');
+    hillHz.push_back(std::atof(rest.substr(0, comma).c_str()));
+    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+  }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
   mesh::ShroudedSectorParameters p;
@@ -72,7 +84,7 @@ int main(int argc, char** argv) {
   std::FILE* history = historyFile.empty() ? nullptr : std::fopen(historyFile.c_str(), "w");
   if (history) std::fprintf(history, "frequency_hz,period,amplitude_mm\n");
   Timer total;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count; ++i) {  // count 0: no time domain
     const double hz = count == 1 ? fromHz : fromHz + (toHz - fromHz) * i / (count - 1);
     const auto r = hbm::integrateTravellingWave(*system, 2 * M_PI * hz, opt, i == 0 ? nullptr : &state);
     state = r.state;
@@ -111,6 +123,18 @@ int main(int argc, char** argv) {
     std::printf("harmonic balance H = %d: peak %.6f mm at %.3f Hz (%zu points, %.1f s; %s)\n", H, curve.peak,
                 curve.peakOmega / (2 * M_PI), curve.branch.points.size(), timer.seconds(),
                 curve.branch.finished ? "finished" : curve.branch.stopReason.c_str());
+    for (double hz : hillHz) {
+      std::size_t near = 0;
+      for (std::size_t i = 0; i < curve.omega.size(); ++i)
+        if (std::abs(curve.omega[i] / (2 * M_PI) - hz) < std::abs(curve.omega[near] / (2 * M_PI) - hz)) near = i;
+      if (curve.omega.empty()) break;
+      Timer hill;
+      const auto fl = hbm::hillStability(*setup.system, curve.branch.points[near].x, curve.omega[near]);
+      const std::complex<double> lead = fl.exponents.size() ? fl.exponents(0) : std::complex<double>(0, 0);
+      std::printf("  Hill at %.3f Hz (%.6f mm): %s, leading exponent %.3g %+.3gi /s (%.1f s)\n",
+                  curve.omega[near] / (2 * M_PI), curve.measure[near], fl.stable ? "stable" : "unstable", lead.real(),
+                  lead.imag(), hill.seconds());
+    }
   }
   return 0;
 }
