@@ -1634,6 +1634,30 @@ TEST(Scenes, ACurveWithoutAnyPointFailsTheRun) {
   EXPECT_FALSE(fs::exists(dir / "frc.h5"));
 }
 
+// A force so small that the response underflows (issue 49: Duffing at 1.8e-201 traced
+// 34 points of zeros, "end of the parameter range reached", exit 0, and a samples check
+// "changes the peak by nan"): refused after the first point with the cause, nothing written.
+TEST(Scenes, AForceTooSmallToTraceIsRefused) {
+  log::setQuiet(true);
+  const auto dir = freshDir("tiny_force");
+  std::ifstream in(CYCLONE_SCENE_DIR "/duffing.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string yaml = std::regex_replace(text.str(), std::regex("cos: 0.18"), "cos: 1.8e-201");
+  ASSERT_NE(yaml.find("cos: 1.8e-201"), std::string::npos);
+  const auto msg = failure(yaml, dir);
+  EXPECT_NE(msg.find("excitation"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("too small to trace"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+  // The same force at 1.8e-140 is traced whole (its peak, measured, 3.6e-139: the linear
+  // oscillator's F / (c w) at w = 1, the cubic term nothing at that size).
+  const std::string small = std::regex_replace(text.str(), std::regex("cos: 0.18"), "cos: 1.8e-140");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  EXPECT_NO_THROW(scenes::runSceneText(small, "small.yaml", o, Tpetra::getDefaultComm()));
+  EXPECT_TRUE(fs::exists(dir / "frc.csv"));
+}
+
 // An engine order beyond N/2 folds onto a nodal diameter (issue 20: 100 on 24 sectors
 // was accepted without a word). The ring of 12 sectors driven at engine order 27 = 3 +
 // 2 x 12 is the same travelling wave as at 3: the summary says which nodal diameter,

@@ -13,6 +13,7 @@
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
+#include "cyclone/response/ForcedResponseChecks.hpp"
 #include "cyclone/response/ForcedResponseTrace.hpp"
 
 namespace cyclone::response {
@@ -359,6 +360,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
   checkSolverSize(*setup.system, setup.harmonicsKey,
                   formsTheMatrix ? continuation::ContinuationOptions::LinearSolver::Dense : setup.continuation.linearSolver);
   const StartingPoint start = findStartingPoint(setup);
+  checkResponseScale(setup, start.x);
   if (start.x.size() > 0) {
     std::ostringstream msg;
     msg << "forced response: first point by " << start.method << " (" << start.seconds << " s)";

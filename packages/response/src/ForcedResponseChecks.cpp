@@ -387,4 +387,17 @@ HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Br
   return check;
 }
 
+void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start) {
+  if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale || start.size() == 0) return;
+  const double force = std::abs(setup.excitationScale) * setup.system->excitation().cwiseAbs().maxCoeff();
+  const double response = start.cwiseAbs().maxCoeff();
+  if (force == 0 || response >= kSmallestTraceable) return;
+  std::ostringstream why;
+  why << "the response to it is " << response << " at the first point (largest coefficient), below "
+      << kSmallestTraceable << ": too small to trace in double precision (its square underflows); the force's "
+      << "largest coefficient is " << force << ", and a response is linear in a force that small: scale the force "
+      << "up (by 1e150 gives the response times 1e150)";
+  throw InputError("excitation", why.str());
+}
+
 }  // namespace cyclone::response

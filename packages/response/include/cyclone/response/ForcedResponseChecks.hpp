@@ -84,4 +84,12 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& system, const std::string
                      continuation::ContinuationOptions::LinearSolver solver =
                          continuation::ContinuationOptions::LinearSolver::Auto);
 
+/// The first point's response must be representable. Where the excitation is nonzero and
+/// the start's largest coefficient is below kSmallestTraceable (1e-150: its square, which
+/// the continuation's norms and scaling take, underflows a double), the curve would come
+/// out zeros with "end of the range reached": an InputError naming the excitation and
+/// the force it would take. Not for a force-scale curve (its start may be the zero force).
+void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start);
+constexpr double kSmallestTraceable = 1e-150;
+
 }  // namespace cyclone::response
