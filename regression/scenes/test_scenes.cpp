@@ -77,6 +77,14 @@ std::string failure(const std::string& yaml, const fs::path& dir) {
   return "";
 }
 
+// The Duffing scene with one value replaced (a regex on its text).
+std::string duffingSceneWith(const std::string& pattern, const std::string& replacement) {
+  std::ifstream in(CYCLONE_SCENE_DIR "/duffing.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  return std::regex_replace(text.str(), std::regex(pattern), replacement);
+}
+
 // frequencies.csv as (rpm, nd) -> frequencies in mode order; checks the header.
 std::map<std::pair<double, int>, std::vector<double>> readFrequencies(const fs::path& dir) {
   std::map<std::pair<double, int>, std::vector<double>> f;
@@ -1608,10 +1616,7 @@ TEST(Scenes, DuffingForcedResponseSceneMatchesTheReferencePeak) {
 TEST(Scenes, ACurveWithoutAnyPointFailsTheRun) {
   log::setQuiet(true);
   const auto dir = freshDir("nopoint");
-  std::ifstream in(CYCLONE_SCENE_DIR "/duffing.yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string yaml = std::regex_replace(text.str(), std::regex("k3: [-+.0-9eE]+"), "k3: 1.0e300");
+  const std::string yaml = duffingSceneWith("k3: [-+.0-9eE]+", "k3: 1.0e300");
   ASSERT_NE(yaml.find("k3: 1.0e300"), std::string::npos);
   scenes::SceneOverrides o;
   o.outputDirectory = dir.string();
@@ -1640,10 +1645,7 @@ TEST(Scenes, ACurveWithoutAnyPointFailsTheRun) {
 TEST(Scenes, AForceTooSmallToTraceIsRefused) {
   log::setQuiet(true);
   const auto dir = freshDir("tiny_force");
-  std::ifstream in(CYCLONE_SCENE_DIR "/duffing.yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string yaml = std::regex_replace(text.str(), std::regex("cos: 0.18"), "cos: 1.8e-201");
+  const std::string yaml = duffingSceneWith("cos: 0.18", "cos: 1.8e-201");
   ASSERT_NE(yaml.find("cos: 1.8e-201"), std::string::npos);
   const auto msg = failure(yaml, dir);
   EXPECT_NE(msg.find("excitation"), std::string::npos) << msg;
@@ -1651,7 +1653,7 @@ TEST(Scenes, AForceTooSmallToTraceIsRefused) {
   EXPECT_FALSE(fs::exists(dir / "frc.csv"));
   // The same force at 1.8e-140 is traced whole (its peak, measured, 3.6e-139: the linear
   // oscillator's F / (c w) at w = 1, the cubic term nothing at that size).
-  const std::string small = std::regex_replace(text.str(), std::regex("cos: 0.18"), "cos: 1.8e-140");
+  const std::string small = duffingSceneWith("cos: 0.18", "cos: 1.8e-140");
   scenes::SceneOverrides o;
   o.outputDirectory = dir.string();
   EXPECT_NO_THROW(scenes::runSceneText(small, "small.yaml", o, Tpetra::getDefaultComm()));
