@@ -18,6 +18,8 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+# ARPACK (ARPACK-NG): the Floquet exponents nearest zero of a large Hill problem.
+pkg_check_modules(ARPACK REQUIRED IMPORTED_TARGET arpack)
 
 # Same (openmpi) HDF5 flavour as Trilinos and Exodus link, never both.
 set(HDF5_PREFER_PARALLEL TRUE)

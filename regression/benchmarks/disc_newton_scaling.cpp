@@ -97,11 +97,7 @@ int main(int argc, char** argv) {
   const double preload = argc > 2 ? std::atof(argv[2]) : 20.0;
   const double force = argc > 3 ? std::atof(argv[3]) : 20.0;
   std::vector<int> levels{6, 12, 24, 48};
-  if (argc > 4) {
-    levels.clear();
-    std::stringstream list(argv[4]);
-    for (std::string item; std::getline(list, item, ',');) levels.push_back(std::atoi(item.c_str()));
-  }
+  if (argc > 4) levels = demo_disc::harmonicLevels(argv[4]);
   const int denseUpTo = argc > 5 ? std::atoi(argv[5]) : 9000;
   const double meshSize = argc > 6 ? std::atof(argv[6]) : 6.0;
   const std::string cache = argc > 7 ? argv[7] : "disc_benchmark_models";
@@ -110,11 +106,7 @@ int main(int argc, char** argv) {
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
   const auto mesh = mesh::generateShroudedSector(p);
-  const disc::DiscModelSpec models = demo_disc::demoDiscModels(p);
-  std::vector<int> all;
-  for (int h = 0; h <= levels.back(); ++h) all.push_back(h);
-  const auto reduced =
-      disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, all), cache, env.comm());
+  const auto reduced = demo_disc::demoDiscReducedModels(mesh, p, levels.back(), cache, env.comm());
   std::printf("default disc, EO 3, preload %g N, force %g N, Newton at %g Hz from the linearised solution\n", preload,
               force, hz);
   std::printf("%4s %8s %8s | %-8s %5s %6s %9s %9s %9s %9s %9s %10s\n", "H", "unknowns", "samples", "solver", "steps",

@@ -33,11 +33,7 @@ int main(int argc, char** argv) {
 
   mesh::ShroudedSectorParameters p;
   const auto mesh = mesh::generateShroudedSector(p);
-  const disc::DiscModelSpec models = demo_disc::demoDiscModels(p);
-  std::vector<int> all;
-  for (int h = 0; h <= H; ++h) all.push_back(h);
-  const auto reduced =
-      disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, all), cache, env.comm());
+  const auto reduced = demo_disc::demoDiscReducedModels(mesh, p, H, cache, env.comm());
   disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(H, preload);
   spec.excitation.amplitude = force;
   if (samples > 0) spec.samples = samples;

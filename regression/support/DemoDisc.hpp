@@ -5,6 +5,9 @@
 // scene's law per unit area within 7 %): one definition for the verifications and the
 // benchmarks that time its curves, so all of them measure the same disc at any mesh.
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "cyclone/disc/DiscForcedResponse.hpp"
@@ -14,11 +17,29 @@
 
 namespace cyclone::demo_disc {
 
+/// A program argument's comma-separated list of harmonic counts ("6,12,24").
+inline std::vector<int> harmonicLevels(const char* argument) {
+  std::vector<int> levels;
+  std::stringstream list(argument);
+  for (std::string item; std::getline(list, item, ',');) levels.push_back(std::atoi(item.c_str()));
+  return levels;
+}
+
 inline disc::DiscModelSpec demoDiscModels(const mesh::ShroudedSectorParameters& p) {
   disc::DiscModelSpec models;
   models.sectors = p.sectors;
   models.rpm = 10000;
   return models;
+}
+
+/// The reduced models of the nodal diameters engine order 3 reaches with harmonics
+/// 0..maxHarmonic, built into (or read from) `cache`.
+inline disc::DiscReducedModels demoDiscReducedModels(const mesh::Mesh& mesh, const mesh::ShroudedSectorParameters& p,
+                                                     int maxHarmonic, const std::string& cache, linalg::CommPtr comm) {
+  std::vector<int> all;
+  for (int h = 0; h <= maxHarmonic; ++h) all.push_back(h);
+  return disc::buildDiscReducedModels(mesh, demoDiscModels(p), disc::nodalDiametersFor(p.sectors, 3, all), cache,
+                                      comm);
 }
 
 /// Harmonics 0..maxHarmonic.

@@ -211,6 +211,40 @@ TEST(ReceptanceForm, HillProblemEqualsMatrixForms) {
 }
 
 
+// Hill's eigenvalues nearest zero only (ARPACK on the inverse, as a large problem gets
+// them: HillOptions::denseUpTo) against the whole problem's (LAPACK): the same Floquet
+// exponents and every eigenvalue up to the modulus covered, for every engine order.
+TEST(ReceptanceForm, NearestEigenvaluesGiveTheWholeProblemsExponents) {
+  const double w = 1.9;
+  for (int eo : {0, 1, 2, 3, 5}) {
+    auto [matrix, receptance] = bothForms(6, eo);
+    const Eigen::VectorXd X = newtonSolution(*matrix, w);
+    ASSERT_GT(X.size(), 0);
+    HillOptions whole, nearest;
+    whole.denseUpTo = 1 << 30, nearest.denseUpTo = 0;
+    const auto a = hillStability(*receptance, X, w, whole), b = hillStability(*receptance, X, w, nearest);
+    EXPECT_TRUE(std::isinf(a.covered));
+    EXPECT_GE(b.covered, nearest.coverage * w) << "EO " << eo;
+    EXPECT_LT(b.all.size(), a.all.size()) << "EO " << eo;
+    const double scale = a.all.cwiseAbs().maxCoeff();
+    double worst = 0;
+    int within = 0;
+    for (int i = 0; i < a.all.size(); ++i)
+      if (std::abs(a.all(i)) <= b.covered * (1 + 1e-9)) {
+        ++within;
+        worst = std::max(worst, (b.all.array() - a.all(i)).abs().minCoeff());
+      }
+    ASSERT_EQ(a.exponents.size(), b.exponents.size()) << "EO " << eo;
+    for (int i = 0; i < a.exponents.size(); ++i)
+      worst = std::max(worst, (b.exponents.array() - a.exponents(i)).abs().minCoeff());
+    std::printf("EO %d: %d of %d eigenvalues computed (up to |mu| = %.2f w), %d exponents, largest distance %.1e\n",
+                eo, int(b.all.size()), int(a.all.size()), b.covered / w, int(b.exponents.size()), worst);
+    EXPECT_EQ(within, int(b.all.size())) << "EO " << eo;
+    EXPECT_LT(worst, 1e-9 * scale) << "EO " << eo;
+    EXPECT_EQ(a.stable, b.stable) << "EO " << eo;
+  }
+}
+
 // The verdict confirmed independently for one engine order: the full ring integrated in
 // time from the solution perturbed in every sector (all travelling-wave classes) comes
 // back to it. Hill's problem has eigenvalues with Re > 0 far off the axis (|Im| > w / 2),

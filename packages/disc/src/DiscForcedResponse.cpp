@@ -8,6 +8,45 @@
 
 namespace cyclone::disc {
 
+namespace {
+
+// Hill's verdict at the curve's largest point, where that is the headline's peak, and
+// what it says, for the headline's line.
+std::string peakStability(const response::ForcedResponseResult& curve, DiscHeadline& headline) {
+  using PS = DiscHeadline::PeakStability;
+  const std::size_t i = curve.peakIndex;
+  if (!curve.stabilityComputed || i >= curve.stable.size()) return "";
+  const double curveHz = curve.peakOmega / (2 * M_PI);
+  if (!(std::abs(curveHz - headline.peak.hz) <= 1e-2 * headline.peak.hz)) return "";
+  const auto& exponent = curve.leadingExponent[i];
+  if (exponent) headline.leadingExponent = *exponent;
+  std::ostringstream line;
+  line.precision(3);
+  switch (curve.stable[i]) {
+    case 1:
+      headline.stability = PS::Stable;
+      return "; stable by Hill's method at the traced curve's top";
+    case 2:
+      headline.stability = PS::Undetermined;
+      return "; its stability at the traced curve's top undetermined (Hill's verdict changes with twice the samples)";
+    case 0:
+      break;
+    default:
+      return "";
+  }
+  const bool complexPair = exponent && std::abs(exponent->imag()) > 1e-6 * curve.peakOmega;
+  headline.stability = complexPair ? PS::UnstableComplex : PS::UnstableReal;
+  line << "; unstable by Hill's method at the traced curve's top";
+  if (complexPair)
+    line << " (a complex pair of Floquet exponents, " << exponent->real() << " +- " << std::abs(exponent->imag())
+         << "i /s: the disc does not settle on this periodic response there, its amplitude is modulated)";
+  else if (exponent)
+    line << " (a real Floquet exponent, " << exponent->real() << " /s: the response there jumps to another branch)";
+  return line.str();
+}
+
+}  // namespace
+
 DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   constexpr double kConverged = 1e-2;
   DiscHeadline headline;
@@ -16,6 +55,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   headline.found = true;
   headline.peak = best;
   headline.converged = best.change >= 0 && best.change <= kConverged && best.notFoundHarmonic < 0;
+  const std::string stability = peakStability(curve, headline);
   std::ostringstream line;
   line.precision(6);
   line << "friction-damped peak: max|x(t)| " << best.value << " at " << best.hz << " Hz with harmonics 0.."
@@ -37,7 +77,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     line << "; converged in the harmonics to " << 100 * target.tolerance << " % (each of the last two raises of H "
          << "changed it by at most " << 100 * target.change << " %; the curve traced whole with H = " << target.reached
          << ")" << dropped;
-    headline.text = line.str();
+    headline.text = line.str() + stability;
     return headline;
   }
   if (target.tolerance > 0) {  // not met: an estimate whatever the last raise alone did
@@ -61,7 +101,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     if (best.notFoundHarmonic >= 0)
       line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found";
     line << dropped;
-    headline.text = line.str();
+    headline.text = line.str() + stability;
     return headline;
   }
   if (best.change < 0)
@@ -78,7 +118,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     line << "; H = " << best.notFoundHarmonic << " was tried and its peak not found, so the error may exceed "
          << "the last change";
   line << dropped;
-  headline.text = line.str();
+  headline.text = line.str() + stability;
   return headline;
 }
 

@@ -9,11 +9,12 @@
 
 namespace cyclone::hbm {
 
-FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega,
+                               const HillOptions& options) {
   for (const auto& c : sys.elements())
     if (c.element->usesVelocity())
       throw InputError("stability", "Hill's method with velocity-dependent elements is not supported yet");
-  if (sys.isReceptance()) return receptanceHillStability(sys, X, omega);
+  if (sys.isReceptance()) return receptanceHillStability(sys, X, omega, options);
   const int n = sys.numDofs(), nc = sys.numCoefficients(), m = n * nc;
   Eigen::VectorXd R;
   Eigen::MatrixXd J;

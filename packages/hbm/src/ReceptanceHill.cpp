@@ -28,6 +28,8 @@
 // exponent that could grow: stable.
 #include "ReceptanceHill.hpp"
 
+#include "EigenvaluesNearZero.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 #include <algorithm>
@@ -46,6 +48,10 @@
 extern "C" void zgeev_(const char* jobvl, const char* jobvr, const int* n, std::complex<double>* a, const int* lda,
                        std::complex<double>* w, std::complex<double>* vl, const int* ldvl, std::complex<double>* vr,
                        const int* ldvr, std::complex<double>* work, const int* lwork, double* rwork, int* info);
+
+extern "C" void zgetrf_(const int* m, const int* n, std::complex<double>* a, const int* lda, int* ipiv, int* info);
+extern "C" void zgetrs_(const char* trans, const int* n, const int* nrhs, const std::complex<double>* a, const int* lda,
+                        const int* ipiv, std::complex<double>* b, const int* ldb, int* info);
 
 namespace cyclone::hbm {
 
@@ -166,8 +172,8 @@ ModalTerms modalTerms(const std::vector<Block>& blocks, const std::vector<ModalR
 // the exponent basis, R_exp = T R T^-1 is real (the blocks +h and -h are conjugate),
 // and the product equals (V^T T) J (I + R J)^{-1} (T^{-1} U): U and V enter in the
 // real coefficients (Ui = T^-1 U, Vi = T^T V), and the one large LU is real.
-Eigen::MatrixXcd elementTerm(const ModalTerms& mt, const Eigen::SparseMatrix<double>& J, const Eigen::MatrixXcd& t,
-                             const Eigen::MatrixXcd& ti, int n, double omega) {
+Eigen::MatrixXcd elementTerm(const ModalTerms& mt, const std::vector<Block>& blocks, const Eigen::SparseMatrix<double>& J,
+                             const Eigen::MatrixXcd& t, const Eigen::MatrixXcd& ti, int n, double omega) {
   const int nb = int(mt.R.size()), nc = nb, m = n * nc, cols = int(mt.U.cols());
   // Rreal's block (a, c) is Re(ti diag(R_b(a, c)) t), summed over the few nonzeros of
   // ti's column b and t's row b (a harmonic's cos and sin), not by dense products.
@@ -206,15 +212,65 @@ Eigen::MatrixXcd elementTerm(const ModalTerms& mt, const Eigen::SparseMatrix<dou
     for (int b = 0; b < nb; ++b) rows.row(b) = mt.V.row(b * n + a);
     Vi.middleRows(a * nc, nc) = t.transpose() * rows;
   }
-  Eigen::MatrixXd parts(m, 2 * cols);  // [Re Ui, Im Ui], overwritten by (I + R J)^{-1} of them
-  parts.leftCols(cols) = Ui.real();
-  parts.rightCols(cols) = Ui.imag();
-  lapack.GETRS('N', m, 2 * cols, IRJ.data(), std::max(m, 1), pivots.data(), parts.data(), std::max(m, 1), &info);
+  // The blocks -h are the conjugates of the blocks +h (the system is real): their columns
+  // of Ui, and so of (I + R J)^{-1} Ui, are the conjugates of the +h ones, and only the
+  // +h and h = 0 columns ("kept") are solved for and multiplied.
+  std::vector<int> kept, partner(static_cast<std::size_t>(cols), -1);  // partner: -h column -> its +h column
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (blocks[b].sign > 0)
+      for (int j = 0; j < blocks[b].size; ++j) kept.push_back(blocks[b].first + j);
+    else
+      for (std::size_t q = 0; q < blocks.size(); ++q)
+        if (blocks[q].h == blocks[b].h && blocks[q].sign > 0)
+          for (int j = 0; j < blocks[b].size; ++j) partner[std::size_t(blocks[b].first + j)] = blocks[q].first + j;
+  }
+  const int nk = int(kept.size());
+  Eigen::MatrixXd parts(m, 2 * nk);  // [Re Ui, Im Ui] of the kept columns, overwritten by (I + R J)^{-1} of them
+  for (int k = 0; k < nk; ++k) parts.col(k) = Ui.col(kept[k]).real(), parts.col(nk + k) = Ui.col(kept[k]).imag();
+  lapack.GETRS('N', m, 2 * nk, IRJ.data(), std::max(m, 1), pivots.data(), parts.data(), std::max(m, 1), &info);
   if (info != 0) throw Error("Hill's method: dgetrs info " + std::to_string(info));
-  Eigen::MatrixXcd S(m, cols);  // (I + R J)^{-1} Ui
-  S.real() = parts.leftCols(cols);
-  S.imag() = parts.rightCols(cols);
-  return Vi.transpose() * (J * S) / (omega * omega);  // in scaled time J is divided by w^2, like l
+  Eigen::MatrixXcd JS(m, nk);  // J (I + R J)^{-1} Ui, kept columns
+  JS.real() = J * parts.leftCols(nk);
+  JS.imag() = J * parts.rightCols(nk);
+  // Vi is nonzero only in the slots (cos, sin) of a column's own harmonic: E's rows of a
+  // block are its slots' rows of Vi against those of J S (2 n rows, not m). In scaled
+  // time J is divided by w^2, like l.
+  Eigen::MatrixXcd Ekept(cols, nk);
+  std::vector<int> zeroRows;
+  Eigen::MatrixXcd zeroPart;  // rows h = 0, columns the kept ones' conjugates (the -h columns)
+  for (int b = 0; b < nb; ++b) {
+    const Block& blk = blocks[std::size_t(b)];
+    const int ns = int(tRow[std::size_t(b)].size());
+    Eigen::MatrixXcd Vb(n * ns, blk.size), JSb(n * ns, nk);
+    for (int a = 0; a < n; ++a)
+      for (int si = 0; si < ns; ++si) {
+        const int row = a * nc + tRow[std::size_t(b)][std::size_t(si)].index;
+        Vb.row(a * ns + si) = Vi.row(row).segment(blk.first, blk.size);
+        JSb.row(a * ns + si) = JS.row(row);
+      }
+    Ekept.middleRows(blk.first, blk.size) = Vb.transpose() * JSb / (omega * omega);
+    if (blk.h == 0) {
+      for (int j = 0; j < blk.size; ++j) zeroRows.push_back(blk.first + j);
+      zeroPart = Vb.transpose() * JSb.conjugate() / (omega * omega);
+    }
+  }
+  Eigen::MatrixXcd E(cols, cols);
+  for (int k = 0; k < nk; ++k) E.col(kept[k]) = Ekept.col(k);
+  // A -h column: E(r, c-) = conj(conj(Vi_r)^T J S_c+), and conj(Vi_r) is the column of
+  // r's partner where r is in a +-h block; rows of the h = 0 block directly.
+  std::vector<int> keptIndex(static_cast<std::size_t>(cols), -1), rowPartner(static_cast<std::size_t>(cols), -1);
+  for (int k = 0; k < nk; ++k) keptIndex[std::size_t(kept[k])] = k;
+  for (int c = 0; c < cols; ++c)
+    if (partner[std::size_t(c)] >= 0) rowPartner[std::size_t(c)] = partner[std::size_t(c)], rowPartner[std::size_t(partner[std::size_t(c)])] = c;
+  for (int c = 0; c < cols; ++c) {
+    const int from = partner[std::size_t(c)];
+    if (from < 0) continue;
+    const int k = keptIndex[std::size_t(from)];
+    for (int r = 0; r < cols; ++r)
+      if (rowPartner[std::size_t(r)] >= 0) E(r, c) = std::conj(Ekept(rowPartner[std::size_t(r)], k));
+    for (std::size_t i = 0; i < zeroRows.size(); ++i) E(zeroRows[i], c) = zeroPart(Eigen::Index(i), k);
+  }
+  return E;
 }
 
 // The eigenvalues of a dense complex matrix by LAPACK's zgeev (no vectors): 4-5 times
@@ -234,16 +290,12 @@ Eigen::VectorXcd eigenvaluesOf(Eigen::MatrixXcd A) {
   return w;
 }
 
-// The quadratic eigenproblem [mu^2 + mu diag(d1) + D0] q = 0 linearised, its eigenvalues
-// (times w) and the Floquet exponents among them: those in the strip |Im| <= w / 2.
-FloquetExponents exponentsOf(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd& d1, double omega) {
-  const int mt = int(D0.rows());
-  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(2 * mt, 2 * mt);
-  A.block(0, mt, mt, mt).setIdentity();
-  A.block(mt, 0, mt, mt) = -D0;
-  A.block(mt, mt, mt, mt).diagonal() = -d1;
+// The Floquet exponents among Hill's eigenvalues mu (times w): those in the strip
+// |Im| <= w / 2, by decreasing real part.
+FloquetExponents pickExponents(Eigen::VectorXcd all, double omega, double covered) {
   FloquetExponents out;
-  out.all = eigenvaluesOf(A) * omega;
+  out.all = std::move(all);
+  out.covered = covered;
   std::vector<cd> kept;
   for (int e = 0; e < out.all.size(); ++e)
     if (std::abs(out.all(e).imag()) <= 0.5 * omega * (1 + 1e-9)) kept.push_back(out.all(e));
@@ -254,9 +306,49 @@ FloquetExponents exponentsOf(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd&
   return out;
 }
 
+// The quadratic eigenproblem [mu^2 + mu diag(d1) + D0] q = 0 linearised, A = [0 I; -D0
+// -diag(d1)], every eigenvalue.
+FloquetExponents allExponents(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd& d1, double omega) {
+  const int mt = int(D0.rows());
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(2 * mt, 2 * mt);
+  A.block(0, mt, mt, mt).setIdentity();
+  A.block(mt, 0, mt, mt) = -D0;
+  A.block(mt, mt, mt, mt).diagonal() = -d1;
+  return pickExponents(eigenvaluesOf(A) * omega, omega, std::numeric_limits<double>::infinity());
+}
+
+// Only the eigenvalues of A nearest zero, by ARPACK on A^{-1}: [a; b] -> [-D0^{-1} (b +
+// d1 a); a], one LU of D0 (the harmonic balance Jacobian's condensed form at mu = 0,
+// singular only exactly at a fold, where the whole problem is solved instead). Their
+// count is doubled until the farthest reaches coverage (scaled time: w = 1).
+FloquetExponents nearestExponents(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd& d1, double omega,
+                                  double coverage, int firstCount) {
+  const int mt = int(D0.rows()), n = 2 * mt, ld = std::max(mt, 1), one = 1;
+  Eigen::MatrixXcd lu = D0;
+  std::vector<int> pivots(static_cast<std::size_t>(ld));
+  int info = 0;
+  zgetrf_(&mt, &mt, lu.data(), &ld, pivots.data(), &info);
+  if (info != 0) return allExponents(D0, d1, omega);
+  Eigen::VectorXcd rhs(mt);
+  const InverseAction inverse = [&](const cd* x, cd* y) {
+    for (int i = 0; i < mt; ++i) rhs(i) = -(x[mt + i] + d1(i) * x[i]);
+    int solveInfo = 0;
+    zgetrs_("N", &mt, &one, lu.data(), &ld, pivots.data(), rhs.data(), &ld, &solveInfo);
+    for (int i = 0; i < mt; ++i) y[i] = rhs(i), y[mt + i] = x[i];
+  };
+  for (int count = std::min(n - 2, firstCount);; count = std::min(n - 2, 2 * count)) {
+    const EigenvaluesNearZero near = eigenvaluesNearZero(n, count, inverse);
+    const double reached = near.values.size() ? std::abs(near.values(near.values.size() - 1)) : 0.0;
+    if (near.converged && reached >= coverage) return pickExponents(near.values * omega, omega, reached * omega);
+    if (count == n - 2) break;
+  }
+  return allExponents(D0, d1, omega);  // ARPACK did not get there: the whole problem
+}
+
 }  // namespace
 
-FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega) {
+FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega,
+                                         const HillOptions& options) {
   if (!(omega > 0)) throw InputError("stability", "Hill's method needs a frequency > 0");
   Eigen::MatrixXcd t, ti;
   std::vector<Block> blocks = exponentBlocks(sys.aft().harmonics(), t, ti);
@@ -264,9 +356,11 @@ FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const
   std::vector<ModalRealization> real;
   const int mt = blockRealizations(sys, blocks, real);
   const ModalTerms terms = modalTerms(blocks, real, sys.numDofs(), mt, omega);
-  Eigen::MatrixXcd D0 = elementTerm(terms, J, t, ti, sys.numDofs(), omega);
+  Eigen::MatrixXcd D0 = elementTerm(terms, blocks, J, t, ti, sys.numDofs(), omega);
   D0.diagonal() += terms.d0;
-  return exponentsOf(D0, terms.d1, omega);
+  if (2 * mt <= options.denseUpTo) return allExponents(D0, terms.d1, omega);
+  // Asked for first: about the strip's count (two per harmonic block on the default disc).
+  return nearestExponents(D0, terms.d1, omega, options.coverage, 2 * int(blocks.size()) + 4);
 }
 
 }  // namespace cyclone::hbm

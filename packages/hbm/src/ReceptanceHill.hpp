@@ -6,6 +6,7 @@
 namespace cyclone::hbm {
 
 /// InputError when the receptance has no modal realization for some harmonic.
-FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& system, const Eigen::VectorXd& X, double omega);
+FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& system, const Eigen::VectorXd& X, double omega,
+                                         const HillOptions& options);
 
 }  // namespace cyclone::hbm

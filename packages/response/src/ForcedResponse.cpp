@@ -72,7 +72,7 @@ bool stabilityApplies(const ForcedResponseSetup& setup, std::string& note) {
       }
       modes += (h == 0 ? 1 : 2) * r->numModes();
     }
-    if (!asked && hb.numUnknowns() > 1500) {
+    if (!asked && hb.numUnknowns() > 4000) {
       note = "stability not computed: Hill's method on the reduced model needs an LU of " +
              std::to_string(hb.numUnknowns()) + " per point (ask for stability to compute it anyway)";
       log::warn(note);
@@ -99,12 +99,14 @@ bool stabilityApplies(const ForcedResponseSetup& setup, std::string& note) {
 // disc: +-10 /s at 256..2048 samples on a lightly damped stretch). A point whose verdict
 // changes is undetermined (2), not called either way.
 // Unless asked for (Stability::Always), Hill's method stops after its first point where
-// the whole curve would take longer than the trace itself and kKeepsUnder seconds: the
-// stability of a curve is worth its cost where it is small beside the curve's (a lumped
-// system, the disc at H = 1), not where it would multiply the run (the default disc at
-// H = 5: 1.6 s a point against the trace's 0.07).
+// the whole curve would take longer than kTraceMultiple times the trace itself and
+// kKeepsUnder seconds: a curve's stability is part of the answer (which stretch of a
+// fold is followed, where a periodic response gives way to another), worth a run a few
+// times the trace's, not one it multiplies. The default disc at H = 5: 0.32 s a point
+// with the recheck (the eigenvalues nearest zero, HillOptions), 104 points against the
+// trace's 7.4 s.
 void computeStability(const ForcedResponseSetup& setup, ForcedResponseResult& result, double traceSeconds) {
-  constexpr double kKeepsUnder = 10;
+  constexpr double kKeepsUnder = 60, kTraceMultiple = 3;
   const auto& hb = *setup.system;
   std::unique_ptr<hbm::HarmonicBalanceSystem> finer;
   if (hb.isReceptance()) finer = hbm::withHarmonics(hb, hb.aft().harmonics(), 2 * hb.aft().numSamples());
@@ -118,14 +120,14 @@ void computeStability(const ForcedResponseSetup& setup, ForcedResponseResult& re
     if (finer && hbm::hillStability(*finer, pt.x, result.omega[i]).stable != fl.stable) result.stable[i] = 2;
     if (fl.exponents.size() > 0) result.leadingExponent[i] = fl.exponents(0);
     const double projected = timer.seconds() * double(n);
-    if (i == 0 && setup.stability == Stability::Auto && projected > std::max(kKeepsUnder, traceSeconds)) {
+    if (i == 0 && setup.stability == Stability::Auto && projected > std::max(kKeepsUnder, kTraceMultiple * traceSeconds)) {
       result.stable.assign(n, -1);
       result.leadingExponent.assign(n, std::nullopt);
       result.stabilityComputed = false;
       std::ostringstream why;
       why << "stability not computed: Hill's method would take about " << projected << " s for the " << n
-          << " points (" << timer.seconds() << " s the first), more than the curve's own " << traceSeconds
-          << " s (ask for stability to compute it anyway)";
+          << " points (" << timer.seconds() << " s the first), more than " << kKeepsUnder << " s and "
+          << kTraceMultiple << " times the curve's own " << traceSeconds << " s (ask for stability to compute it anyway)";
       result.stabilityNote = why.str();
       log::warn(result.stabilityNote);
       return;

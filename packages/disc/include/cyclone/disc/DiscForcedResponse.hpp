@@ -4,6 +4,7 @@
 // frequency range from the resonance estimate unless given, the curve traced with the
 // disc's continuation defaults, its checks, and the headline peak: the harmonics
 // check's highest level found, converged to 1 % or labelled an estimate.
+#include <complex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,14 @@ struct DiscHeadline {
   /// error target on the harmonics, the target met (its last two raises within it).
   bool converged = false;
   response::HarmonicsConvergedPeak peak;
+  /// Hill's verdict at the traced curve's largest point, where that is the headline's peak
+  /// (within 1 % in frequency). A complex pair of exponents with Re > 0 there (the
+  /// hammering shroud's resonance) means the disc does not settle on the periodic
+  /// response: its amplitude is modulated (docs/studies/time_domain_disc.md); a real one,
+  /// that the response jumps to another branch.
+  enum class PeakStability { NotComputed, Stable, Undetermined, UnstableReal, UnstableComplex };
+  PeakStability stability = PeakStability::NotComputed;
+  std::complex<double> leadingExponent;  ///< 1/s, where Hill's pick left one
   std::string text;  ///< "friction-damped peak: max|x(t)| ... converged ... / an estimate ..."
 };
 /// The headline of a traced curve (found = false when the harmonics check found no peak).

@@ -52,9 +52,9 @@ struct ForcedResponseSetup {
   std::optional<continuation::ContinuationOptions> fallback;
   std::vector<int> outputDofs;
   std::vector<std::string> dofNames;  ///< system: dof_names, or dof0, dof1, ...
-  /// Hill's method per point: Auto (where it is cheap: a system small enough, and the
-  /// whole curve's Hill's method, timed on its first point, within the trace's own time or
-  /// 10 s; else not computed, said in stabilityNote), Always, Never.
+  /// Hill's method per point: Auto (a system small enough, and the whole curve's Hill's
+  /// method, timed on its first point, within 3 times the trace's own time or 60 s; else
+  /// not computed, said in stabilityNote), Always, Never.
   enum class Stability { Auto, Always, Never } stability = Stability::Auto;
   /// The harmonics check of a frequency curve finds the peak with H, H + 1, ... up to this
   /// (0: H + 1), each level by a peak search from the one before; < 0: no harmonics check.
