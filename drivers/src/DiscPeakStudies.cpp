@@ -21,9 +21,11 @@ namespace cyclone::scenes {
 
 namespace {
 
-void writePeakStudy(const std::string& name, const std::string& unit, const continuation::FollowedPeakCurve& curve,
-                    const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed, bool continued,
+void writePeakStudy(const std::string& name, const std::string& unit, const disc::DiscPeakFollowing& following,
+                    const hbm::HarmonicBalanceSystem& hb, const std::vector<StudyPeak>& listed,
                     const std::string& outDir, SceneSummary& summary) {
+  const auto& curve = following.curve;
+  const bool continued = following.continued;
   {
     // Every peak's whole solution (the response-curve schema: /parameter, /omega at
     // the peak, /coefficients; no stability computed), for post-processing.
@@ -45,11 +47,15 @@ void writePeakStudy(const std::string& name, const std::string& unit, const cont
     AtomicFile file(outDir + "/peak_" + name + ".csv");
     std::ofstream out(file.tempPath());
     out.precision(10);
-    out << name << ",peak_hz,peak_max_abs,jump,optimum\n";
+    // force_beyond_h: the contact forces' harmonics above the study's H over those kept at
+    // each peak (empty: not known), what the truncation leaves out there.
+    out << name << ",peak_hz,peak_max_abs,jump,optimum,force_beyond_h\n";
     for (std::size_t i = 0; i < curve.points.size(); ++i) {
       const auto& p = curve.points[i];
       out << p.parameter << "," << p.frequency / (2 * M_PI) << "," << p.measure << "," << (p.jump ? 1 : 0) << ","
-          << (int(i) == curve.optimum ? 1 : 0) << "\n";
+          << (int(i) == curve.optimum ? 1 : 0) << ",";
+      if (i < following.forceBeyond.size() && following.forceBeyond[i] >= 0) out << following.forceBeyond[i];
+      out << "\n";
     }
     out.close();
     if (!out) throw Error("cannot write " + file.finalPath());
@@ -116,6 +122,29 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
                  ? "at the range's end: the optimum may lie beyond it"
                  : whole.optimumLocated ? "located between its neighbours" : "the grid's")
          << ")";
+  }
+  // The optimum's peak with more harmonics: its truncation error, as the headline's.
+  if (const auto& check = f.optimumCheck; !check.levels.empty()) {
+    line << "; the optimum with harmonics";
+    for (std::size_t l = 0; l < check.levels.size(); ++l) {
+      const auto& level = check.levels[l];
+      line << (l ? ", " : " ") << "0.." << level.maxHarmonic << ": ";
+      if (level.peak.found)
+        line << level.peak.value;
+      else
+        line << "not found";
+    }
+    constexpr double kTolerance = 0.01;
+    if (check.converged(kTolerance))
+      line << " (converged to " << 100 * kTolerance << " %: the raises changed it by at most " << 100 * check.change
+           << " %)";
+    else if (check.change >= 0)
+      line << " (an estimate: the raises changed it by up to " << 100 * check.change << " %)";
+    else
+      line << " (an estimate: a raised level's peak not found)";
+    if (whole.optimum >= 0 && std::size_t(whole.optimum) < f.forceBeyond.size() && f.forceBeyond[std::size_t(whole.optimum)] >= 0)
+      line << "; there the contact forces' harmonics above " << check.levels.front().maxHarmonic << " are "
+           << 100 * f.forceBeyond[std::size_t(whole.optimum)] << " % of those kept";
   }
   // The value-list study's peaks (frequency curves) at the same values.
   if (const auto it = listed.find(name); it != listed.end()) {
@@ -215,7 +244,7 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
                              : name == "speed"             ? " / rpm"
                                                            : "";
     if (comm->getRank() == 0)
-      writePeakStudy(name, unit, f.curve, *f.setup.system, listedHere, study.continuation, outDir, summary);
+      writePeakStudy(name, unit, f, *f.setup.system, listedHere, outDir, summary);
     std::string line = peakStudyLine(name, {study.from, study.to}, f, listed);
     for (const auto& w : f.warnings) line += "; warning: " + w;
     summary.computed.push_back(line);

@@ -28,19 +28,34 @@
 
 using namespace cyclone;
 
-TEST(DiscPeakContinuation, PreloadPeakCurveMeetsTracedCurvesAtFiveValues) {
-  log::setQuiet(true);
-  mesh::ShroudedSectorParameters p;
-  p.meshSize = 12.0;
-  const auto mesh = mesh::generateShroudedSector(p);
-  const disc::DiscModelSpec models = demo_disc::demoDiscModels(p);
-  const disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(1);
-  const auto reduced = disc::buildDiscReducedModels(mesh, models, disc::nodalDiametersFor(p.sectors, 3, {0, 1}),
-                                                    "disc_peak_continuation_models", Tpetra::getDefaultComm());
-  disc::DiscSweepOptions sweep;
-  sweep.stability = response::ForcedResponseSetup::Stability::Never;
-  sweep.harmonicsCheckTo = -1;
-  const auto ref = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
+namespace {
+
+// The coarse disc (mesh size 12) with the reduced models of harmonics 0..3 (2 and 3 for an
+// optimum's peak with two harmonics more), the reference curve with harmonics 0 and 1.
+class DiscPeakContinuation : public ::testing::Test {
+protected:
+  bool quiet = (log::setQuiet(true), true);  // first: the members below solve
+  mesh::ShroudedSectorParameters p = [] {
+    mesh::ShroudedSectorParameters q;
+    q.meshSize = 12.0;
+    return q;
+  }();
+  mesh::Mesh mesh = mesh::generateShroudedSector(p);
+  disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(1);
+  disc::DiscReducedModels reduced =
+      demo_disc::demoDiscReducedModels(mesh, p, 3, "disc_peak_continuation_models", Tpetra::getDefaultComm());
+  disc::DiscSweepOptions sweep = [] {
+    disc::DiscSweepOptions o;
+    o.stability = response::ForcedResponseSetup::Stability::Never;
+    o.harmonicsCheckTo = -1;
+    return o;
+  }();
+  disc::DiscForcedResponse ref = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
+};
+
+}  // namespace
+
+TEST_F(DiscPeakContinuation, PreloadPeakCurveMeetsTracedCurvesAtFiveValues) {
   ASSERT_TRUE(ref.curve.branch.finished) << ref.curve.branch.stopReason;
 
   disc::DiscPeakFollowingSpec f;
@@ -99,7 +114,49 @@ TEST(DiscPeakContinuation, PreloadPeakCurveMeetsTracedCurvesAtFiveValues) {
                 dw, curve.curve.branch.points.size(), timer.seconds(), maxima);
     worstM = std::max(worstM, dm), worstW = std::max(worstW, dw);
   }
+  // The continued points' harmonic truncation: some contact force beyond harmonic 1 at each.
+  ASSERT_EQ(continued.forceBeyond.size(), cc.points.size());
+  for (double share : continued.forceBeyond) EXPECT_GT(share, 0.0);
   std::printf("continued: %zu points over 300..2000 N in %.1f s (%d LOCA steps, %d solves); 5 frequency curves in "
               "%.1f s; worst difference %.1e in the peak, %.1e in its frequency\n",
               cc.points.size(), continuedSeconds, cc.searches, cc.solves, tracedSeconds, worstM, worstW);
+}
+
+// The optimum of a peak study found again with more harmonics (its error label): the peak
+// followed over 450..2000 N by a peak search per value (the smallest at 450 N), its
+// optimum's peak found again with harmonics 0..2 and 0..3, each level against a frequency
+// curve traced with those harmonics at that preload (its own start and trace, no peak
+// search), and the first level against the optimum itself.
+TEST_F(DiscPeakContinuation, OptimumWithMoreHarmonicsMeetsTracedCurves) {
+  ASSERT_TRUE(ref.curve.branch.finished) << ref.curve.branch.stopReason;
+  disc::DiscPeakFollowingSpec f;
+  f.parameter = disc::DiscStudyParameter::Preload;
+  f.from = 450, f.to = 2000, f.values = 3;
+  Timer timer;
+  const auto followed = disc::followDiscPeak(mesh, reduced, spec, ref.setup, ref.curve, ref.fromHz, ref.toHz, f);
+  const auto& fc = followed.curve;
+  ASSERT_GE(fc.optimum, 0);
+  const auto& o = fc.points[std::size_t(fc.optimum)];
+  const auto& check = followed.optimumCheck;
+  for (const auto& level : check.levels)
+    std::printf("optimum (preload %.2f N, %.6f mm) with harmonics 0..%d: %s %.6f mm at %.4f Hz (%.1f s) %s\n",
+                o.parameter, o.measure, level.maxHarmonic, level.peak.found ? "found" : "not found", level.peak.value,
+                level.peak.parameter, level.seconds, level.peak.reason.c_str());
+  ASSERT_EQ(check.levels.size(), 3u) << (followed.warnings.empty() ? "" : followed.warnings.front());
+  for (const auto& level : check.levels) ASSERT_TRUE(level.peak.found) << "H " << level.maxHarmonic;
+  EXPECT_NEAR(check.levels[0].peak.value / o.measure, 1.0, 1e-6);
+  for (int H : {2, 3}) {
+    const auto& level = check.levels[std::size_t(H - 1)];
+    timer.restart();
+    const auto traced = demo_disc::curveAboutPeak(mesh, reduced, demo_disc::demoDiscResponse(H), o.parameter,
+                                                  2 * M_PI * level.peak.parameter, sweep);
+    ASSERT_TRUE(traced.curve.branch.finished) << traced.curve.branch.stopReason;
+    const double d = std::abs(level.peak.value / traced.curve.peak - 1);
+    std::printf("  harmonics 0..%d: the curve traced at that preload %.6f mm at %.4f Hz (%.1e; %.1f s)\n", H,
+                traced.curve.peak, traced.curve.peakOmega / (2 * M_PI), d, timer.seconds());
+    EXPECT_LE(d, 1e-3);  // the tops' micro-folds, as in the test above
+  }
+  EXPECT_NEAR(check.change, std::max(std::abs(check.levels[1].peak.value / check.levels[0].peak.value - 1),
+                                     std::abs(check.levels[2].peak.value / check.levels[1].peak.value - 1)),
+              1e-15);
 }

@@ -12,6 +12,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/continuation/PeakContinuation.hpp"
+#include "cyclone/hbm/TruncatedForce.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 
 namespace cyclone::disc {
@@ -118,6 +119,35 @@ void continueBothWays(const continuation::PeakTrackingProblem& problem, const co
 }
 
 // The models' loss factor (one for all diameters, as the scene builds them).
+// What the harmonics leave out at every followed peak (one AFT each), and the optimum's
+// peak found again with `raises` harmonics more: how far the study's H is from converged
+// where it matters most.
+void harmonicsAtThePeaks(response::ForcedResponseSetup& setup, int raises, DiscPeakFollowing& out) {
+  const auto& points = out.curve.points;
+  out.forceBeyond.assign(points.size(), -1.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    setup.apply(points[i].parameter);
+    const auto t = hbm::truncatedForce(*setup.system, points[i].x, points[i].frequency);
+    if (t.known) out.forceBeyond[i] = t.share;
+  }
+  if (raises <= 0 || out.curve.optimum < 0) return;
+  const auto& o = points[std::size_t(out.curve.optimum)];
+  const int H = setup.system->aft().harmonics().maxHarmonic();
+  auto& check = out.optimumCheck;
+  try {
+    check.levels = response::peakByRaisedHarmonics(setup, o.parameter, o.x, o.frequency, H + raises);
+  } catch (const std::exception& e) {  // e.g. no reduced model for a raised harmonic's nodal diameter
+    out.warnings.push_back(std::string("the optimum's harmonics check was not possible (") + e.what() + ")");
+    log::warn("peak following: " + out.warnings.back());
+    return;
+  }
+  const bool all = int(check.levels.size()) == raises + 1 && check.levels.back().peak.found;
+  check.change = all ? 0.0 : -1.0;
+  for (std::size_t l = 1; all && l < check.levels.size(); ++l)
+    check.change =
+        std::max(check.change, std::abs(check.levels[l].peak.value / check.levels[l - 1].peak.value - 1));
+}
+
 double modelsLossFactor(const DiscReducedModels& models) {
   double eta = -1;
   for (const auto& [k, m] : models.models) {
@@ -284,8 +314,9 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
     continueBothWays(problem, starts.front(), following, byClearance, reference.continuation.tolerance, out);
   else
     followBothWays(problem, starts, o, out);
-  setup.rebuild = nullptr;  // it refers to the caller's mesh and models; the system stays at the last value
   if (bySpeed) out.curve.optimum = -1;
+  harmonicsAtThePeaks(setup, following.optimumRaises, out);
+  setup.rebuild = nullptr;  // it refers to the caller's mesh and models; the system stays at the last value
   if (out.curve.points.empty()) throw SolverError("peak following/" + name + ": " + out.curve.stopReason);
   return out;
 }

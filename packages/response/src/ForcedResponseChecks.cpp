@@ -387,6 +387,13 @@ HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Br
   return check;
 }
 
+std::vector<HarmonicsLevel> peakByRaisedHarmonics(ForcedResponseSetup& setup, double value, const Eigen::VectorXd& x,
+                                                  double omega, int upTo) {
+  const double scale = setup.apply(value).second;
+  return peakByHarmonics(*setup.system, x, omega / (2 * M_PI), scale, setup.outputDofs.front(),
+                         setup.continuation.tolerance, upTo, SolvedPoints{}, 0);
+}
+
 void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start) {
   if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale || start.size() == 0) return;
   const double force = std::abs(setup.excitationScale) * setup.system->excitation().cwiseAbs().maxCoeff();

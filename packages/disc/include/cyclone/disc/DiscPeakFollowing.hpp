@@ -11,6 +11,7 @@
 
 #include "cyclone/continuation/PeakFollowing.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
+#include "cyclone/response/ForcedResponseChecks.hpp"
 
 namespace cyclone::disc {
 
@@ -45,6 +46,17 @@ struct DiscPeakFollowingSpec {
   enum class Method { PeakSearch, Continuation };
   Method method = Method::PeakSearch;
   double phaseStep = 0.1;  ///< continuePeak's h (radians)
+  /// The optimum's peak found again with this many harmonics more, one at a time (0:
+  /// not checked): its harmonic truncation error, as the headline's.
+  int optimumRaises = 2;
+};
+
+/// The optimum's peak with more harmonics: the study's own harmonics (H) and each raise.
+struct OptimumHarmonicsCheck {
+  std::vector<response::HarmonicsLevel> levels;  ///< H first; empty: not checked
+  /// The largest change of the peak over the raises (relative; -1: a level not found).
+  double change = -1;
+  bool converged(double tolerance) const { return change >= 0 && change <= tolerance; }
 };
 
 struct DiscPeakFollowing {
@@ -59,6 +71,11 @@ struct DiscPeakFollowing {
   /// operating condition and not a design choice, none (curve.optimum = -1).
   bool byForce = false;
   bool continued = false;  ///< by one LOCA continuation (Method::Continuation), else a peak search per value
+  /// Per point of curve.points: the contact forces' harmonics above H over those kept at
+  /// the peak (hbm::TruncatedForce::share; -1: not known). Where a contact opens each
+  /// period it is tens of percent and the peak is far from converged in H (docs/scenes.md).
+  std::vector<double> forceBeyond;
+  OptimumHarmonicsCheck optimumCheck;
   double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
 };
 

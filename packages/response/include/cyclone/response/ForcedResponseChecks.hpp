@@ -72,6 +72,14 @@ struct HarmonicsCheck {
 HarmonicsCheck checkHarmonics(ForcedResponseSetup& setup, const continuation::Branch& branch, std::size_t ip,
                               double peak);
 
+/// A peak over the frequency at a value of setup's other parameter (a followed peak: x
+/// solves the system at `value` and the frequency omega, rad/s, the largest response
+/// there): found again with harmonics 0..H + 1, 0..H + 2, ... up to `upTo`, each level's
+/// peak search from the one below's (the frequency curve's harmonics check without a
+/// curve). The levels, H's first; they stop at one whose peak is not found.
+std::vector<HarmonicsLevel> peakByRaisedHarmonics(ForcedResponseSetup& setup, double value, const Eigen::VectorXd& x,
+                                                  double omega, int upTo);
+
 /// The larger of the last two raises' changes of the peak when both are at most `target`
 /// (the three last levels found), else -1: where harmonics by an error target stop.
 double levelsMeetTarget(const std::vector<HarmonicsLevel>& levels, double target);
