@@ -2140,3 +2140,64 @@ TEST(Scenes, SparseMatricesAndDofNames) {
     EXPECT_NE(std::string(e.what()).find("outside 2 x 2"), std::string::npos) << e.what();
   }
 }
+
+// max_points is the curve's budget (issue 49: the Duffing curve with max_points 2 came out
+// with 508 points: its first sweep stopped at 2, then the sweep from the range's end and
+// the other engine each had the whole budget again). The curve ends there, and says so.
+TEST(Scenes, MaxPointsIsTheCurvesBudget) {
+  log::setQuiet(true);
+  for (const int budget : {2, 20}) {
+    const auto dir = freshDir("max_points_" + std::to_string(budget));
+    const std::string yaml = duffingSceneWith("    to: 2.0", "    to: 2.0\n    max_points: " + std::to_string(budget));
+    ASSERT_NE(yaml.find("max_points"), std::string::npos);
+    scenes::SceneOverrides o;
+    o.outputDirectory = dir.string();
+    const auto summary = scenes::runSceneText(yaml, "budget.yaml", o, Tpetra::getDefaultComm());
+    const auto rows = readCsv(dir / "frc.csv");
+    EXPECT_EQ(int(rows.size()), budget);
+    bool said = false;
+    for (const auto& line : summary.computed) said = said || line.find("max_points " + std::to_string(budget)) != std::string::npos;
+    EXPECT_TRUE(said) << "the summary does not say the curve stopped at its budget";
+  }
+}
+
+// A frequency range of twelve decades (issue 49: the Duffing scene over 1e-6..1e6 rad/s
+// stepped from 0.327 to 1000.3 in one step at a fixed parameter, missed the resonance at
+// 1.27 and reported the range finished): the steps land on the linear resonance (1 rad/s,
+// ContinuationOptions::parameterMarks) instead of passing it, and the curve's largest
+// point is the one the scene's own range (0.5..2) gives.
+TEST(Scenes, AWideRangeDoesNotStepOverTheResonance) {
+  log::setQuiet(true);
+  auto largest = [](const fs::path& dir) {
+    const auto rows = readCsv(dir / "frc.csv");
+    double top = 0, at = 0;
+    for (const auto& r : rows)
+      if (r.size() > 11 && r[11] > top) top = r[11], at = r[1];  // dof0_max, omega_rad_s
+    return std::pair<double, double>{top, at};
+  };
+  const auto narrowDir = freshDir("duffing_narrow"), wideDir = freshDir("duffing_wide");
+  scenes::SceneOverrides o;
+  o.outputDirectory = narrowDir.string();
+  scenes::runSceneText(duffingSceneWith("cos: 0.18", "cos: 0.18"), "narrow.yaml", o, Tpetra::getDefaultComm());
+  const std::string wide = duffingSceneWith("from: 0.5", "from: 1.0e-6");
+  ASSERT_NE(wide.find("from: 1.0e-6"), std::string::npos);
+  const std::string wider = std::regex_replace(wide, std::regex("to: 2.0"), "to: 1.0e6");
+  ASSERT_NE(wider.find("to: 1.0e6"), std::string::npos);
+  o.outputDirectory = wideDir.string();
+  scenes::runSceneText(wider, "wide.yaml", o, Tpetra::getDefaultComm());
+  {
+    std::ifstream header(wideDir / "frc.csv");
+    std::string line, column;
+    std::getline(header, line);
+    std::stringstream columns(line);
+    for (int i = 0; i <= 11; ++i) std::getline(columns, column, ',');
+    ASSERT_EQ(column, "dof0_max") << line;
+  }
+  const auto [narrowPeak, narrowAt] = largest(narrowDir);
+  const auto [widePeak, wideAt] = largest(wideDir);
+  std::printf("largest point: %.6f at %.5f rad/s over 0.5..2, %.6f at %.5f over 1e-6..1e6\n", narrowPeak, narrowAt,
+              widePeak, wideAt);
+  ASSERT_GT(narrowPeak, 2.8);  // the scene's resonance (its reference 2.83 for |x_1| at 1.2688)
+  EXPECT_NEAR(widePeak / narrowPeak, 1.0, 1e-6);  // each curve's largest point is located on its path
+  EXPECT_NEAR(wideAt / narrowAt, 1.0, 1e-5);
+}

@@ -284,6 +284,8 @@ private:
   void switchPredictor(double tangentTurn, double next, double p);
   bool leftTheRange(const Point& previous, const Point& z, const Point& t);
   bool atTheEnd(const Point& z, const Point& t, double ds);
+  double stepToMark(const Point& z, const Point& along, double ds) const;
+  double markBefore(double from, double to) const;
   void logSummary() const;
   // The state between two steps (z is the last point): saved every intervalSeconds of
   // work, and restored to continue a saved trace exactly.
@@ -556,7 +558,7 @@ bool Tracer::passCreep(Point& z, Point& t, double dir) {
     lo = std::min(lo, pts[i].parameter), hi = std::max(hi, pts[i].parameter);
   if (hi - lo >= 1e-5 * metric_.sp) return false;
   for (double f : {1e-3, 2.5e-4}) {
-    Point z1{z.x, z.p + dir * f * metric_.sp};
+    Point z1{z.x, markBefore(z.p, z.p + dir * f * metric_.sp)};
     if (!solveNewton(problem_, z1.x, z1.p, o_.tolerance, 12, nullptr, o_.linearSolver).converged) continue;
     const Point chord = metric_.difference(z1, z);
     const double distance = metric_.norm(chord);
@@ -860,6 +862,32 @@ bool Tracer::leftTheRange(const Point& previous, const Point& z, const Point& t)
 
 // True (the trace ends) when the point budget is spent or the next predictor passes
 // the range's end and Newton there converges (the end reached).
+// `to`, or the first parameter mark (ContinuationOptions::parameterMarks) strictly
+// between `from` and it: a step at a fixed parameter does not pass over one either.
+double Tracer::markBefore(double from, double to) const {
+  double nearest = to;
+  for (const double mark : o_.parameterMarks)
+    if ((mark - from) * (nearest - mark) > 0) nearest = mark;
+  return nearest;
+}
+
+// The step shortened so that its predictor lands on the first parameter mark it would
+// pass (ContinuationOptions::parameterMarks) by a long way, more than a tenth of the
+// mark's value (a resonance of that width is not passed over unseen by the steps' own
+// control, whose steps near it are a few percent; a curve over decades steps past it by
+// hundreds of times): the point there is the curve's, and the steps beyond start from it.
+double Tracer::stepToMark(const Point& z, const Point& along, double ds) const {
+  if (o_.parameterMarks.empty() || along.p == 0) return ds;
+  const double to = z.p + ds * along.p;
+  if (!(std::abs(to - z.p) > 0.1 * std::abs(markBefore(z.p, to)))) return ds;
+  double shortest = ds;
+  for (const double mark : o_.parameterMarks) {
+    const double d = (mark - z.p) / along.p;  // the step that lands on it
+    if ((mark - z.p) * (to - mark) > 0 && d > o_.minStep && d < shortest) shortest = d;
+  }
+  return shortest;
+}
+
 bool Tracer::atTheEnd(const Point& z, const Point& t, double ds) {
   if (int(branch_.points.size()) >= o_.maxSteps) {
     branch_.stopReason = "the largest number of points (max_points " + std::to_string(o_.maxSteps) +
@@ -906,6 +934,7 @@ void Tracer::run(const Eigen::VectorXd& guess) {
     // the tangent turns by about as much at any step and points anywhere (a micro-fold
     // reverses it), while the chord over several kinks follows the curve.
     const Point along = secant_ && branch_.points.size() >= 2 ? lastChord() : t;
+    ds = stepToMark(z, along, ds);
     const StepOutcome outcome = correctStep(z, along, ds, c, t1, cosTurn);
     keepFactors(c);
     if (outcome == StepOutcome::Retract) {

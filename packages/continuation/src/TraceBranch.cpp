@@ -42,6 +42,8 @@ std::string traceKey(const ContinuationProblem& problem, const Eigen::VectorXd& 
   h.add(o.initialStep).add(o.minStep).add(o.maxStep).add(o.maxSteps).add(o.tolerance).add(o.maxNewtonIterations);
   h.add(o.turnAngle).add(int(o.secantOverKinks)).add(int(o.mixedPrecisionLu)).add(int(o.reuseFactorizations)).add(int(o.arcLengthScaling)).add(int(o.stopWhereItTurnsBack));
   h.add(int(o.restartWhereTheCorrectorJumps)).add(o.locaParameterPerturbation).add(int(o.lineSearch)).add(int(bool(problem.measure)));
+  h.add((long long)o.parameterMarks.size());
+  if (!o.parameterMarks.empty()) h.add(o.parameterMarks.data(), o.parameterMarks.size() * sizeof(double));
   h.add((long long)guess.size()).add(guess.data(), std::size_t(guess.size()) * sizeof(double));
   h.add((long long)problem.scaleGroups.size());
   if (!problem.scaleGroups.empty()) h.add(problem.scaleGroups.data(), problem.scaleGroups.size() * sizeof(int));

@@ -21,6 +21,8 @@
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/response/ForcedResponseTrace.hpp"
 
+#include "cyclone/response/LinearResonances.hpp"
+
 namespace cyclone::response {
 
 namespace {
@@ -278,6 +280,12 @@ continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingP
   return down;
 }
 
+// The curve's points reached setup.continuation.maxSteps (the caller's max_points): it
+// ends there, with neither a sweep from the other end nor another engine.
+bool pointBudgetSpent(const ForcedResponseSetup& setup, const continuation::Branch& branch) {
+  return int(branch.points.size()) >= setup.continuation.maxSteps;
+}
+
 // Both sweeps with setup.continuation's engine.
 continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const StartingPoint& start,
                                         StartSearches& searches) {
@@ -285,7 +293,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
   double scale = setup.unknownScale;
   if (scale == 0) scale = start.x.cwiseAbs().maxCoeff();  // automatic: the start's largest coefficient
   auto branch = traceOneSweep(setup, start.x, scale);
-  if (branch.finished || branch.points.empty()) return branch;
+  if (branch.finished || branch.points.empty() || pointBudgetSpent(setup, branch)) return branch;
 
   // The branch folded back to the start, or stopped short of the end: the rest of the
   // range holds another branch, or the same one past what stopped the sweep, which a
@@ -296,6 +304,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
     reached = upward.to >= upward.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
   if (branch.returnedToStart) reached = branch.reached;
   setup.continuation.from = upward.to, setup.continuation.to = upward.from;
+  setup.continuation.maxSteps = upward.maxSteps - int(branch.points.size());  // the curve's budget, not a sweep's
   const StartingPoint far = searchStart(setup, searches);
   continuation::Branch down;
   if (far.x.size() > 0) down = traceOneSweep(setup, far.x, scale);
@@ -331,10 +340,11 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
 continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start,
                                        StartSearches& searches) {
   auto branch = traceWithOneEngine(setup, start, searches);
-  if (branch.finished || !setup.fallback) return branch;
+  if (branch.finished || !setup.fallback || pointBudgetSpent(setup, branch)) return branch;
   const auto primary = setup.continuation;
   continuation::ContinuationOptions other = *setup.fallback;
   other.from = primary.from, other.to = primary.to, other.tolerance = primary.tolerance;
+  other.maxSteps = primary.maxSteps;
   log::info(std::string("forced response: ") + engineName(primary.engine) + " left the curve incomplete (" +
             branch.stopReason + "); traced again with " + engineName(other.engine));
   setup.continuation = other;
@@ -445,9 +455,17 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
 
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start) {
   const long unsettledBefore = hbm::FrictionContact::unsettledEvaluations();
+  // A frequency curve's steps land on the linear resonances inside its range (not over them).
+  if (setup.parameter == ForcedResponseSetup::Parameter::Omega && setup.continuation.parameterMarks.empty()) {
+    const double lo = std::min(setup.continuation.from, setup.continuation.to),
+                 hi = std::max(setup.continuation.from, setup.continuation.to);
+    for (const double w : linearResonances(*setup.system))
+      if (const double p = w / setup.omegaUnit; p > lo && p < hi) setup.continuation.parameterMarks.push_back(p);
+  }
   StartSearches searches;
   auto branch = traceWithFallback(setup, start, searches);
-  if (!branch.finished && !branch.points.empty()) branch = traceWithMoreSamples(setup, std::move(branch));
+  if (!branch.finished && !branch.points.empty() && !pointBudgetSpent(setup, branch))
+    branch = traceWithMoreSamples(setup, std::move(branch));
   if (const long n = hbm::FrictionContact::unsettledEvaluations() - unsettledBefore; n > 0)
     log::warn("forced response: " + std::to_string(n) +
               " friction force evaluations ended on a slider state that is not periodic (the period map's "

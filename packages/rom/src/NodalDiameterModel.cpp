@@ -23,10 +23,43 @@ struct NodalDiameterModel::Impl {
   double eta = 0;
   // Complex solves on the forward travelling wave (half the size) when the real form pairs.
   solvers::ComplexDirectSolver::Structure structure = solvers::ComplexDirectSolver::Structure::General;
-  Teuchos::RCP<linalg::MultiVector> G;  // unit loads at the retained DOFs
+  // The unit loads at the retained DOFs, one column per DOF, by their few nonzeros (the
+  // equations of a node's directions): formed as right-hand sides a block of columns at a
+  // time. Held dense they took the unknowns times the retained DOFs (4.9 GB at 320k
+  // unknowns and 1929 DOFs), and every solve with all of them as much again per copy.
+  std::vector<std::vector<std::pair<long long, double>>> unitLoads;
+  Teuchos::RCP<const linalg::Map> map;
   Teuchos::RCP<linalg::MultiVector> F;  // the load patterns (null: none)
 
   Eigen::Index size() const { return dofs.size() * op.copies; }
+
+  // Columns first .. first + count - 1 of the unit loads.
+  linalg::MultiVector loads(Eigen::Index first, Eigen::Index count) const {
+    linalg::MultiVector B(map, std::size_t(count));
+    for (Eigen::Index j = 0; j < count; ++j)
+      for (const auto& [equation, value] : unitLoads[std::size_t(first + j)])
+        B.sumIntoGlobalValue(equation, std::size_t(j), value);
+    return B;
+  }
+  // rhs(:, column) += a * unit load k.
+  void addLoad(linalg::MultiVector& rhs, std::size_t column, Eigen::Index k, double a) const {
+    for (const auto& [equation, value] : unitLoads[std::size_t(k)]) rhs.sumIntoGlobalValue(equation, column, a * value);
+  }
+  // G^T solve(G) over columns first .. first + count - 1 of G, a block of columns at a time
+  // (`solve(B, X)` fills X for the loads B): the memory of kBlock columns, not all.
+  static constexpr Eigen::Index kBlock = 128;
+  template <class Solve>
+  Eigen::MatrixXd retainedResponse(Eigen::Index count, const Solve& solve) const {
+    Eigen::MatrixXd out(size(), count);
+    for (Eigen::Index first = 0; first < count; first += kBlock) {
+      const Eigen::Index n = std::min(kBlock, count - first);
+      const linalg::MultiVector B = loads(first, n);
+      linalg::MultiVector X(map, std::size_t(n));
+      solve(B, X);
+      out.middleCols(first, n) = retained(X);
+    }
+    return out;
+  }
 
   // G^T X: every column of X seen at the retained DOFs (along each DOF's unit vector).
   Eigen::MatrixXd retained(const linalg::MultiVector& X) const {
@@ -60,7 +93,8 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
 
   const auto& T = I.op.assembler->transform();
   const auto map = I.op.assembler->map();
-  I.G = Teuchos::rcp(new linalg::MultiVector(map, std::size_t(I.size())));
+  I.map = map;
+  I.unitLoads.assign(std::size_t(I.size()), {});
   const auto nd = I.dofs.size();
   for (int c = 0; c < I.op.copies; ++c)
     for (Eigen::Index k = 0; k < nd; ++k) {
@@ -69,7 +103,7 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
       for (int d = 0; d < 3; ++d)
         for (const auto& term : T.terms(node, d, c))
           if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
-            I.G->sumIntoGlobalValue(term.equation, std::size_t(c * nd + k), axis[d] * term.coefficient);
+            I.unitLoads[std::size_t(c * nd + k)].emplace_back(term.equation, axis[d] * term.coefficient);
     }
   if (!problem.loads.empty()) {
     I.F = Teuchos::rcp(new linalg::MultiVector(map, problem.loads.size()));
@@ -109,7 +143,12 @@ const std::vector<mesh::Index>& NodalDiameterModel::retainedNodes() const { retu
 const RetainedDofSet& NodalDiameterModel::retainedDofs() const { return impl_->dofs; }
 Eigen::Index NodalDiameterModel::size() const { return impl_->size(); }
 const cyclic::NodalDiameterOperators& NodalDiameterModel::operators() const { return impl_->op; }
-const linalg::MultiVector& NodalDiameterModel::retainedLoads() const { return *impl_->G; }
+linalg::MultiVector NodalDiameterModel::retainedLoads(Eigen::Index first, Eigen::Index count) const {
+  if (first < 0 || count < 0 || first + count > size())
+    throw InputError("retained loads", "columns " + std::to_string(first) + " .. " + std::to_string(first + count - 1) +
+                                           " of " + std::to_string(size()));
+  return impl_->loads(first, count);
+}
 
 Eigen::MatrixXcd NodalDiameterModel::compliance(double omega) const {
   const auto& I = *impl_;
@@ -117,12 +156,15 @@ Eigen::MatrixXcd NodalDiameterModel::compliance(double omega) const {
   // Only copy a's loads are solved for. Copy b's are i times them, and i commutes with
   // K_k and M_k, so their responses are i times (copy a's reading -b, copy b's reading a).
   const auto nd = I.dofs.size();
-  const auto Ga = I.G->subView(Teuchos::Range1D(0, std::size_t(nd) - 1));
-  linalg::MultiVector xr(I.G->getMap(), std::size_t(nd)), xi(I.G->getMap(), std::size_t(nd));
-  solver.solve(*Ga, xr, xi);
   Eigen::MatrixXcd A(I.size(), I.size());
-  A.leftCols(nd).real() = I.retained(xr);
-  A.leftCols(nd).imag() = I.retained(xi);
+  for (Eigen::Index first = 0; first < nd; first += Impl::kBlock) {  // a block of copy a's loads at a time
+    const Eigen::Index n = std::min(Impl::kBlock, nd - first);
+    const linalg::MultiVector B = I.loads(first, n);
+    linalg::MultiVector xr(I.map, std::size_t(n)), xi(I.map, std::size_t(n));
+    solver.solve(B, xr, xi);
+    A.middleCols(first, n).real() = I.retained(xr);
+    A.middleCols(first, n).imag() = I.retained(xi);
+  }
   if (I.op.copies == 2) {
     A.block(0, nd, nd, nd) = -A.block(nd, 0, nd, nd);
     A.block(nd, nd, nd, nd) = A.block(0, 0, nd, nd);
@@ -140,14 +182,13 @@ Eigen::MatrixXcd NodalDiameterModel::complianceTimes(double omega, const Eigen::
   // A X = L X_a + [-L_b X_b; L_a X_b], L Y the responses to the loads G_a Y.
   const auto p = X.cols();
   const int copies = I.op.copies;
-  linalg::MultiVector rhs(I.G->getMap(), std::size_t(copies * p));
+  linalg::MultiVector rhs(I.map, std::size_t(copies * p));
   for (int c = 0; c < copies; ++c)
     for (Eigen::Index j = 0; j < p; ++j)
       for (Eigen::Index k = 0; k < nd; ++k)
-        if (const double a = X(c * nd + k, j); a != 0)
-          rhs.getVectorNonConst(std::size_t(c * p + j))->update(a, *I.G->getVector(std::size_t(k)), 1.0);
+        if (const double a = X(c * nd + k, j); a != 0) I.addLoad(rhs, std::size_t(c * p + j), k, a);
   const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, I.eta}, *I.op.M, -omega * omega, I.structure);
-  linalg::MultiVector xr(I.G->getMap(), std::size_t(copies * p)), xi(I.G->getMap(), std::size_t(copies * p));
+  linalg::MultiVector xr(I.map, std::size_t(copies * p)), xi(I.map, std::size_t(copies * p));
   solver.solve(rhs, xr, xi);
   Eigen::MatrixXcd LY(I.size(), copies * p);
   LY.real() = I.retained(xr);
@@ -169,15 +210,14 @@ std::vector<Eigen::Vector3cd> NodalDiameterModel::fieldResponse(double omega, co
                                            std::to_string(nd) + " per copy");
   if (sign != 1 && sign != -1) throw InputError("field response", "the travelling wave's sign must be +1 or -1");
   // Columns: the real and the imaginary part of the load, each on copy a's retained DOFs.
-  linalg::MultiVector rhs(I.G->getMap(), 2);
+  linalg::MultiVector rhs(I.map, 2);
   for (Eigen::Index k = 0; k < nd; ++k) {
-    const auto g = I.G->getVector(std::size_t(k));
-    if (forces(k).real() != 0) rhs.getVectorNonConst(0)->update(forces(k).real(), *g, 1.0);
-    if (forces(k).imag() != 0) rhs.getVectorNonConst(1)->update(forces(k).imag(), *g, 1.0);
+    if (forces(k).real() != 0) I.addLoad(rhs, 0, k, forces(k).real());
+    if (forces(k).imag() != 0) I.addLoad(rhs, 1, k, forces(k).imag());
   }
   const double eta = omega == 0 ? 0.0 : I.eta;
   const solvers::ComplexDirectSolver solver(*I.op.K, {1.0, eta}, *I.op.M, -omega * omega, I.structure);
-  linalg::MultiVector xr(I.G->getMap(), 2), xi(I.G->getMap(), 2);
+  linalg::MultiVector xr(I.map, 2), xi(I.map, 2);
   solver.solve(rhs, xr, xi);
   const auto& mesh = I.op.assembler->mesh();
   std::vector<Eigen::Vector3cd> u(std::size_t(mesh.numNodes()), Eigen::Vector3cd::Zero());
@@ -219,9 +259,8 @@ Eigen::MatrixXd NodalDiameterModel::zeroFrequencyCompliance() const {
     throw InputError("reduced model", std::string("K does not factor at zero frequency (a free sector has no static "
                                                   "compliance): ") + e.what());
   }
-  linalg::MultiVector X(I.G->getMap(), I.G->getNumVectors());
-  solver->solve(*I.G, X);
-  Eigen::MatrixXd A = I.retained(X);
+  const Eigen::MatrixXd A =
+      I.retainedResponse(I.size(), [&](const linalg::MultiVector& B, linalg::MultiVector& X) { solver->solve(B, X); });
   return 0.5 * (A + A.transpose());
 }
 
@@ -279,9 +318,8 @@ StaticCompliance NodalDiameterModel::staticCompliance(double omega0, const Retai
   const solvers::DirectSolver solver(*I.op.K, I.op.M.get(), out.shift,
                                      definite ? solvers::DirectSolver::Definiteness::Positive
                                               : solvers::DirectSolver::Definiteness::Indefinite);
-  linalg::MultiVector X(I.G->getMap(), I.G->getNumVectors());
-  solver.solve(*I.G, X);
-  out.matrix = I.retained(X);
+  out.matrix =
+      I.retainedResponse(I.size(), [&](const linalg::MultiVector& B, linalg::MultiVector& X) { solver.solve(B, X); });
   out.matrix = 0.5 * (out.matrix + out.matrix.transpose()).eval();
   if (!I.F.is_null()) {
     linalg::MultiVector XF(I.F->getMap(), I.F->getNumVectors());

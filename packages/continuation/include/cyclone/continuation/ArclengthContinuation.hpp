@@ -64,6 +64,11 @@ struct ContinuationOptions {
   double initialStep = 0.01;
   double minStep = 1e-6, maxStep = 0.2;
   int maxSteps = 5000;
+  /// PredictorCorrector: parameter values no step passes over; a predictor that would is
+  /// shortened to land on the first. A forced response's linear resonances: far from them
+  /// the response barely changes, the steps grow long, and over a wide range one step
+  /// carried a Duffing curve from 0.327 to 1000.3 rad/s, over its resonance at 1.27.
+  std::vector<double> parameterMarks;
   double tolerance = 1e-10;         ///< Newton: ||F||_2
   int maxNewtonIterations = 15;
   /// PredictorCorrector: the turn of the tangent per step the step size aims at

@@ -95,9 +95,11 @@ public:
   /// The real-form K_k, M_k and their unknowns: what reductions onto the retained
   /// DOFs (Guyan, Craig-Bampton: BoundaryReduction) work on.
   const cyclic::NodalDiameterOperators& operators() const;
-  /// G: unit loads at the retained DOFs as right-hand sides on the unknowns, one
-  /// column per retained DOF (order as in ComplianceModel).
-  const linalg::MultiVector& retainedLoads() const;
+  /// Columns first .. first + count - 1 of G, the unit loads at the retained DOFs as
+  /// right-hand sides on the unknowns, one column per retained DOF (order as in
+  /// ComplianceModel). Formed on demand: all of them at once are the unknowns times the
+  /// retained DOFs.
+  linalg::MultiVector retainedLoads(Eigen::Index first, Eigen::Index count) const;
 
 private:
   struct Impl;
