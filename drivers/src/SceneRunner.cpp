@@ -9,6 +9,7 @@
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -211,6 +212,27 @@ std::vector<std::string> readAnalyses(SceneSection& scene) {
                              "cyclic", "modal", "diagrams", "system", "nonlinear_elements", "excitation", "harmonics",
                              "harmonics_tolerance", "harmonics_max", "samples", "continuation", "output", "static_loads", "reduced_model",
                              "disc_response"});
+  // The two kinds of scene read different sections, and a section of the other kind would
+  // be ignored whatever it holds (issue 49: `modal: {modes_per_ndd: 3}` in a matrix scene
+  // ran, exit 0); a matrix system's response runs alone (the mesh stages would not run).
+  const std::set<std::string> matrixSections{"system",  "nonlinear_elements", "excitation", "harmonics",
+                                             "harmonics_tolerance", "harmonics_max", "samples", "continuation",
+                                             "output",  "static_loads"},
+      meshSections{"mesh", "material", "constraints", "loads", "solver", "cyclic", "modal", "diagrams",
+                   "reduced_model", "disc_response"};
+  const bool matrix = wants("forced_response");
+  if (matrix && analyses.size() > 1)
+    throw InputError(scene.where("analysis"), "forced_response (a system given by its matrices) runs alone: the "
+                                              "other analyses need a mesh (run them in a scene of their own)");
+  for (const auto& key : matrix ? meshSections : matrixSections)
+    if (scene.has(key)) {
+      std::string used;
+      for (const auto& k : matrix ? matrixSections : meshSections) used += (used.empty() ? "" : ", ") + k;
+      throw InputError(scene.where(key), std::string("is not read by ") +
+                                             (matrix ? "a matrix system's forced_response, which takes "
+                                                     : "the mesh analyses, which take ") +
+                                             used + ": remove it, or check the analysis");
+    }
   // A mass matrix needs a density: with rho = 0 the eigen-solver spun for minutes (issue 20).
   if (wants("modal") || wants("disc_response") || wants("reduced_model")) {
     auto m = scene.section("material");
@@ -301,6 +323,16 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   } catch (const std::exception& e) {
     if (manifest) manifest->fail(e.what());
     throw;
+  }
+  // A section of this kind of scene that these analyses did not read (e.g. modal in a
+  // static scene): its keys were not checked, so said rather than passed over.
+  for (const auto& key : scene.unreadKeys()) {
+    std::string listed;
+    for (const auto& a : analyses) listed += (listed.empty() ? "" : ", ") + a;
+    const std::string warning = "'" + key + "' was not read by the analyses listed (" + listed +
+                                "): its keys were not checked";
+    log::warn(warning);
+    summary.computed.push_back("warning: " + warning);
   }
   if (manifest) manifest->complete(summary.written);
   if (comm->getRank() == 0) {

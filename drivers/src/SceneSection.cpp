@@ -223,6 +223,13 @@ void SceneSection::rejectKeysOtherThan(const std::set<std::string>& known) const
   }
 }
 
+std::vector<std::string> SceneSection::unreadKeys() const {
+  std::vector<std::string> out;
+  for (auto it = list_.begin(); it != list_.end(); ++it)
+    if (!used_.count(list_.name(it))) out.push_back(list_.name(it));
+  return out;
+}
+
 void SceneSection::rejectUnknownKeys() const {
   for (auto it = list_.begin(); it != list_.end(); ++it) {
     const auto& name = list_.name(it);

@@ -2201,3 +2201,34 @@ TEST(Scenes, AWideRangeDoesNotStepOverTheResonance) {
   EXPECT_NEAR(widePeak / narrowPeak, 1.0, 1e-6);  // each curve's largest point is located on its path
   EXPECT_NEAR(wideAt / narrowAt, 1.0, 1e-5);
 }
+
+// Sections no analysis listed reads (issue 49: `modal: {modes_per_ndd: 3}` in a matrix
+// scene was ignored, exit 0). A section of the other kind of scene is refused before any
+// work, naming it; a matrix system's response listed with a mesh analysis too (the mesh
+// stages would not run). A section of the same kind that the analyses listed do not read
+// (reduced_model in a mesh-only scene) runs, with a warning in the summary.
+TEST(Scenes, SectionsNoAnalysisReadsAreRefusedOrSaid) {
+  log::setQuiet(true);
+  const auto dir = freshDir("unread_sections");
+  const std::string withModal = duffingSceneWith("  samples: 64", "  samples: 64\n  modal: {modes_per_ndd: 3}");
+  ASSERT_NE(withModal.find("modes_per_ndd"), std::string::npos);
+  std::string msg = failure(withModal, dir);
+  EXPECT_NE(msg.find("cyclone/modal"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("is not read by"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+  const std::string mixed = duffingSceneWith("analysis: forced_response", "analysis: [forced_response, static]");
+  ASSERT_NE(mixed.find("[forced_response, static]"), std::string::npos);
+  msg = failure(mixed, dir);
+  EXPECT_NE(msg.find("runs alone"), std::string::npos) << msg;
+  const std::string meshOnly = "cyclone:\n  analysis: [mesh]\n  mesh: {source: shrouded_sector, shrouded_sector: "
+                               "{mesh_size: 12.0}}\n";
+  msg = failure(meshOnly + "  samples: 64\n", dir);
+  EXPECT_NE(msg.find("cyclone/samples"), std::string::npos) << msg;
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary =
+      scenes::runSceneText(meshOnly + "  reduced_model: {modez: 3}\n", "mesh_only.yaml", o, Tpetra::getDefaultComm());
+  bool said = false;
+  for (const auto& line : summary.computed) said = said || line.find("'reduced_model' was not read") != std::string::npos;
+  EXPECT_TRUE(said) << "no warning for the unread section";
+}

@@ -324,6 +324,7 @@ FloquetExponents allExponents(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd
 FloquetExponents nearestExponents(const Eigen::MatrixXcd& D0, const Eigen::VectorXcd& d1, double omega,
                                   double coverage, int firstCount) {
   const int mt = int(D0.rows()), n = 2 * mt, ld = std::max(mt, 1), one = 1;
+  if (n < 4) return allExponents(D0, d1, omega);  // ARPACK wants at least one eigenvalue and two more
   Eigen::MatrixXcd lu = D0;
   std::vector<int> pivots(static_cast<std::size_t>(ld));
   int info = 0;

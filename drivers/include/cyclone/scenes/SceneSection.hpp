@@ -39,6 +39,8 @@ public:
 
   /// Throws InputError for any key that was never asked for.
   void rejectUnknownKeys() const;
+  /// The keys present that were never asked for (for a warning where they may stay).
+  std::vector<std::string> unreadKeys() const;
   /// Throws InputError for any key not in `known` (before the keys are read).
   void rejectKeysOtherThan(const std::set<std::string>& known) const;
   /// "file: parameter 'path/key'" for messages.
