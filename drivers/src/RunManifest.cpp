@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
@@ -82,6 +83,33 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
     previousUnfinished = "the previous run into " + outDir + " (scene " + manifestValue(manifest, "scene") +
                          ", started " + manifestValue(manifest, "started") +
                          ") stopped without finishing: files this run does not write again are that run's";
+  // A run killed outright (SIGKILL) in the middle of a write leaves its temporary
+  // (AtomicFile's ".<name>.tmp<pid>", and the manifest's own ".interrupted.tmp"); with
+  // the lock held no run is writing here, so every one is stale.
+  std::vector<std::filesystem::path> stale;
+  std::error_code walk;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir_, walk);
+       !walk && it != std::filesystem::recursive_directory_iterator(); it.increment(walk)) {
+    const std::string name = it->path().filename().string();
+    const auto tmp = name.rfind(".tmp");
+    const bool digits = tmp != std::string::npos && tmp + 4 < name.size() &&
+                        std::all_of(name.begin() + long(tmp + 4), name.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (it->is_regular_file() && name.size() > 1 && name[0] == '.' &&
+        (digits || name == "run_manifest.txt.interrupted.tmp"))
+      stale.push_back(it->path());
+  }
+  if (!stale.empty()) {
+    std::ostringstream removed;
+    removed << "removed " << stale.size() << " temporary file" << (stale.size() > 1 ? "s" : "")
+            << " a killed run left (";
+    for (std::size_t i = 0; i < stale.size(); ++i) {
+      std::error_code ignored;
+      std::filesystem::remove(stale[i], ignored);
+      if (i < 3) removed << (i ? ", " : "") << std::filesystem::relative(stale[i], dir_).string();
+    }
+    removed << (stale.size() > 3 ? ", ...)" : ")");
+    previousUnfinished += (previousUnfinished.empty() ? "" : "; ") + removed.str();
+  }
   write("running", "");
   // SIGTERM and SIGINT (a batch system's stop, Ctrl-C) mark the run interrupted; its
   // checkpoints stay for --resume. SIGKILL cannot be caught: the manifest says running.

@@ -14,7 +14,8 @@ namespace cyclone::scenes {
 class RunManifest {
 public:
   /// Takes the directory's lock (InputError naming the directory and the other run when
-  /// it is held) and marks the run as running. `previousUnfinished` is filled when a
+  /// it is held), removes the temporary files a killed run left in it (said in
+  /// `previousUnfinished`) and marks the run as running. `previousUnfinished` is filled when a
   /// former run into the directory stopped without finishing (its manifest said running).
   RunManifest(const std::string& outDir, const std::string& scene, std::string& previousUnfinished);
   ~RunManifest();

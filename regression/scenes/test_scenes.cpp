@@ -2232,3 +2232,27 @@ TEST(Scenes, SectionsNoAnalysisReadsAreRefusedOrSaid) {
   for (const auto& line : summary.computed) said = said || line.find("'reduced_model' was not read") != std::string::npos;
   EXPECT_TRUE(said) << "no warning for the unread section";
 }
+
+// A run killed outright (SIGKILL) in the middle of a write leaves its temporary file
+// (issue 49: the next run did not remove it). The next run into the directory, holding its
+// lock, removes every such file, in subdirectories too, and says so; other files stay.
+TEST(Scenes, AKilledRunsTemporaryFilesAreRemoved) {
+  log::setQuiet(true);
+  const auto dir = freshDir("killed_run_temporaries");
+  fs::create_directories(dir / "checkpoints");
+  for (const fs::path& p : {dir / ".frc.csv.tmp4242", dir / "checkpoints" / ".trace.h5.tmp17", dir / "notes.tmp1",
+                            dir / ".keep.tmp"})
+    std::ofstream(p) << "left";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(duffingSceneWith("cos: 0.18", "cos: 0.18"), "duffing.yaml", o,
+                                            Tpetra::getDefaultComm());
+  EXPECT_FALSE(fs::exists(dir / ".frc.csv.tmp4242"));
+  EXPECT_FALSE(fs::exists(dir / "checkpoints" / ".trace.h5.tmp17"));
+  EXPECT_TRUE(fs::exists(dir / "notes.tmp1"));  // not a temporary's name (no leading dot)
+  EXPECT_TRUE(fs::exists(dir / ".keep.tmp"));   // no process id
+  EXPECT_TRUE(fs::exists(dir / "frc.csv"));
+  bool said = false;
+  for (const auto& line : summary.computed) said = said || line.find("removed 2 temporary files") != std::string::npos;
+  EXPECT_TRUE(said) << "the summary does not say what was removed";
+}

@@ -280,8 +280,9 @@ continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingP
   return down;
 }
 
-// The curve's points reached setup.continuation.maxSteps (the caller's max_points): it
-// ends there, with neither a sweep from the other end nor another engine.
+// The first sweep's points reached setup.continuation.maxSteps (the caller's max_points,
+// a sweep's budget): the curve ends there, with neither a sweep from the other end nor
+// another engine or sample count (each had the whole budget again: 508 points for 2).
 bool pointBudgetSpent(const ForcedResponseSetup& setup, const continuation::Branch& branch) {
   return int(branch.points.size()) >= setup.continuation.maxSteps;
 }
@@ -304,7 +305,6 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
     reached = upward.to >= upward.from ? std::max(reached, pt.parameter) : std::min(reached, pt.parameter);
   if (branch.returnedToStart) reached = branch.reached;
   setup.continuation.from = upward.to, setup.continuation.to = upward.from;
-  setup.continuation.maxSteps = upward.maxSteps - int(branch.points.size());  // the curve's budget, not a sweep's
   const StartingPoint far = searchStart(setup, searches);
   continuation::Branch down;
   if (far.x.size() > 0) down = traceOneSweep(setup, far.x, scale);
@@ -344,7 +344,6 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
   const auto primary = setup.continuation;
   continuation::ContinuationOptions other = *setup.fallback;
   other.from = primary.from, other.to = primary.to, other.tolerance = primary.tolerance;
-  other.maxSteps = primary.maxSteps;
   log::info(std::string("forced response: ") + engineName(primary.engine) + " left the curve incomplete (" +
             branch.stopReason + "); traced again with " + engineName(other.engine));
   setup.continuation = other;
