@@ -86,17 +86,21 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
   // A run killed outright (SIGKILL) in the middle of a write leaves its temporary
   // (AtomicFile's ".<name>.tmp<pid>", and the manifest's own ".interrupted.tmp"); with
   // the lock held no run is writing here, so every one is stale.
+  // Only the directory and the subdirectories Cyclone writes (not a walk of whatever tree
+  // an output_directory of "." would hold, nor another tool's files elsewhere in it).
   std::vector<std::filesystem::path> stale;
-  std::error_code walk;
-  for (auto it = std::filesystem::recursive_directory_iterator(dir_, walk);
-       !walk && it != std::filesystem::recursive_directory_iterator(); it.increment(walk)) {
-    const std::string name = it->path().filename().string();
-    const auto tmp = name.rfind(".tmp");
-    const bool digits = tmp != std::string::npos && tmp + 4 < name.size() &&
-                        std::all_of(name.begin() + long(tmp + 4), name.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (it->is_regular_file() && name.size() > 1 && name[0] == '.' &&
-        (digits || name == "run_manifest.txt.interrupted.tmp"))
-      stale.push_back(it->path());
+  for (const std::string sub : {"", "/reduced_models", "/checkpoints"}) {
+    std::error_code walk;
+    for (auto it = std::filesystem::directory_iterator(dir_ + sub, walk);
+         !walk && it != std::filesystem::directory_iterator(); it.increment(walk)) {
+      const std::string name = it->path().filename().string();
+      const auto tmp = name.rfind(".tmp");
+      const bool digits = tmp != std::string::npos && tmp + 4 < name.size() &&
+                          std::all_of(name.begin() + long(tmp + 4), name.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (it->is_regular_file() && name.size() > 1 && name[0] == '.' &&
+          (digits || name == "run_manifest.txt.interrupted.tmp"))
+        stale.push_back(it->path());
+    }
   }
   if (!stale.empty()) {
     std::ostringstream removed;

@@ -2235,7 +2235,7 @@ TEST(Scenes, SectionsNoAnalysisReadsAreRefusedOrSaid) {
 
 // A run killed outright (SIGKILL) in the middle of a write leaves its temporary file
 // (issue 49: the next run did not remove it). The next run into the directory, holding its
-// lock, removes every such file, in subdirectories too, and says so; other files stay.
+// lock, removes every such file, in the subdirectories Cyclone writes too (checkpoints, reduced_models), and says so; other files stay.
 TEST(Scenes, AKilledRunsTemporaryFilesAreRemoved) {
   log::setQuiet(true);
   const auto dir = freshDir("killed_run_temporaries");
