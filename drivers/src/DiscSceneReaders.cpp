@@ -33,7 +33,8 @@ namespace {
 Eigen::Vector3d toEigen(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 
-DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSectors, std::string& cache) {
+DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Mesh& mesh, int builtInSectors,
+                            std::string& cache) {
   DiscModelSpec spec;
   spec.material = readMaterial(scene.section("material"));
   {
@@ -61,11 +62,11 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, int builtInSec
                                     "not used");
     cy.rejectUnknownKeys();
   }
-  double loadsRpm = 0;
-  {
-    auto l = scene.section("loads");
-    loadsRpm = l.getDouble("speed_rpm", 0.0);
-  }
+  // The speed from loads (the static analysis's section, read whole so that its keys are
+  // checked here too).
+  analysis::StaticProblem loads;
+  readStaticLoads(scene.section("loads"), mesh, loads);
+  const double loadsRpm = loads.speedRpm;
   spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
   spec.modes = r.getInt("modes", spec.modes);
@@ -169,10 +170,10 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
 
 
 DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
-                      int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm) {
+                      int builtInSectors, bool forcedResponse, const std::string& outDir, bool requireNodalDiameters) {
   DiscPlan plan;
   std::string cache;
-  plan.modelSpec = readModelSpec(scene, r, builtInSectors, cache);
+  plan.modelSpec = readModelSpec(scene, r, mesh, builtInSectors, cache);
   const int sectors = plan.modelSpec.sectors;
   auto& spec = plan.spec;
   if (forcedResponse) {
@@ -208,12 +209,12 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     }
   } else {
     plan.nds = r.getIntList("nodal_diameters", {});
-    if (plan.nds.empty())
+    if (plan.nds.empty() && requireNodalDiameters)
       throw InputError(r.where("nodal_diameters"), "is required when the scene builds reduced models alone");
   }
   plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
   plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
-  if (cache == "rebuild" && comm->getRank() == 0) std::filesystem::remove_all(plan.cacheDir);
+  plan.rebuildCache = cache == "rebuild" && !plan.cacheDir.empty();
   r.rejectUnknownKeys();
   return plan;
 }

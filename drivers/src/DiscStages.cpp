@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "SceneStages.hpp"
@@ -334,23 +335,37 @@ int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, 
 
 }  // namespace
 
-void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
-                const std::string& outDir, const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints,
-                linalg::CommPtr comm, SceneSummary& summary) {
+DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
+                                const std::string& outDir,
+                                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
   auto r = scene.section("reduced_model");
   auto d = scene.section("disc_response");
-  const DiscPlan readPlan = readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir, comm);
-  // The sweep's keys too are checked before the models are built (a bad key must not
-  // wait for that work).
-  std::optional<disc::DiscSweepOptions> read;
-  std::vector<int> hysteresisContacts;
+  DiscStagePlan stages{readDiscPlan(scene, r, d, mesh, builtInSectors, forcedResponse, outDir), forcedResponse,
+                       {}, {}, d.section("studies")};
   if (forcedResponse) {
-    read = readSweepOptions(d, readPlan, checkpoints);
-    hysteresisContacts = readHysteresisContacts(d, mesh, readPlan.spec);
+    stages.sweep = readSweepOptions(d, stages.plan, checkpoints);
+    stages.hysteresisContacts = readHysteresisContacts(d, mesh, stages.plan.spec);
   }
+  // The studies' values are read with their curves; their names here, so a misspelt one
+  // costs no work.
+  std::set<std::string> studyNames(std::begin(kStudyNames), std::end(kStudyNames));
+  stages.studies.rejectKeysOtherThan(studyNames);
+  for (const auto& name : studyNames)
+    if (stages.studies.has(name) && stages.studies.getDoubleList(name, {}).empty())
+      throw InputError(stages.studies.where(name), "needs a list of values");
+  d.rejectUnknownKeys();
+  return stages;
+}
+
+void discStages(const DiscStagePlan& stages, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
+                SceneSummary& summary) {
+  const DiscPlan& readPlan = stages.plan;
+  const bool forcedResponse = stages.forcedResponse;
+  if (readPlan.rebuildCache && comm->getRank() == 0) std::filesystem::remove_all(readPlan.cacheDir);
   const auto models = reducedModelsStage(mesh, readPlan, outDir, comm, summary);
   if (!forcedResponse) return;
-  const auto& sweep = *read;
+  const auto& sweep = *stages.sweep;
+  const auto& hysteresisContacts = stages.hysteresisContacts;
   auto solved = referenceStage(mesh, models, readPlan, sweep, outDir, comm, summary);
   // Harmonics by an error target traced the reference again with the harmonics that met
   // it: the stages after it (studies, peak following) work with those.
@@ -363,21 +378,18 @@ void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   peakOutputsStage(mesh, models, plan, solved, hysteresisContacts, outDir, comm, summary);
 
   // Parameter studies: one curve per value, one plot per study, peaks in a table.
-  auto studies = d.section("studies");
+  auto studies = stages.studies;
   Timer studiesTimer;
   int studyCurves = 0;
   std::map<std::string, std::vector<StudyPeak>> studyPeaks;  // for the peak studies' comparison
-  for (const char* name : {"preload", "mu", "contact_stiffness", "force", "loss_factor", "harmonics", "modes",
-                           "clearance"})
+  for (const char* name : kStudyNames)
     if (studies.has(name)) {
       std::vector<StudyPeak> peaks;
       studyCurves += studyStage(studies, name, mesh, models, plan, solved, sweep, outDir, comm, summary, peaks);
       if (!peaks.empty()) studyPeaks[name] = peaks;
     }
-  studies.rejectUnknownKeys();
   followDiscPeaks(plan.peakStudies, mesh, models, plan, solved.setup, solved.curve, solved.fromHz, solved.toHz,
                   studyPeaks, outDir, comm, summary);
-  d.rejectUnknownKeys();
   if (studyCurves > 0)
     summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),
                               "the samples check per curve (summary); the harmonic truncation: the reference curve's check"});

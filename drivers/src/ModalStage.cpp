@@ -202,8 +202,7 @@ void writeDiagrams(const std::vector<cyclic::SpeedModes>& results, int sectors, 
 // Campbell and SAFE diagrams.
 }  // namespace
 
-void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir,
-                linalg::CommPtr comm, SceneSummary& summary) {
+ModalPlan readModalPlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir) {
   const auto material = readMaterial(scene.section("material"));
   auto c = scene.section("constraints");
   const auto fixedSets = c.getStringList("fixed_node_sets", {});
@@ -217,28 +216,37 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   const auto left = faces.left(), right = faces.right();
   const mesh::RotationAxis axis = readRotationAxis(cy);
   cy.rejectUnknownKeys();
-  const auto sector = cyclic::makeCyclicSector(mesh, sectors, axis, left, right);
+  ModalPlan plan{sectors, cyclic::makeCyclicSector(mesh, sectors, axis, left, right), {}, {}, false};
   {
     std::ostringstream msg;
-    msg << "cyclic sector: " << sectors << " sectors, " << sector.left.size() << " paired side-face nodes (max mismatch "
-        << sector.maxMismatch << ")";
+    msg << "cyclic sector: " << sectors << " sectors, " << plan.sector.left.size()
+        << " paired side-face nodes (max mismatch " << plan.sector.maxMismatch << ")";
     log::info(msg.str());
   }
-
   auto m = scene.section("modal");
-  bool writeMac = false;
-  auto sweep = readModalSweep(m, mesh, sectors, material, fixedSets, outDir, writeMac);
-  sweep.axis = axis;
-  auto dg = scene.section("diagrams");
+  plan.sweep = readModalSweep(m, mesh, sectors, material, fixedSets, outDir, plan.writeMac);
+  plan.sweep.axis = axis;
+  plan.engineOrders = readEngineOrders(scene.section("diagrams"), sectors);
+  if (fixedSets.empty())
+    log::warn("modal analysis without fixed node sets: rigid-body modes are expected (zero frequencies)");
+  return plan;
+}
+
+std::vector<int> readEngineOrders(SceneSection dg, int sectors) {
   std::vector<int> defaultOrders;
   for (int eo = 1; eo <= sectors; ++eo) defaultOrders.push_back(eo);
   const auto engineOrders = dg.getIntList("engine_orders", defaultOrders);
   for (int eo : engineOrders)
     if (eo < 1) throw InputError(dg.where("engine_orders"), "engine orders must be positive, got " + std::to_string(eo));
   dg.rejectUnknownKeys();
-  if (fixedSets.empty())
-    log::warn("modal analysis without fixed node sets: rigid-body modes are expected (zero frequencies)");
+  return engineOrders;
+}
 
+void modalStage(const ModalPlan& plan, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
+                SceneSummary& summary) {
+  const auto& sector = plan.sector;
+  const auto& sweep = plan.sweep;
+  const int sectors = plan.sectors;
   const bool writer = comm->getRank() == 0;
   logPeakMemory("the mesh", comm);
   // Each speed's prestress and modes written as the sweep goes (the prestress is not kept).
@@ -260,8 +268,8 @@ void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors,
   if (writer) cyclic::writeFrequenciesCsv(csv, results);
   summary.written.push_back(csv);
 
-  if (writeMac && results.size() > 1) writeSpeedMac(results, outDir, writer, summary);
-  writeDiagrams(results, sectors, engineOrders, outDir, writer, summary);
+  if (plan.writeMac && results.size() > 1) writeSpeedMac(results, outDir, writer, summary);
+  writeDiagrams(results, sectors, plan.engineOrders, outDir, writer, summary);
 }
 
 }  // namespace cyclone::scenes

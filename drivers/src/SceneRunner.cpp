@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -125,8 +126,9 @@ void forcedResponseStage(SceneSection& scene, const std::string& outDir,
   traceAndWriteForcedResponse(setup, outDir, "frc", comm, summary);
 }
 
-void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
-                 SceneSummary& summary) {
+}  // namespace
+
+analysis::StaticProblem readStaticProblem(SceneSection& scene, const mesh::Mesh& mesh) {
   analysis::StaticProblem problem;
   problem.material = readMaterial(scene.section("material"));
   {
@@ -136,37 +138,45 @@ void staticStage(SceneSection& scene, const mesh::Mesh& mesh, const std::string&
     for (const auto& name : problem.fixedNodeSets)
       if (!mesh.nodeSets.count(name)) mesh.nodeSet(name);  // throws naming the mesh and its sets
   }
-  {
-    auto l = scene.section("loads");
-    problem.speedRpm = l.getDouble("speed_rpm", 0.0);
-    problem.axis = readRotationAxis(l);
-    const auto b = l.getVector3("body_force", {0, 0, 0});
-    problem.bodyForce = Eigen::Vector3d(b[0], b[1], b[2]);
-    auto forces = l.section("nodal_forces");
-    for (const auto& name : forces.sectionNames()) {
-      auto f = forces.section(name);
-      analysis::NodalForce load;
-      load.nodeSet = f.getString("node_set", "");
-      const auto v = f.getVector3("force", {0, 0, 0});
-      load.forcePerNode = Eigen::Vector3d(v[0], v[1], v[2]);
-      f.rejectUnknownKeys();
-      mesh.nodeSet(load.nodeSet);
-      problem.nodalForces.push_back(load);
-    }
-    forces.rejectUnknownKeys();
-    l.rejectUnknownKeys();
-  }
-  {
-    auto s = scene.section("solver");
-    problem.solver.kind = solvers::linearSolverKindFromName(s.getString("type", "direct"), s.where("type"));
-    problem.solver.tolerance = s.getDouble("tolerance", problem.solver.tolerance);
-    problem.solver.maxIterations = s.getInt("max_iterations", problem.solver.maxIterations);
-    s.rejectUnknownKeys();
-  }
+  readStaticLoads(scene.section("loads"), mesh, problem);
+  readStaticSolver(scene.section("solver"), problem);
   if (problem.fixedNodeSets.empty())
     throw InputError(scene.where("constraints/fixed_node_sets"),
                      "a static analysis needs fixed node sets (the model would move as a rigid body)");
+  return problem;
+}
 
+void readStaticSolver(SceneSection s, analysis::StaticProblem& problem) {
+  problem.solver.kind = solvers::linearSolverKindFromName(s.getString("type", "direct"), s.where("type"));
+  problem.solver.tolerance = s.getDouble("tolerance", problem.solver.tolerance);
+  problem.solver.maxIterations = s.getInt("max_iterations", problem.solver.maxIterations);
+  s.rejectUnknownKeys();
+}
+
+void readStaticLoads(SceneSection l, const mesh::Mesh& mesh, analysis::StaticProblem& problem) {
+  problem.speedRpm = l.getDouble("speed_rpm", 0.0);
+  problem.axis = readRotationAxis(l);
+  const auto b = l.getVector3("body_force", {0, 0, 0});
+  problem.bodyForce = Eigen::Vector3d(b[0], b[1], b[2]);
+  auto forces = l.section("nodal_forces");
+  for (const auto& name : forces.sectionNames()) {
+    auto f = forces.section(name);
+    analysis::NodalForce load;
+    load.nodeSet = f.getString("node_set", "");
+    const auto v = f.getVector3("force", {0, 0, 0});
+    load.forcePerNode = Eigen::Vector3d(v[0], v[1], v[2]);
+    f.rejectUnknownKeys();
+    mesh.nodeSet(load.nodeSet);
+    problem.nodalForces.push_back(load);
+  }
+  forces.rejectUnknownKeys();
+  l.rejectUnknownKeys();
+}
+
+namespace {
+
+void staticStage(const analysis::StaticProblem& problem, const mesh::Mesh& mesh, const std::string& outDir,
+                 linalg::CommPtr comm, SceneSummary& summary) {
   {
     std::ostringstream msg;
     msg << "linear static analysis at " << problem.speedRpm << " rpm";
@@ -189,7 +199,7 @@ namespace {
 void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
                const std::string& source, const std::string& sceneDir, const std::string& outDir,
                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
-               SceneSummary& summary);
+               SceneSummary& summary, std::map<std::string, std::string>& unreadNotes);
 }  // namespace
 
 namespace {
@@ -304,6 +314,7 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   const Teuchos::ParameterList& top = root->isSublist("cyclone") ? root->sublist("cyclone") : *root;
   SceneSection scene(top, source, "cyclone");
   SceneSummary summary;
+  std::map<std::string, std::string> unreadNotes;  // per section no analysis read: whether its keys were checked
   const auto analyses = readAnalyses(scene);
   const std::string outDir = overrides.outputDirectory ? *overrides.outputDirectory
                                                        : scene.getString("output_directory", "cyclone_out");
@@ -312,7 +323,7 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   const std::string checkpointDir = outDir + "/checkpoints";
   const auto checkpoints = openCheckpoints(checkpointDir, overrides, comm);
   try {
-    runStages(scene, analyses, overrides, source, sceneDir, outDir, checkpoints, comm, summary);
+    runStages(scene, analyses, overrides, source, sceneDir, outDir, checkpoints, comm, summary, unreadNotes);
   } catch (const InputError& e) {
     // The library names the entry ("excitation: DOF 5 out of range"); the scene file is
     // added where the message does not start with it (issue 20).
@@ -329,8 +340,10 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
   for (const auto& key : scene.unreadKeys()) {
     std::string listed;
     for (const auto& a : analyses) listed += (listed.empty() ? "" : ", ") + a;
-    const std::string warning = "'" + key + "' was not read by the analyses listed (" + listed +
-                                "): its keys were not checked";
+    const auto note = unreadNotes.find(key);
+    const std::string warning = "'" + key + "' was not read by the analyses listed (" + listed + "): " +
+                                (note != unreadNotes.end() ? note->second + ", its values not used"
+                                                           : "its keys were not checked");
     log::warn(warning);
     summary.computed.push_back("warning: " + warning);
   }
@@ -344,10 +357,74 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
 
 namespace {
 
+// The sections of a mesh scene that the analyses listed do not read, read anyway by the
+// reader of the analysis that takes them, on a copy of the scene (so they stay unread for
+// the warning after the run): an unknown key or a bad value in them is refused before any
+// work, as in a section that is read (issue 49: `loads: {speed_rmp: 5000}` in a modal
+// scene, `modal: {modes_per_ndd: 3}` in a static scene ran, exit 0). Where
+// that reader stops at another section the listed analyses do not need (a reduced_model
+// section in a mesh scene without constraints), the section could not be checked: what
+// is returned says so, per section, for the warning.
+std::map<std::string, std::string> checkUnreadSections(const SceneSection& scene, const mesh::Mesh& mesh,
+                                                       int builtInSectors, const std::string& outDir,
+                                                       const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
+  const auto unread = scene.unreadKeys();
+  std::map<std::string, std::string> notes;
+  auto isUnread = [&](const char* key) { return std::find(unread.begin(), unread.end(), key) != unread.end(); };
+  // Runs a reader for the unread `sections`: an error inside one of them is the scene's;
+  // one elsewhere leaves them unchecked.
+  // `alone`: the reader reads no other section, so every error it raises is the section's.
+  auto attempt = [&](std::vector<std::string> sections, bool alone, const std::function<void(SceneSection&)>& read) {
+    std::vector<std::string> mine;
+    for (const auto& name : sections)
+      if (isUnread(name.c_str())) mine.push_back(name);
+    if (mine.empty()) return;
+    SceneSection copy = scene;
+    try {
+      read(copy);
+      for (const auto& name : mine) notes[name] = "its keys were checked";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (alone) throw;
+      for (const auto& name : mine) {
+        const std::string key = scene.where(name);  // "<file>: parameter 'cyclone/<name>'"
+        const std::string path = key.substr(key.find('\'') + 1, key.size() - key.find('\'') - 2);
+        if (what.find("'" + path + "'") != std::string::npos || what.find("'" + path + "/") != std::string::npos) throw;
+      }
+      for (const auto& name : mine) notes[name] = "its keys could not be checked (" + what + ")";
+    }
+  };
+  attempt({"material"}, true, [](SceneSection& c) { readMaterial(c.section("material")); });
+  attempt({"constraints"}, true, [&](SceneSection& c) {
+    auto s = c.section("constraints");
+    for (const auto& name : s.getStringList("fixed_node_sets", {})) mesh.nodeSet(name);
+    s.rejectUnknownKeys();
+  });
+  attempt({"loads"}, true, [&](SceneSection& c) {
+    analysis::StaticProblem problem;
+    readStaticLoads(c.section("loads"), mesh, problem);
+  });
+  attempt({"solver"}, true, [](SceneSection& c) {
+    analysis::StaticProblem problem;
+    readStaticSolver(c.section("solver"), problem);
+  });
+  attempt({"cyclic", "modal", "diagrams"}, false, [&](SceneSection& c) { readModalPlan(c, mesh, builtInSectors, outDir); });
+  if (scene.has("disc_response"))
+    attempt({"reduced_model", "disc_response"}, false,
+            [&](SceneSection& c) { readDiscStagePlan(c, mesh, builtInSectors, true, outDir, checkpoints); });
+  else
+    attempt({"reduced_model"}, false, [&](SceneSection& c) {
+      auto r = c.section("reduced_model");
+      auto d = c.section("disc_response");
+      readDiscPlan(c, r, d, mesh, builtInSectors, false, outDir, false);
+    });
+  return notes;
+}
+
 void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
                const std::string& source, const std::string& sceneDir, const std::string& outDir,
                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
-               SceneSummary& summary) {
+               SceneSummary& summary, std::map<std::string, std::string>& unreadNotes) {
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   if (wants("forced_response")) {
     // Matrix-defined systems need no mesh.
@@ -374,19 +451,28 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
                                       "): nothing holds them, so every solve would be singular; remove them");
   }
   summary.stages.push_back({"mesh", stage.seconds(), "element Jacobians checked positive at every integration point"});
-  if (wants("static")) {
+  // Every stage's part of the scene is read and checked before the first of them runs: a
+  // bad key in disc_response must not wait for the modes (issue 49).
+  std::optional<analysis::StaticProblem> staticProblem;
+  std::optional<ModalPlan> modalPlan;
+  std::optional<DiscStagePlan> discPlan;
+  if (wants("static")) staticProblem = readStaticProblem(scene, mesh);
+  if (wants("modal")) modalPlan = readModalPlan(scene, mesh, builtInSectors, outDir);
+  if (wants("disc_response") || wants("reduced_model"))
+    discPlan.emplace(readDiscStagePlan(scene, mesh, builtInSectors, wants("disc_response"), outDir, checkpoints));
+  unreadNotes = checkUnreadSections(scene, mesh, builtInSectors, outDir, checkpoints);
+  if (staticProblem) {
     stage.restart();
-    staticStage(scene, mesh, outDir, comm, summary);
+    staticStage(*staticProblem, mesh, outDir, comm, summary);
     summary.stages.push_back({"static (linear, centrifugal)", stage.seconds(), summary.computed.back()});
   }
-  if (wants("modal")) {
+  if (modalPlan) {
     stage.restart();
-    modalStage(scene, mesh, builtInSectors, outDir, comm, summary);
+    modalStage(*modalPlan, mesh, outDir, comm, summary);
     summary.stages.push_back({"prestress and cyclic modes", stage.seconds(),
                               "every mode's backward error ||K x - l M x|| / ((||K||_F + |l| ||M||_F) ||x||) below 1e-6, its value from a Rayleigh-Ritz on the solver's vectors matching the solver's value"});
   }
-  if (wants("disc_response") || wants("reduced_model"))
-    discStages(scene, mesh, builtInSectors, wants("disc_response"), outDir, checkpoints, comm, summary);
+  if (discPlan) discStages(*discPlan, mesh, outDir, comm, summary);
   if (comm->getRank() == 0) writeRunReport(outDir, source, summary);
   summary.written.push_back(outDir + "/report.md");
 }

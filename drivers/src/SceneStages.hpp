@@ -2,12 +2,17 @@
 // What the scene runner's stages share (private to the scenes library).
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/cyclic/CyclicSector.hpp"
+#include "cyclone/cyclic/ModalSweep.hpp"
+#include "cyclone/scenes/SceneSection.hpp"
 #include "cyclone/fatigue/GoodmanHaigh.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
@@ -164,11 +169,31 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
 /// "peak memory after <stage>: ..." for the log (rank 0's, and the sum over the ranks).
 void logPeakMemory(const std::string& stage, const linalg::CommPtr& comm);
 
+/// What the modal stage takes from the scene (material, constraints, cyclic, modal,
+/// diagrams), read and checked before any work: the sector's side faces paired.
+struct ModalPlan {
+  int sectors = 0;
+  cyclic::CyclicSector sector;
+  cyclic::ModalSweepProblem sweep;
+  std::vector<int> engineOrders;  ///< diagrams/engine_orders
+  bool writeMac = false;
+};
+ModalPlan readModalPlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir);
+/// diagrams/engine_orders (default 1..sectors).
+std::vector<int> readEngineOrders(SceneSection diagrams, int sectors);
+
 /// The modal stage: the prestressed modes of every nodal diameter at each speed of
 /// modal/speeds_rpm, their Exodus files, frequencies.csv, MAC between speeds, and the
 /// Campbell and SAFE diagrams.
-void modalStage(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, const std::string& outDir,
-                linalg::CommPtr comm, SceneSummary& summary);
+void modalStage(const ModalPlan& plan, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
+                SceneSummary& summary);
+
+/// What the static stage takes from the scene (material, constraints, loads, solver).
+analysis::StaticProblem readStaticProblem(SceneSection& scene, const mesh::Mesh& mesh);
+/// The solver section (the static solve's linear solver).
+void readStaticSolver(SceneSection solver, analysis::StaticProblem& problem);
+/// The loads section: speed, axis, body force and nodal forces (their node sets checked).
+void readStaticLoads(SceneSection loads, const mesh::Mesh& mesh, analysis::StaticProblem& problem);
 
 // What a disc scene asks for, read and checked before any FE work.
 struct DiscPlan {
@@ -180,22 +205,42 @@ struct DiscPlan {
   double harmonicsTolerance = 0;  ///< harmonics: auto's target (0: harmonics given)
   PeakStressSpec peakStress;
   std::vector<PeakStudySpec> peakStudies;
+  bool rebuildCache = false;  ///< reduced_model/cache: rebuild (the cache emptied when the stage starts)
 };
 
 /// Reads and checks a disc scene's reduced_model and disc_response sections (r, d).
+/// Without a forced response, reduced_model/nodal_diameters is required unless
+/// `requireNodalDiameters` is false (a section checked that no analysis reads).
 DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
-                      int builtInSectors, bool forcedResponse, const std::string& outDir, linalg::CommPtr comm);
+                      int builtInSectors, bool forcedResponse, const std::string& outDir,
+                      bool requireNodalDiameters = true);
 /// disc_response's sweep keys (family, range, stability, continuation) with the check's top H.
 disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
                                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
 /// disc_response/hysteresis_contacts: the contact pairs whose loops are written.
 std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec);
 
+/// disc_response/studies' parameters (one frequency curve per listed value).
+inline constexpr const char* kStudyNames[] = {"preload", "mu", "contact_stiffness", "force",
+                                              "loss_factor", "harmonics", "modes", "clearance"};
+
+/// Everything the disc chain's stages take from the scene, read and checked before any
+/// work (the keys of reduced_model, disc_response and its studies; node sets, ranges).
+struct DiscStagePlan {
+  DiscPlan plan;
+  bool forcedResponse = false;
+  std::optional<disc::DiscSweepOptions> sweep;  ///< with a forced response
+  std::vector<int> hysteresisContacts;
+  SceneSection studies;  ///< disc_response/studies: its values are read with their curves
+};
+DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
+                                const std::string& outDir,
+                                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
+
 /// The disc chain's stages: reduced models per nodal diameter (cached), then the
 /// forced response with friction at the shroud and its parameter studies.
-/// Its curves save their traces in `checkpoints` as they go (none: not saved).
-void discStages(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
-                const std::string& outDir, const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints,
-                linalg::CommPtr comm, SceneSummary& summary);
+/// Its curves save their traces in the plan's checkpoints as they go (none: not saved).
+void discStages(const DiscStagePlan& stages, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
+                SceneSummary& summary);
 
 }  // namespace cyclone::scenes
