@@ -157,8 +157,7 @@ void writeNodeTable(const std::string& path, const mesh::Mesh& mesh, const fatig
         << c.alternatingVonMises << "," << c.alternatingPrincipal << "," << c.maxVonMises << ","
         << map.safetyFactor[n] << "\n";
   }
-  csv.close();
-  if (!csv) throw Error("cannot write " + path);
+  file.check(csv);
   file.commit();
 }
 

@@ -57,8 +57,7 @@ void writePeakStudy(const std::string& name, const std::string& unit, const disc
       if (i < following.forceBeyond.size() && following.forceBeyond[i] >= 0) out << following.forceBeyond[i];
       out << "\n";
     }
-    out.close();
-    if (!out) throw Error("cannot write " + file.finalPath());
+    file.check(out);
     file.commit();
   }
   // The clearance on a linear axis (zero and interference are values of it), the others in log.

@@ -70,6 +70,13 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
   spec.modes = r.getInt("modes", spec.modes);
+  // The eigen-solver's space, about 3 modes vectors, must fit in the sector's DOFs: 10000
+  // reached Anasazi and came back as its "Num Blocks must be strictly positive" (issue 49).
+  if (spec.modes < 1) throw InputError(r.where("modes"), "must be at least 1, got " + std::to_string(spec.modes));
+  if (const long nodes = long(mesh.numNodes()); spec.modes > nodes / 2)
+    throw InputError(r.where("modes"), std::to_string(spec.modes) + " is more than half the sector's " +
+                                           std::to_string(nodes) + " nodes: the eigen-solver's space of about 3 x "
+                                           "modes vectors must fit in its 3 x nodes DOFs");
   spec.omega0 = r.getDouble("omega0", spec.omega0);
   spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
   if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");

@@ -78,8 +78,7 @@ std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const std::v
     csv << e << "," << omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
     energies.push_back(energy);
   }
-  csv.close();
-  if (!csv) throw Error("cannot write " + path);
+  file.check(csv);
   file.commit();
   return energies;
 }
@@ -324,8 +323,7 @@ int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, 
     AtomicFile file(outDir + "/study_" + name + ".csv");
     std::ofstream out(file.tempPath());
     out << table.str();
-    out.close();
-    if (!out) throw Error("cannot write " + outDir + "/study_" + name + ".csv");
+    file.check(out);
     file.commit();
   }
   summary.written.push_back(outDir + "/study_" + name + ".svg");

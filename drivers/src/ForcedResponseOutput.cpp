@@ -21,7 +21,9 @@ std::string curveLine(const std::string& name, const response::ForcedResponseRes
     if (result.stabilityRechecked)
       line << ", " << result.undeterminedPoints() << " undetermined (verdict changes with 2x samples)";
   } else {
-    line << "stability not computed";
+    // Why, where the library said (stabilityNote starts "stability not computed: ...").
+    line << (result.stabilityNote.rfind("stability not computed", 0) == 0 ? result.stabilityNote
+                                                                           : std::string("stability not computed"));
   }
   line << ") in " << result.seconds << " s, " << result.branch.stopReason;
   for (const auto& [kind, count] : result.flagCounts()) line << "; " << count << " " << kind;

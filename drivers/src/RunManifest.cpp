@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <chrono>
 #include <ctime>
@@ -160,12 +161,23 @@ void RunManifest::fail(const std::string& reason) {
 }
 
 void RunManifest::write(const std::string& status, const std::string& extra) {
-  AtomicFile file(dir_ + "/run_manifest.txt");
-  std::ofstream out(file.tempPath());
-  out << "status: " << status << "\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_ << "\n"
-      << extra;
-  out.close();
-  if (!out) throw Error("cannot write " + dir_ + "/run_manifest.txt");
+  const std::string path = dir_ + "/run_manifest.txt";
+  std::ostringstream text;
+  text << "status: " << status << "\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_ << "\n"
+       << extra;
+  const std::string bytes = text.str();
+  AtomicFile file(path);
+  try {
+    file.write(bytes.data(), bytes.size());
+  } catch (const Error&) {
+    // A full disk has no room for a second copy: the manifest is written over in place
+    // (its truncation frees the old one's space), so a failed run still says so. Not
+    // atomic, but a reader meets at worst a manifest cut short, never a false status.
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    const bool written = f && std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    if (!(f && std::fclose(f) == 0 && written)) throw;
+    return;
+  }
   file.commit();
 }
 

@@ -148,8 +148,7 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
   AtomicFile file(outDir + "/report.md");
   std::ofstream out(file.tempPath());
   out << r.str();
-  out.close();
-  if (!out) throw Error("cannot write " + outDir + "/report.md");
+  file.check(out);
   file.commit();
 }
 

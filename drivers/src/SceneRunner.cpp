@@ -302,6 +302,21 @@ std::shared_ptr<io::TraceCheckpointDirectory> openCheckpoints(const std::string&
 
 }  // namespace
 
+namespace {
+
+// The manifest marked failed with the run's error; where even that cannot be written (a
+// full disk), said in the log: the error that stopped the run is the one reported.
+void markFailed(RunManifest* manifest, const std::string& reason) {
+  if (!manifest) return;
+  try {
+    manifest->fail(reason);
+  } catch (const std::exception& e) {
+    log::warn(std::string("the run's manifest could not be marked failed: ") + e.what());
+  }
+}
+
+}  // namespace
+
 SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
                           linalg::CommPtr comm) {
   const auto root = parseSceneYaml(yaml, source);
@@ -328,11 +343,11 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     // The library names the entry ("excitation: DOF 5 out of range"); the scene file is
     // added where the message does not start with it (issue 20).
     const std::string what = e.what();
-    if (manifest) manifest->fail(what);
+    markFailed(manifest.get(), what);
     if (what.rfind(source, 0) == 0) throw;
     throw InputError(source, what);
   } catch (const std::exception& e) {
-    if (manifest) manifest->fail(e.what());
+    markFailed(manifest.get(), e.what());
     throw;
   }
   // A section of this kind of scene that these analyses did not read (e.g. modal in a
@@ -480,6 +495,8 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
 }  // namespace
 
 SceneSummary runSceneFile(const std::string& path, const SceneOverrides& overrides, linalg::CommPtr comm) {
+  if (std::filesystem::is_directory(path))
+    throw InputError(path, "is a directory, not a scene (a YAML file whose top-level key is 'cyclone')");
   std::ifstream in(path);
   if (!in) throw InputError(path, "cannot open the scene file");
   std::stringstream text;

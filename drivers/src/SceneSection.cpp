@@ -70,19 +70,67 @@ void checkSceneLimits(const std::string& yaml, const std::string& source) {
     else if (c == '}' || c == ']') --depth;
   }
 }
+
+// What Teuchos' YAML reader does not take, made plain before it reads the text (issue 49:
+// each gave a parser state number): a UTF-8 byte-order mark (an editor's, valid YAML) is
+// dropped; a block list whose dashes stand at its key's own indentation (valid YAML, a
+// common style) is indented under its key; anchors and aliases (&name, *name) are refused
+// naming the line. `[]` becomes kEmptyList.
+std::string plainSceneText(const std::string& yaml, const std::string& source) {
+  static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\]([ \t]*(#.*)?)$)");
+  static const std::regex valuelessKey(R"(^[^#\s-][^:#]*:[ \t]*(#.*)?$)");
+  static const std::regex anchorOrAlias(R"((^|[:\[,{-])[ \t]*[&*][A-Za-z0-9_.-]+)");
+  const bool bom = yaml.rfind("\xEF\xBB\xBF", 0) == 0;
+  std::istringstream in(bom ? yaml.substr(3) : yaml);
+  std::ostringstream text;
+  std::string line;
+  int number = 0, keyIndent = -1, listIndent = -1;
+  while (std::getline(in, line)) {
+    ++number;
+    const auto first = line.find_first_not_of(' ');
+    const bool blank = first == std::string::npos || line[first] == '#';
+    const int indent = blank ? -1 : int(first);
+    const std::string content = blank ? std::string() : line.substr(first);
+    if (!blank) {
+      std::string code = content;  // without a trailing comment or quoted text
+      for (std::size_t i = 0; i < code.size(); ++i)
+        if (code[i] == '"' || code[i] == '\'') {
+          const auto end = code.find(code[i], i + 1);
+          code.erase(i, end == std::string::npos ? std::string::npos : end - i + 1);
+          --i;
+        } else if (code[i] == '#') {
+          code.erase(i);
+          break;
+        }
+      if (std::regex_search(code, anchorOrAlias))
+        throw InputError(source + ": line " + std::to_string(number),
+                         "YAML anchors and aliases (&name, *name) are not read by the scene reader: write the "
+                         "value out where it is used");
+      const bool dash = content.rfind("- ", 0) == 0 || content == "-";
+      if (listIndent >= 0 && (indent < listIndent || (indent == listIndent && !dash))) listIndent = -1;
+      if (listIndent < 0 && dash && indent == keyIndent) listIndent = indent;
+      keyIndent = std::regex_search(content, valuelessKey) ? indent : -1;
+    }
+    if (listIndent >= 0 && !blank) line.insert(0, "  ");
+    text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList + "$2") << "\n";
+  }
+  return text.str();
+}
+
 }  // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> parseSceneYaml(const std::string& yaml, const std::string& source) {
   checkSceneLimits(yaml, source);
-  static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\]([ \t]*(#.*)?)$)");
-  std::istringstream in(yaml);
-  std::ostringstream text;
-  std::string line;
-  while (std::getline(in, line)) text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList + "$2") << "\n";
+  const std::string text = plainSceneText(yaml, source);
   try {
-    return Teuchos::getParametersFromYamlString(text.str());
+    return Teuchos::getParametersFromYamlString(text);
   } catch (const std::exception& e) {
-    throw InputError(source, std::string("not a valid YAML scene: ") + e.what());
+    // The reader's first lines say where; the rest is its parser's state.
+    std::istringstream what(e.what());
+    std::string line, shown;
+    for (int i = 0; i < 4 && std::getline(what, line); ++i) shown += (i ? "\n" : "") + line;
+    throw InputError(source, "not a valid YAML scene (two-space indentation and flow lists [a, b] are safest): " +
+                                 shown);
   }
 }
 

@@ -166,7 +166,9 @@ TEST(HillStability, StructurallyDampedDuffingReceptanceMiddleBranchIsUnstable) {
                 fl.exponents(0).real(), fl.exponents(0).imag(), int(fl.exponents.size()),
                 fl.stable ? "stable" : "unstable");
     stable.push_back(fl.stable);
-    if (!fl.stable) EXPECT_NEAR(fl.exponents(0).imag(), 0.0, 1e-9);
+    if (!fl.stable) {
+      EXPECT_NEAR(fl.exponents(0).imag(), 0.0, 1e-9);
+    }
   }
   EXPECT_TRUE(stable[0]);
   EXPECT_FALSE(stable[1]);

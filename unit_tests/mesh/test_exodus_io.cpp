@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iterator>
 #include <fstream>
+#include <limits>
 #include <functional>
 
 #include "MeshTestSupport.hpp"
@@ -257,6 +258,18 @@ TEST(ExodusIO, ReaderChecksGeometry) {
   const std::string path = dir.file("inverted.exo");
   writeExodus(path, mesh);  // the writer checks structure only
   expectInputError([&] { readExodus(path); }, {"inverted.exo", "element 42 (block 'hub')", "inverted or degenerate"});
+}
+
+// A coordinate that is not a number is named with its node, not as the Jacobian
+// determinant it makes (issue 49: "minimum Jacobian determinant inf").
+TEST(ExodusIO, ReaderNamesACoordinateThatIsNotANumber) {
+  TempDirectory dir;
+  Mesh mesh = cubeWithTet();
+  mesh.coords[2][1] = std::numeric_limits<double>::quiet_NaN();
+  const std::string path = dir.file("nan.exo");
+  writeExodus(path, mesh);
+  expectInputError([&] { readExodus(path); },
+                   {"nan.exo", "node " + std::to_string(mesh.nodeIds[2]), "coordinate y = nan", "finite number"});
 }
 
 }  // namespace

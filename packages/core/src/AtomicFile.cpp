@@ -1,7 +1,10 @@
 #include "cyclone/core/AtomicFile.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 #include "cyclone/core/Error.hpp"
@@ -26,6 +29,27 @@ void AtomicFile::commit() {
   std::filesystem::rename(temp_, final_, ec);
   if (ec) throw Error("cannot rename " + temp_ + " to " + final_ + ": " + ec.message());
   committed_ = true;
+}
+
+void AtomicFile::fail() const {
+  const int error = errno;
+  throw Error("cannot write " + final_ + ": " + (error ? std::strerror(error) : "the write failed"));
+}
+
+void AtomicFile::check(std::ofstream& out) const {
+  if (out.is_open()) out.close();
+  if (!out) fail();
+}
+
+void AtomicFile::write(const char* bytes, std::size_t size) const {
+  std::FILE* f = std::fopen(temp_.c_str(), "wb");
+  if (!f) fail();
+  const bool written = std::fwrite(bytes, 1, size, f) == size;
+  const int writeError = errno;
+  // fclose flushes what the library still buffers: on a full disk that is where it fails.
+  const bool closed = std::fclose(f) == 0;
+  if (!written) errno = writeError;
+  if (!written || !closed) fail();
 }
 
 }  // namespace cyclone

@@ -547,15 +547,17 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
 
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {
   AtomicFile file(path);
-  std::FILE* f = std::fopen(file.tempPath().c_str(), "w");
-  if (!f) throw Error("cannot write " + path);
-  std::fprintf(f, "rpm,nd,mode,freq_hz\n");
+  std::ostringstream text;
+  text << "rpm,nd,mode,freq_hz\n";
+  char line[96];
   for (const auto& speed : speeds)
     for (const auto& hm : speed.nodalDiameters)
-      for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i)
-        std::fprintf(f, "%.10g,%d,%zu,%.12g\n", speed.rpm, hm.nodalDiameter, i + 1, hm.frequenciesHz[i]);
-  const bool ok = std::fclose(f) == 0;
-  if (!ok) throw Error("cannot write " + path);
+      for (std::size_t i = 0; i < hm.frequenciesHz.size(); ++i) {
+        std::snprintf(line, sizeof line, "%.10g,%d,%zu,%.12g\n", speed.rpm, hm.nodalDiameter, i + 1, hm.frequenciesHz[i]);
+        text << line;
+      }
+  const std::string bytes = text.str();
+  file.write(bytes.data(), bytes.size());
   file.commit();
 }
 

@@ -118,8 +118,7 @@ void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck&
   out << "freq_hz,reduced_abs,full_abs,relative_error\n";
   for (std::size_t i = 0; i < c.hz.size(); ++i)
     out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
-  out.close();
-  if (!out) throw Error("cannot write " + path);
+  file.check(out);
   file.commit();
 }
 

@@ -9,6 +9,15 @@
 
 namespace cyclone::hbm {
 
+namespace {
+constexpr double kSingularMass = 1e-14;  // reciprocal condition number of D2 below which it is singular
+}  // namespace
+
+bool hillMassInvertible(const HarmonicBalanceSystem& sys) {
+  if (sys.isReceptance()) return true;
+  return sys.coefficientOperator(sys.M(), sys.cyclic().Mnext).partialPivLu().rcond() > kSingularMass;
+}
+
 FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega,
                                const HillOptions& options) {
   for (const auto& c : sys.elements())
@@ -29,7 +38,7 @@ FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::Ve
   const Eigen::MatrixXd D1 = 2 * D2 * wD + sys.coefficientOperator(sys.C(), cyc.Cnext);
   // Companion form: [0 I; -D2^-1 J, -D2^-1 D1].
   const auto lu = D2.partialPivLu();
-  if (!(lu.rcond() > 1e-14)) throw InputError("stability", "Hill's method needs an invertible mass matrix");
+  if (!(lu.rcond() > kSingularMass)) throw InputError("stability", "Hill's method needs an invertible mass matrix");
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * m, 2 * m);
   A.block(0, m, m, m).setIdentity();
   A.block(m, 0, m, m) = -lu.solve(J);

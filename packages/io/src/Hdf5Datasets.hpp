@@ -5,7 +5,32 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/core/AtomicFile.hpp"
+
 namespace cyclone::io::hdf5 {
+
+// A file to be written, built in memory (HDF5's core driver, no backing store) and saved
+// whole by saveImage. HDF5 writing to disk itself met a full disk in its close, which
+// fails in a destructor: the file was renamed into place cut short, and HDF5, left with
+// a file it could not close, crashed at the program's exit (issue 49). In memory nothing
+// fails but the one checked write of the image.
+inline H5::H5File inMemoryFile(const AtomicFile& target) {
+  H5::FileAccPropList access;
+  access.setCore(1 << 16, false);
+  return H5::H5File(target.tempPath(), H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access);
+}
+
+// The in-memory file's bytes written to the target's temporary (AtomicFile::write: a full
+// disk is an Error naming the final path and the reason). The caller commits.
+inline void saveImage(H5::H5File& file, const AtomicFile& target) {
+  file.flush(H5F_SCOPE_GLOBAL);
+  const ssize_t size = H5Fget_file_image(file.getId(), nullptr, 0);
+  if (size < 0) throw H5::FileIException("H5Fget_file_image", "the file's size in memory is not known");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(file.getId(), image.data(), image.size()) != size)
+    throw H5::FileIException("H5Fget_file_image", "the file's image could not be copied");
+  target.write(image.data(), image.size());
+}
 
 template <class T>
 void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, const H5::PredType& type) {

@@ -171,7 +171,7 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
   AtomicFile file(path);
   try {
     H5::Exception::dontPrint();
-    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    H5::H5File h5 = hdf5::inMemoryFile(file);
     if (modal(rec.kind)) {
       writeVector(h5, "eigenvalues", rec.modes.eigenvalues, H5::PredType::NATIVE_DOUBLE);
       writeMatrix(h5, "shapes", rec.modes.shapes);
@@ -205,6 +205,7 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
     writeDoubleAttribute(h5, "shift", rec.staticCompliance.shift);
     writeDoubleAttribute(h5, "rpm", rec.rpm);
     writeStringAttribute(h5, "content_digest", contentDigest(rec));  // last: a file cut short has none
+    hdf5::saveImage(h5, file);
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + path + ": " + e.getDetailMsg());
   }

@@ -18,7 +18,7 @@ void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
   AtomicFile file(path);
   try {
     H5::Exception::dontPrint();
-    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    H5::H5File h5 = hdf5::inMemoryFile(file);
     writeVector(h5, "omega", c.omega, H5::PredType::NATIVE_DOUBLE);
     writeVector(h5, "harmonics", c.harmonics, H5::PredType::NATIVE_INT);
     writeVector(h5, "stable", c.stable, H5::PredType::NATIVE_INT);
@@ -35,6 +35,7 @@ void writeResponseCurveHdf5(const std::string& path, const ResponseCurve& c) {
     writeIntAttribute(h5, "num_dofs", c.numDofs);
     writeIntAttribute(h5, "num_coefficients", c.numCoefficients);
     writeIntAttribute(h5, "samples", c.samples);
+    hdf5::saveImage(h5, file);
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + path + ": " + e.getDetailMsg());
   }

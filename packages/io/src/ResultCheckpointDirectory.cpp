@@ -31,9 +31,10 @@ void ResultCheckpointDirectory::save(const std::string& key, const std::vector<d
   AtomicFile file(final);
   try {
     H5::Exception::dontPrint();
-    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    H5::H5File h5 = hdf5::inMemoryFile(file);
     hdf5::writeVector(h5, "values", values, H5::PredType::NATIVE_DOUBLE);
     hdf5::writeStringAttribute(h5, "content_digest", valuesDigest(key, values));  // last
+    hdf5::saveImage(h5, file);
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + final + ": " + e.getDetailMsg());
   }

@@ -86,7 +86,7 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
   const std::size_t P = b.points.size(), n = P > 0 ? std::size_t(b.points.front().x.size()) : 0;
   try {
     H5::Exception::dontPrint();
-    H5::H5File h5(file.tempPath(), H5F_ACC_TRUNC);
+    H5::H5File h5 = hdf5::inMemoryFile(file);
     std::vector<double> parameter;
     std::vector<Eigen::VectorXd> x;
     for (const auto& pt : b.points) parameter.push_back(pt.parameter), x.push_back(pt.x);
@@ -140,6 +140,7 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
       writeVector(h5, "held_steps", s.heldSteps, H5::PredType::NATIVE_INT);
     }
     writeStringAttribute(h5, "content_digest", stateDigest(key, s));  // last: a file cut short has none
+    hdf5::saveImage(h5, file);
   } catch (const H5::Exception& e) {
     throw Error("cannot write " + final + ": " + e.getDetailMsg());
   }

@@ -1,6 +1,7 @@
 #include "cyclone/mesh/MeshGeometryCheck.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -13,6 +14,16 @@ void checkElementGeometry(const Mesh& mesh) {
 }
 
 void checkElementGeometry(const Mesh& mesh, const std::function<std::string(int block, Index element)>& where) {
+  // A coordinate that is not a number (NaN, inf in the file) is named as such, not as
+  // the Jacobian determinant it makes (issue 49: "minimum Jacobian determinant inf").
+  for (Index node = 0; node < Index(mesh.coords.size()); ++node)
+    for (int d = 0; d < 3; ++d)
+      if (!std::isfinite(mesh.coords[node][d])) {
+        std::ostringstream msg;
+        msg << "node " << (mesh.nodeIds.empty() ? node + 1 : mesh.nodeIds[node]) << " has the coordinate "
+            << "xyz"[d] << " = " << mesh.coords[node][d] << ": every coordinate must be a finite number";
+        throw InputError(mesh.source, msg.str());
+      }
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const auto& block = mesh.blocks[b];
     const int n = nodesPerElement(block.type);

@@ -38,7 +38,7 @@ void writeAtomically(const std::string& path, Write&& write) {
   {
     std::ofstream out(file.tempPath());
     write(out);
-    if (!out) throw Error("cannot write " + path);
+    file.check(out);
   }
   file.commit();
 }

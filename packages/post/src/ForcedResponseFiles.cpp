@@ -55,8 +55,7 @@ void writeHarmonicsLevelsCsv(const response::HarmonicsCheck& check, const std::s
     }
     out << "," << l.peak.solves << "," << l.seconds << "," << csvCell(note) << "\n";
   }
-  out.close();
-  if (!out) throw Error("cannot write " + path);
+  file.check(out);
   file.commit();
 }
 
@@ -99,8 +98,7 @@ void writeCurveCsv(const response::ForcedResponseSetup& setup, const response::F
     }
     csv << "," << result.flags[i] << "," << result.segment[i] << "\n";
   }
-  csv.close();
-  if (!csv) throw Error("cannot write " + path);
+  file.check(csv);
   file.commit();
 }
 

@@ -42,7 +42,7 @@ void writeMacCsv(const std::string& path, const Eigen::MatrixXd& mac) {
       for (Eigen::Index j = 0; j < mac.cols(); ++j) out << "," << mac(i, j);
       out << "\n";
     }
-    if (!out) throw Error("cannot write " + path);
+    file.check(out);
   }
   file.commit();
 }
@@ -66,7 +66,7 @@ void writeMacSvg(const std::string& path, const Eigen::MatrixXd& mac, const std:
   {
     std::ofstream out(file.tempPath());
     out << o.str();
-    if (!out) throw Error("cannot write " + path);
+    file.check(out);
   }
   file.commit();
 }

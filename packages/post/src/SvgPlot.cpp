@@ -165,7 +165,7 @@ void SvgPlot::write(const std::string& path) const {
   {
     std::ofstream out(file.tempPath());
     out << render();
-    if (!out) throw Error("cannot write " + path);
+    file.check(out);
   }
   file.commit();
 }

@@ -83,6 +83,11 @@ bool stabilityApplies(const ForcedResponseSetup& setup, std::string& note) {
     log::info(note);
     return true;
   }
+  if (!hbm::hillMassInvertible(hb)) {  // asked for, refused before the trace (solveForcedResponse)
+    note = "stability not computed: the mass matrix is singular (Hill's method needs it invertible)";
+    log::warn(note);
+    return false;
+  }
   if (!asked && 2 * hb.numUnknowns() > 1200) {
     note = "stability not computed: Hill's eigenproblem has " + std::to_string(2 * hb.numUnknowns()) +
            " unknowns per point (ask for stability to compute it anyway)";
@@ -136,6 +141,16 @@ void computeStability(const ForcedResponseSetup& setup, ForcedResponseResult& re
   std::ostringstream msg;
   msg << "stability: " << result.branch.points.size() << " points by Hill's method in " << timer.seconds() << " s";
   log::info(msg.str());
+}
+
+// Whether Hill's method would refuse the system's mass matrix, known before the trace
+// (HillStability.hpp). Velocity-dependent elements stop it first and are said after the
+// trace (the curve is still of use).
+bool massSingularForHill(const ForcedResponseSetup& setup) {
+  const auto& hb = *setup.system;
+  for (const auto& c : hb.elements())
+    if (c.element->usesVelocity()) return false;
+  return !hbm::hillMassInvertible(hb);
 }
 
 // Flags per segment: the last point of one sweep and the first of the next are no path.
@@ -361,6 +376,12 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
                               setup.parameter == ForcedResponseSetup::Parameter::Rebuilt;
   checkSolverSize(*setup.system, setup.harmonicsKey,
                   formsTheMatrix ? continuation::ContinuationOptions::LinearSolver::Dense : setup.continuation.linearSolver);
+  // Stability asked for on a system whose mass matrix Hill's method cannot invert: refused
+  // before the trace, not after it (issue 49).
+  if (setup.stability == Stability::Always && massSingularForHill(setup))
+    throw InputError("stability", "Hill's method needs an invertible mass matrix, and this system's is singular "
+                                  "(its reciprocal condition number is below 1e-14): leave stability to auto or "
+                                  "false, or give every DOF a mass");
   const StartingPoint start = findStartingPoint(setup);
   checkResponseScale(setup, start.x);
   if (start.x.size() > 0) {

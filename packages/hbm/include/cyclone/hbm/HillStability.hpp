@@ -40,6 +40,12 @@ struct HillOptions {
   double coverage = 1.0;
 };
 
+/// Whether a matrix system's mass operator over the harmonics (D2, with the next sector's
+/// coupling of a cyclic system) can be inverted, as Hill's method needs: its reciprocal
+/// condition number above 1e-14. Known before any trace (it does not depend on the
+/// solution). True for a receptance system (its modal realization has M = I).
+bool hillMassInvertible(const HarmonicBalanceSystem& system);
+
 /// Throws InputError for velocity-dependent elements (not supported yet), singular M, or a
 /// receptance without a modal realization.
 FloquetExponents hillStability(const HarmonicBalanceSystem& system, const Eigen::VectorXd& X, double omega,
