@@ -241,11 +241,16 @@ private:
     t.x *= s / norm, t.p *= s / norm;
     return true;
   }
+  // The bordering row is `along` made unit: a chord of a step near the smallest (1e-9 in
+  // the metric, where kinks hold the steps down) as the row made the bordered matrix
+  // singular to its rounding, and every step there failed for want of a tangent (the
+  // hammering disc's walls at H >= 6, docs/solvers.md).
   bool freshTangent(const Point& z, const Point& along, Point& t) {
     Eigen::VectorXd F;
     Bordered A;
-    if (!residual(z, F) || !jacobian(z, F, A)) return false;
-    A.setBottom(along.x.cwiseProduct(metric_.w), along.p / (metric_.sp * metric_.sp));
+    const double length = metric_.norm(along);
+    if (!(length > 0) || !residual(z, F) || !jacobian(z, F, A)) return false;
+    A.setBottom(along.x.cwiseProduct(metric_.w) / length, along.p / (metric_.sp * metric_.sp * length));
     BorderedFactors lu;
     factor(A, lu);
     return tangentFrom(lu, along, t);
@@ -671,6 +676,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   z = {guess, o_.from};
   const auto start = solveNewton(problem_, z.x, o_.from, o_.tolerance, 100, nullptr, o_.linearSolver);
   if (!start.converged) {
+    branch_.end = BranchEnd::NoStart;
     branch_.stopReason = noConvergedStart(start, o_.tolerance);
     return false;
   }
@@ -679,6 +685,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   if (!(metric_.sp > 0)) {
     append(z);
     branch_.finished = true;
+    branch_.end = BranchEnd::SinglePoint;
     branch_.stopReason = "the range is a single point";
     return false;
   }
@@ -693,6 +700,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   Eigen::VectorXd F;
   Bordered A;
   if (!residual(z, F) || !jacobian(z, F, A)) {
+    branch_.end = BranchEnd::StartFailed;
     branch_.stopReason = "the residual or Jacobian failed at the start of the range";
     return false;
   }
@@ -703,6 +711,7 @@ bool Tracer::start(const Eigen::VectorXd& guess, Point& z, Point& t) {
   rhs(n_) = dir;
   const Eigen::VectorXd v = solve(lu, rhs);
   if (!v.allFinite()) {
+    branch_.end = BranchEnd::StartFailed;
     branch_.stopReason = "singular Jacobian at the start of the range";
     return false;
   }
@@ -787,6 +796,7 @@ bool Tracer::passWall(Point& z, Point& t, double& ds) {
   why << "no step passes p = " << z.p << ": the arclength correctors (plane and sphere) failed down to the "
       << "smallest step " << o_.minStep << ", and so did Newton at a fixed parameter beyond it (the branch so "
       << "far is kept)";
+  branch_.end = BranchEnd::Wall;
   branch_.stopReason = why.str();
   return false;
 }
@@ -838,6 +848,7 @@ bool Tracer::leftTheRange(const Point& previous, const Point& z, const Point& t)
   if ((z.p - o_.to) * dir >= 0) {
     dropLast();
     branch_.finished = true;
+    branch_.end = BranchEnd::RangeEnd;
     branch_.stopReason = "end of the parameter range reached";
     if (!endAt(o_.to, previous, z)) {
       append(z, t);
@@ -856,6 +867,7 @@ bool Tracer::leftTheRange(const Point& previous, const Point& z, const Point& t)
   std::ostringstream why;
   why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << o_.from
       << "): " << reached << " .. " << o_.to << " not traced (the branch so far is kept)";
+  branch_.end = BranchEnd::ReturnedToStart;
   branch_.stopReason = why.str();
   return true;
 }
@@ -890,6 +902,7 @@ double Tracer::stepToMark(const Point& z, const Point& along, double ds) const {
 
 bool Tracer::atTheEnd(const Point& z, const Point& t, double ds) {
   if (int(branch_.points.size()) >= o_.maxSteps) {
+    branch_.end = BranchEnd::PointBudget;
     branch_.stopReason = "the largest number of points (max_points " + std::to_string(o_.maxSteps) +
                          ") was reached at p = " + std::to_string(z.p) + " (the branch so far is kept)";
     return true;
@@ -898,6 +911,7 @@ bool Tracer::atTheEnd(const Point& z, const Point& t, double ds) {
   const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
   if ((predictor.p - o_.to) * dir > 0 && endAt(o_.to, z, predictor)) {
     branch_.finished = true;
+    branch_.end = BranchEnd::RangeEnd;
     branch_.stopReason = "end of the parameter range reached";
     return true;
   }
