@@ -85,6 +85,7 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   const auto wall = response::traceForcedResponse(walled);
   std::printf("a wall at 0.9 .. 1.0: %zu points, %s\n", wall.points.size(), wall.stopReason.c_str());
   EXPECT_FALSE(wall.finished);
+  EXPECT_EQ(wall.end, continuation::BranchEnd::Wall) << wall.stopReason;
   EXPECT_NE(wall.stopReason.find("traced again with 2 times the 256 AFT samples"), std::string::npos)
       << wall.stopReason;
   EXPECT_NE(wall.stopReason.find("not a sampling corner, four times not tried"), std::string::npos)
@@ -96,6 +97,7 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   std::printf("budget of 10 points: %zu points, %s\n", stopped.points.size(), stopped.stopReason.c_str());
   EXPECT_FALSE(stopped.finished);
   EXPECT_EQ(stopped.points.size(), 10u);
+  EXPECT_EQ(stopped.end, continuation::BranchEnd::PointBudget) << stopped.stopReason;
   EXPECT_NE(stopped.stopReason.find("max_points 10"), std::string::npos) << stopped.stopReason;
   EXPECT_EQ(stopped.stopReason.find("AFT samples"), std::string::npos) << stopped.stopReason;
   EXPECT_EQ(budget.system->aft().numSamples(), 256);
@@ -104,5 +106,6 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   const auto traced = response::traceForcedResponse(whole);
   std::printf("default budget: %zu points, %s\n", traced.points.size(), traced.stopReason.c_str());
   EXPECT_TRUE(traced.finished) << traced.stopReason;
+  EXPECT_EQ(traced.end, continuation::BranchEnd::RangeEnd) << traced.stopReason;
   EXPECT_EQ(traced.stopReason.find("AFT samples"), std::string::npos) << traced.stopReason;
 }

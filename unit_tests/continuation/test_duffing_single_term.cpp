@@ -114,7 +114,7 @@ TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
     continuation::ContinuationOptions o = overZeroToTwo(engine);
     const auto branch = continuation::traceBranch(fold, Eigen::VectorXd::Zero(1), o);
     EXPECT_FALSE(branch.finished);
-    EXPECT_NE(branch.stopReason.find("returned to the start of the range"), std::string::npos) << branch.stopReason;
+    EXPECT_EQ(branch.end, continuation::BranchEnd::ReturnedToStart) << branch.stopReason;
     EXPECT_NE(branch.stopReason.find("not traced"), std::string::npos) << branch.stopReason;
     double top = 0;
     for (const auto& pt : branch.points) top = std::max(top, pt.parameter);
@@ -131,6 +131,52 @@ TEST(ArclengthContinuation, BranchReturningToItsStartIsNotTheRangeFinished) {
 // arclength step with that corrector passes however small. Both engines pass it by
 // a step at fixed p past the corner (the predictor-corrector's last resort, LOCA's
 // bridgeKink). Every point is checked against the closed form.
+// How a trace ended is a type a caller branches on (Branch::end), beside the sentence:
+// each way on a problem whose answer is known. x = p over 0..2 ends at the range's end
+// (both engines); a range of one point; a budget of 3 points; x^2 + 1 = p, which has no
+// solution at p = 0, finds no start.
+TEST(ArclengthContinuation, EachWayATraceEndsIsTyped) {
+  using continuation::BranchEnd;
+  using Engine = continuation::ContinuationOptions::Engine;
+  continuation::ContinuationProblem line;
+  line.size = 1;
+  line.residual = [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F.resize(1);
+    F(0) = x(0) - p;
+  };
+  line.jacobian = [](const Eigen::VectorXd&, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Ones(1, 1); };
+  for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+    SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
+    const auto whole = continuation::traceBranch(line, Eigen::VectorXd::Zero(1), overZeroToTwo(engine));
+    EXPECT_TRUE(whole.finished);
+    EXPECT_EQ(whole.end, BranchEnd::RangeEnd) << whole.stopReason;
+    EXPECT_STREQ(continuation::branchEndName(whole.end), "range_end");
+  }
+  auto o = overZeroToTwo(Engine::PredictorCorrector);
+  o.to = o.from;
+  const auto point = continuation::traceBranch(line, Eigen::VectorXd::Zero(1), o);
+  EXPECT_EQ(point.end, BranchEnd::SinglePoint) << point.stopReason;
+  EXPECT_EQ(point.points.size(), 1u);
+  o = overZeroToTwo(Engine::PredictorCorrector);
+  o.maxSteps = 3;
+  const auto budget = continuation::traceBranch(line, Eigen::VectorXd::Zero(1), o);
+  EXPECT_EQ(budget.end, BranchEnd::PointBudget) << budget.stopReason;
+  EXPECT_EQ(budget.points.size(), 3u);
+  continuation::ContinuationProblem none = line;
+  none.residual = [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F.resize(1);
+    F(0) = x(0) * x(0) + 1 - p;
+  };
+  none.jacobian = [](const Eigen::VectorXd& x, double, Eigen::MatrixXd& J) { J = Eigen::MatrixXd::Constant(1, 1, 2 * x(0)); };
+  for (const Engine engine : {Engine::PredictorCorrector, Engine::Loca}) {
+    SCOPED_TRACE(engine == Engine::Loca ? "LOCA" : "predictor-corrector");
+    const auto noStart = continuation::traceBranch(none, Eigen::VectorXd::Constant(1, 0.5), overZeroToTwo(engine));
+    EXPECT_FALSE(noStart.finished);
+    EXPECT_EQ(noStart.end, BranchEnd::NoStart) << noStart.stopReason;
+    EXPECT_TRUE(noStart.points.empty());
+  }
+}
+
 TEST(ArclengthContinuation, CornerTurningMoreThanARightAngleIsPassed) {
   auto shape = [](double p) { return p < 1 ? 3 * (p - 1) : -3 * (p - 1); };
   continuation::ContinuationProblem corner;

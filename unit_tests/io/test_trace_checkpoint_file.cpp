@@ -83,12 +83,14 @@ TEST(TraceCheckpointFile, AnUnfinishedStateReadsBackExactly) {
   done.branch = s.branch;
   done.branch.finished = true;
   done.branch.stopReason = "end of the parameter range reached";
+  done.branch.end = continuation::BranchEnd::MetFromTheEnd;  // not the default: read back, not assumed
   store.save("0123", done);
   const auto d = store.load("0123");
   ASSERT_TRUE(d.has_value());
   EXPECT_TRUE(d->complete);
   EXPECT_TRUE(d->branch.finished);
   EXPECT_EQ(d->branch.stopReason, done.branch.stopReason);
+  EXPECT_EQ(d->branch.end, continuation::BranchEnd::MetFromTheEnd);
   EXPECT_EQ(d->branch.points.size(), 5u);
 
   // Damaged (truncated) or not HDF5 at all: none, with a warning.

@@ -262,6 +262,11 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
                                                : "step size fell below the minimum or too many steps (the branch so far "
                                                  "is kept)")
                             : run.stopReason;
+    // A turn back onto the branch or a step below the minimum is a corner no step passes.
+    branch.end = branch.finished                                                           ? BranchEnd::RangeEnd
+                 : threw                                                                   ? BranchEnd::EngineStopped
+                 : int(branch.points.size() + run.points.size()) >= o.maxSteps && !turnedBack ? BranchEnd::PointBudget
+                                                                                           : BranchEnd::Wall;
   }
   LOCA::destroyGlobalData(globalData);
   for (std::size_t i = keepStart ? 0 : 1; i < run.points.size(); ++i) branch.points.push_back(run.points[i]);
@@ -432,6 +437,7 @@ void markReturnToStart(Branch& branch, const ContinuationOptions& o) {
     if (std::abs(end - o.from) < std::abs(end - o.to)) {
       branch.finished = false;
       branch.returnedToStart = true;
+      branch.end = BranchEnd::ReturnedToStart;
       branch.reached = reached;
       std::ostringstream why;
       why << "the branch turned back at p = " << reached << " and returned to the start of the range (p = " << end
@@ -449,6 +455,7 @@ Branch traceBranchWithLoca(const ContinuationProblem& problem, const Eigen::Vect
   Eigen::VectorXd x0 = guess;
   const auto start = solveNewton(problem, x0, o.from, o.tolerance, 100, nullptr, o.linearSolver);
   if (!start.converged) {
+    branch.end = BranchEnd::NoStart;
     branch.stopReason = noConvergedStart(start, o.tolerance);
     return branch;
   }

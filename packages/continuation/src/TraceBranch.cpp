@@ -9,6 +9,22 @@
 
 namespace cyclone::continuation {
 
+const char* branchEndName(BranchEnd end) {
+  switch (end) {
+    case BranchEnd::Running: return "running";
+    case BranchEnd::RangeEnd: return "range_end";
+    case BranchEnd::MetFromTheEnd: return "met_from_the_end";
+    case BranchEnd::SinglePoint: return "single_point";
+    case BranchEnd::ReturnedToStart: return "returned_to_start";
+    case BranchEnd::Wall: return "wall";
+    case BranchEnd::PointBudget: return "point_budget";
+    case BranchEnd::NoStart: return "no_start";
+    case BranchEnd::StartFailed: return "start_failed";
+    case BranchEnd::EngineStopped: return "engine_stopped";
+  }
+  return "unknown";
+}
+
 std::string noConvergedStart(const NewtonResult& start, double tolerance) {
   std::ostringstream why;
   why << "no converged solution at the start of the range: Newton with line search from the guess stopped at ||R|| = "

@@ -58,6 +58,7 @@ std::string stateDigest(const std::string& key, const TraceState& s) {
   }
   for (std::size_t v : b.segmentStarts) h.add((long long)v);
   h.add(s.complete ? 1 : 0).add(b.finished ? 1 : 0).add(b.returnedToStart ? 1 : 0).add(b.reached).add(b.stopReason);
+  h.add(static_cast<int>(b.end));
   if (!s.complete) {
     for (const auto& t : s.tangentX) {
       h.add((long long)t.size());
@@ -99,6 +100,7 @@ void TraceCheckpointDirectory::save(const std::string& key, const TraceState& s)
     writeIntAttribute(h5, "returned_to_start", b.returnedToStart);
     writeDoubleAttribute(h5, "reached", b.reached);
     writeStringAttribute(h5, "stop_reason", b.stopReason);
+    writeIntAttribute(h5, "end", static_cast<int>(b.end));
     writeIntAttribute(h5, "failed_steps", b.failedSteps);
     const auto& st = b.statistics;
     writeIntAttribute(h5, "newton_iterations", st.newtonIterations);
@@ -165,6 +167,9 @@ std::optional<TraceState> TraceCheckpointDirectory::load(const std::string& key)
     b.returnedToStart = readIntAttribute(h5, "returned_to_start") != 0;
     b.reached = readDoubleAttribute(h5, "reached");
     b.stopReason = readStringAttribute(h5, "stop_reason");
+    const int end = readIntAttribute(h5, "end");
+    if (end < 0 || end > static_cast<int>(continuation::BranchEnd::EngineStopped)) throw Error("an unknown way to end");
+    b.end = static_cast<continuation::BranchEnd>(end);
     b.failedSteps = readIntAttribute(h5, "failed_steps");
     auto& st = b.statistics;
     st.newtonIterations = readIntAttribute(h5, "newton_iterations");

@@ -271,6 +271,7 @@ continuation::Branch traceFromTheEnd(ForcedResponseSetup& setup, const StartingP
       << (far.x.size() > 0 ? far.method : "no start either: " + far.method) << ") ";
   if (down.points.empty()) {
     why << "nothing traced";
+    down.end = continuation::BranchEnd::NoStart;
   } else {
     const double lowest = farthestTowardsTheStart(down, upward);
     why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
@@ -325,6 +326,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
     why << down.points.size() << " points to p = " << lowest << " (" << down.stopReason << ")";
     if (!covered) why << "; " << reached << " .. " << lowest << " not traced";
     branch.finished = covered;
+    if (covered) branch.end = continuation::BranchEnd::MetFromTheEnd;
     branch.segmentStarts.push_back(branch.points.size());
     for (auto& pt : down.points) branch.points.push_back(std::move(pt));
     branch.failedSteps += down.failedSteps;

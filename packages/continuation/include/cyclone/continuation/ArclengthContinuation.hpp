@@ -164,9 +164,27 @@ struct BranchPoint {
   Eigen::VectorXd x;
 };
 
+/// How a trace ended: what a calling program branches on. Branch::stopReason says the
+/// same as a sentence, with where, how far and what was tried.
+enum class BranchEnd {
+  Running,           ///< not ended (a trace in progress: a checkpoint's)
+  RangeEnd,          ///< the end of the parameter range reached (Branch::finished)
+  MetFromTheEnd,     ///< the range covered by a sweep from each end (finished; Branch::segmentStarts)
+  SinglePoint,       ///< the range is a single point (finished: that point)
+  ReturnedToStart,   ///< folded back and ran out at the bound it started from (Branch::reached)
+  Wall,              ///< no step passes a point: the correctors failed down to the smallest step
+  PointBudget,       ///< the largest number of points (max_points) spent
+  NoStart,           ///< no converged first point
+  StartFailed,       ///< the residual or Jacobian failed, or the Jacobian was singular, at the first point
+  EngineStopped,     ///< LOCA stopped: an exception, or its step below the minimum
+};
+/// The outcome's name in files ("range_end", "wall", ...).
+const char* branchEndName(BranchEnd end);
+
 struct Branch {
   std::vector<BranchPoint> points;
   bool finished = false;  ///< reached the end of the range
+  BranchEnd end = BranchEnd::Running;
   std::string stopReason;
   int failedSteps = 0;
   /// The branch folded back and ran out at the bound it started from; `reached` is the
