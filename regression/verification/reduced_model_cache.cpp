@@ -9,6 +9,8 @@
 #include <H5Cpp.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
@@ -108,6 +110,23 @@ TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   EXPECT_TRUE(reused.check.reused);
   EXPECT_EQ(reused.check.checkedAt.rfind("20", 0), 0u) << reused.check.checkedAt;
   EXPECT_NEAR(reused.check.maxError(), again.check.maxError(), 1e-6 * again.check.maxError());  // as the CSV holds it
+  // An edited check (issue 49: the summary quoted whatever the .check.csv held) is not
+  // quoted: the model is rebuilt and checked again, its check this run's.
+  const std::string checkPath = path + ".check.csv";
+  std::string text;
+  {
+    std::ifstream in(checkPath);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto lastComma = text.rfind(',', text.find("\n# content_digest"));
+  ASSERT_NE(lastComma, std::string::npos) << text;
+  text[lastComma + 1] = text[lastComma + 1] == '9' ? '8' : '9';  // the last row's relative error's first digit
+  std::ofstream(checkPath) << text;
+  const auto edited = c.build(nds);
+  EXPECT_EQ(edited.built, 1);
+  EXPECT_FALSE(edited.check.reused);
+  EXPECT_NEAR(edited.check.maxError(), again.check.maxError(), 1e-6 * again.check.maxError());
+  EXPECT_TRUE(c.build(nds).check.reused);  // written again with its digest: reused
 }
 
 // A cached file whose content is not what its name and digest promise is computed again,

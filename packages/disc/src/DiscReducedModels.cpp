@@ -93,17 +93,40 @@ std::vector<double> distinctHz(const std::vector<double>& eigenvalues, int copie
   return hz;
 }
 
-ReducedModelCheck readCheck(const std::string& path, int nd) {
-  ReducedModelCheck c;
+// The check file's last line: a digest of the lines above it (the header and rows as
+// written), so an edited or damaged check is not quoted as the model's (issue 49).
+constexpr const char* kCheckDigest = "# content_digest,";
+
+std::string checkDigest(const std::string& text) { return ContentHash().add(text).hex(); }
+
+// The check of a cached model read back, or none where it does not carry its digest or the
+// digest does not match (an edited, damaged or older file): the model is then rebuilt and
+// checked again.
+std::optional<ReducedModelCheck> readCheck(const std::string& path, int nd, std::string& why) {
   std::ifstream in(path);
-  std::string line;
-  if (!std::getline(in, line)) return c;
+  std::string text, line, digest;
   while (std::getline(in, line)) {
-    std::stringstream cells(line);
-    std::string v[4];
-    for (auto& x : v) std::getline(cells, x, ',');
-    c.hz.push_back(std::stod(v[0])), c.reduced.push_back(std::stod(v[1]));
-    c.full.push_back(std::stod(v[2])), c.error.push_back(std::stod(v[3]));
+    if (line.rfind(kCheckDigest, 0) == 0) {
+      digest = line.substr(std::string(kCheckDigest).size());
+      break;
+    }
+    text += line + "\n";
+  }
+  if (digest.empty()) return why = "it carries no content digest", std::nullopt;
+  if (digest != checkDigest(text)) return why = "its content does not match its digest", std::nullopt;
+  ReducedModelCheck c;
+  std::stringstream lines(text);
+  std::getline(lines, line);  // the header
+  try {
+    while (std::getline(lines, line)) {
+      std::stringstream cells(line);
+      std::string v[4];
+      for (auto& x : v) std::getline(cells, x, ',');
+      c.hz.push_back(std::stod(v[0])), c.reduced.push_back(std::stod(v[1]));
+      c.full.push_back(std::stod(v[2])), c.error.push_back(std::stod(v[3]));
+    }
+  } catch (const std::exception&) {
+    return why = "a row is not four numbers", std::nullopt;
   }
   c.nodalDiameter = nd;
   return c;
@@ -111,14 +134,15 @@ ReducedModelCheck readCheck(const std::string& path, int nd) {
 
 }  // namespace
 
-void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& c) {
-  AtomicFile file(path);
-  std::ofstream out(file.tempPath());
-  out.precision(12);
-  out << "freq_hz,reduced_abs,full_abs,relative_error\n";
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& c, bool digest) {
+  std::ostringstream rows;
+  rows.precision(12);
+  rows << "freq_hz,reduced_abs,full_abs,relative_error\n";
   for (std::size_t i = 0; i < c.hz.size(); ++i)
-    out << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
-  file.check(out);
+    rows << c.hz[i] << "," << c.reduced[i] << "," << c.full[i] << "," << c.error[i] << "\n";
+  const std::string text = digest ? rows.str() + kCheckDigest + checkDigest(rows.str()) + "\n" : rows.str();
+  AtomicFile file(path);
+  file.write(text.data(), text.size());
   file.commit();
 }
 
@@ -171,7 +195,14 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
     return false;
   }
   if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv")) {
-    out.check = readCheck(path + ".check.csv", k);
+    std::string why;
+    const auto check = readCheck(path + ".check.csv", k, why);
+    if (!check) {
+      log::warn("reduced model ND " + std::to_string(k) + ": the check of the cached " + path + " (" + path +
+                ".check.csv) is not reused: " + why + "; rebuilding the model and checking it again");
+      return false;
+    }
+    out.check = *check;
     out.check.reused = true;
     // When it was checked: the check file's modification time, UTC.
     const auto written = std::filesystem::last_write_time(path + ".check.csv");
@@ -324,7 +355,7 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     ++out.built;
     if (k == spec.checkNodalDiameter && spec.kind != ReducedModelKind::FullFe && spec.checkFrequencies > 0) {
       out.check = checkAgainstFull(*built.model, *full, k, out.naturalHz[k], spec.checkFrequencies);
-      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", out.check);
+      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", out.check, true);
     }
     std::ostringstream msg;
     msg << "reduced model ND " << k << " (" << reducedModelKindName(spec.kind) << ", " << spec.modes

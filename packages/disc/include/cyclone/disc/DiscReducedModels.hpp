@@ -65,8 +65,10 @@ struct ReducedModelCheck {
   double maxError() const;
 };
 
-/// freq_hz,reduced_abs,full_abs,relative_error (written atomically).
-void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& check);
+/// freq_hz,reduced_abs,full_abs,relative_error (written atomically). With `digest` (the
+/// reduced-model cache's .check.csv) a last line "# content_digest,<hex>" of the lines
+/// above it, which a reused model's check must match.
+void writeReducedModelCheckCsv(const std::string& path, const ReducedModelCheck& check, bool digest = false);
 
 struct DiscReducedModels {
   int sectors = 0;
