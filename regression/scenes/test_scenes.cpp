@@ -2301,6 +2301,19 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
     EXPECT_LT(timer.seconds(), 10.0);
     EXPECT_FALSE(fs::exists(dir / "static.exo"));
   }
+  {  // harmonics 500: the friction solve's cost known from the contact pairs (it was refused
+     // only after the reduced models were built)
+    Timer timer;
+    const std::string scene = std::regex_replace(
+        demoWith("[static, modal, disc_response]", "harmonics: auto ", "harmonics: 500 "),
+        std::regex("\n    harmonics_(tolerance|max):[^\n]*"), "");
+    ASSERT_EQ(scene.find("harmonics_max"), std::string::npos);
+    const std::string msg = failure(scene, dir);
+    EXPECT_NE(msg.find("'cyclone/disc_response/harmonics': harmonics up to 500 on"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("the elements' Jacobians alone take about"), std::string::npos) << msg;
+    EXPECT_LT(timer.seconds(), 10.0);
+    EXPECT_FALSE(fs::exists(dir / "static.exo"));
+  }
   // A section no listed analysis reads, whose reader needs another section the scene
   // lacks (reduced_model's needs the constraints), cannot be checked: said, not refused.
   scenes::SceneOverrides o;

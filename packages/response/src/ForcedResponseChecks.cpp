@@ -78,21 +78,28 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& ha
   if (!krylov && n > kSlowUnknowns)
     log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
               std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");
-  // Each element's Jacobian is its sampled sensitivities projected onto the harmonics, a
-  // dense product of 2 N (d nc)^2 flops: the cost that grows fastest with H (issue 49:
-  // harmonics 0..5000 on one DOF spent minutes on one Jacobian, silently). About 4.5
-  // Gflop/s here (the default disc's 43 contacts at H = 48, 1024 samples: 1.6 s).
+  std::vector<int> dimensions;
+  for (const auto& e : hb.elements()) dimensions.push_back(e.element->dimension());
+  checkElementJacobianCost(hb.aft().numSamples(), hb.numCoefficients(), dimensions, what.str(), harmonicsKey);
+}
+
+// Each element's Jacobian is its sampled sensitivities projected onto the harmonics, a
+// dense product of 2 N (d nc)^2 flops: the cost that grows fastest with H (issue 49:
+// harmonics 0..5000 on one DOF spent minutes on one Jacobian, silently). About 4.5
+// Gflop/s here (the default disc's 43 contacts at H = 48, 1024 samples: 1.6 s).
+void checkElementJacobianCost(int samples, int numCoefficients, const std::vector<int>& elementDimensions,
+                              const std::string& what, const std::string& harmonicsKey) {
   constexpr double kFlopsPerSecond = 4.5e9, kSlowSeconds = 10, kRefusedSeconds = 600;
   double flops = 0;
-  for (const auto& e : hb.elements())
-    flops += 2 * double(hb.aft().numSamples()) * std::pow(double(e.element->dimension()) * hb.numCoefficients(), 2);
+  for (int d : elementDimensions) flops += 2 * double(samples) * std::pow(double(d) * numCoefficients, 2);
   const double seconds = flops / kFlopsPerSecond;
-  if (seconds > kSlowSeconds) {
-    what << " and " << hb.aft().numSamples() << " time samples: the elements' Jacobians alone take about "
-         << seconds << " s a Newton iteration (2 N (d nc)^2 flops each at about 4.5 Gflop/s)";
-    if (seconds > kRefusedSeconds) throw InputError(harmonicsKey, what.str() + "; use fewer harmonics");
-    log::warn(what.str());
-  }
+  if (seconds <= kSlowSeconds) return;
+  std::ostringstream text;
+  text.precision(3);
+  text << what << " and " << samples << " time samples: the elements' Jacobians alone take about " << seconds
+       << " s a Newton iteration (2 N (d nc)^2 flops each at about 4.5 Gflop/s)";
+  if (seconds > kRefusedSeconds) throw InputError(harmonicsKey, text.str() + "; use fewer harmonics");
+  log::warn(text.str());
 }
 
 namespace {

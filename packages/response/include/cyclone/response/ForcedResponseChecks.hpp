@@ -92,6 +92,13 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& system, const std::string
                      continuation::ContinuationOptions::LinearSolver solver =
                          continuation::ContinuationOptions::LinearSolver::Auto);
 
+/// The elements' Jacobians' cost per Newton iteration (each element's sampled sensitivities
+/// projected onto the harmonics, 2 samples (d numCoefficients)^2 flops): a warning over
+/// 10 s, an InputError naming `harmonicsKey` over 600 s. `what` begins the message (the
+/// harmonics and DOFs). Known before a system is built (a scene's reader calls it).
+void checkElementJacobianCost(int samples, int numCoefficients, const std::vector<int>& elementDimensions,
+                              const std::string& what, const std::string& harmonicsKey);
+
 /// The first point's response must be representable. Where the excitation is nonzero and
 /// the start's largest coefficient is below kSmallestTraceable (1e-150: its square, which
 /// the continuation's norms and scaling take, underflows a double), the curve would come
