@@ -97,10 +97,18 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
   spec.harmonics = readHarmonicList(d, 3);
   spec.samples = d.getInt("samples", 0);
-  if (spec.samples < 0 || spec.samples > kMaxSamples)
-    throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in 1.." +
-                                             std::to_string(kMaxSamples) + " time samples per period (leave it out "
-                                             "for the automatic count)");
+  {
+    // Enough for the highest harmonic given (a harmonics check or target raises it, and
+    // its samples with it where the count is automatic).
+    int top = 0;
+    for (int h : spec.harmonics) top = std::max(top, h);
+    const int least = 2 * top + 1;
+    if (spec.samples != 0 && (spec.samples < least || spec.samples > kMaxSamples))
+      throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in " + std::to_string(least) +
+                                               ".." + std::to_string(kMaxSamples) + " time samples per period (2 H + 1 "
+                                               "resolve harmonic H = " + std::to_string(top) + "; 0 or left out: "
+                                               "the automatic count)");
+  }
   auto c = d.section("contact");
   auto& ct = spec.contact;
   ct.leftSet = c.getString("left_node_set", ct.leftSet);
@@ -122,6 +130,7 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   ct.kt = c.getDouble("kt", ct.kt);
   ct.mu = c.getDouble("mu", ct.mu);
   ct.preload = c.getDouble("preload", ct.preload);
+  ct.patches = c.getInt("patches", 0);  // its range against the face's pairs: disc::shroudContactValues
   if (c.has("normal") != c.has("tangent"))
     throw InputError(c.location(), "give both normal and tangent (the contact frame), or neither");
   if (c.has("normal")) ct.normal = toEigen(c.getVector3("normal", {0, 0, 0}));
@@ -218,14 +227,15 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     }
     // The friction solve's cost at the highest harmonic the curve or its check reaches,
     // known from the contact pairs before any FE work (harmonics 500 on the demo's disc
-    // was refused only after its reduced models were built): a 3D contact per pair.
+    // was refused only after its reduced models were built): a 3D contact per pair, or
+    // per patch.
     {
       const int top = std::max(maxHarmonic, plan.harmonicsCheckTo);
       const hbm::HarmonicSet set = hbm::HarmonicSet::upTo(top);
-      const int pairs = int(mesh.nodeSet(spec.contact.rightSet).size());
+      const int pairs = spec.contact.patches > 0 ? spec.contact.patches : int(mesh.nodeSet(spec.contact.rightSet).size());
       const int samples = spec.samples > 0 ? spec.samples : std::max(256, set.nonsmoothSamples());
       std::ostringstream what;
-      what << "harmonics up to " << top << " on " << pairs << " shroud contact pairs";
+      what << "harmonics up to " << top << " on " << pairs << (spec.contact.patches > 0 ? " shroud contact patches" : " shroud contact pairs");
       response::checkElementJacobianCost(samples, set.numCoefficients(), std::vector<int>(std::size_t(pairs), 3),
                                          what.str(), d.where("harmonics"));
     }
@@ -236,6 +246,9 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   }
   plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
   plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
+  if (plan.modelSpec.checkFrequencies < 0)
+    throw InputError(r.where("check_frequencies"), std::to_string(plan.modelSpec.checkFrequencies) +
+                                                       ": must be >= 0 (0: no check of the reduced models)");
   plan.rebuildCache = cache == "rebuild" && !plan.cacheDir.empty();
   r.rejectUnknownKeys();
   return plan;

@@ -154,7 +154,7 @@ TEST(DiscContactPairing, LawPerAreaSpreadsTheInterfaceByArea) {
   for (const std::string parameter : {"preload", "stiffness"}) {
     auto following = at(spec);
     const double value = parameter == "preload" ? 700.0 : 8e3;
-    std::vector<double> weights = parameter == "preload" ? values.preloadShare : values.stiffnessFactor;
+    std::vector<double> weights = parameter == "preload" ? values.preloadFactor : values.stiffnessFactor;
     response::selectElementParameter(following, "contact", parameter, value, weights);
     following.apply(value);
     auto direct = spec;
@@ -169,4 +169,90 @@ TEST(DiscContactPairing, LawPerAreaSpreadsTheInterfaceByArea) {
     std::printf("%s continued to %g: residual %.1e from the system made at that value\n", parameter.c_str(), value,
                 difference);
   }
+}
+
+// Patches (contact/patches): each patch is one contact on its pairs' motion weighted by
+// their tributary areas, its stiffness and load the sum of theirs. The friction law is
+// homogeneous in its stiffnesses and load (kn, kt, N0 scaled by c scale its force by c),
+// so where every pair moves alike the patched system is the every-pair system: the
+// residuals agree to rounding, at a motion whose contacts slip and open. Where the pairs
+// move differently they do not (the check can fail), and as many patches as pairs is
+// the every-pair system at any motion. A continuation in the preload or the stiffness
+// moves each patch's by its factor.
+TEST(DiscContactPairing, PatchesAreTheirPairsMovingAlike) {
+  log::setQuiet(true);
+  disc::DiscResponseSpec spec;
+  spec.harmonics = {0, 1, 2};
+  spec.contact.law = disc::ShroudContactSpec::Law::PerArea;
+  spec.contact.kn = spec.contact.kt = 5e3;  // N/mm^3
+  spec.contact.preload = 2000.0;            // N over the interface
+  const SmallDisc d = smallDisc(spec);
+  const auto& models = d.models;
+  const auto pairs = disc::shroudContactPairs(d.mesh, d.geometry.sectors, models.sector.axis, spec.contact);
+  const int n = int(pairs.right.size());
+  auto patched = spec;
+  patched.contact.patches = 4;
+  auto one = spec;
+  one.contact.patches = n;
+  auto every = disc::makeDiscForcedResponse(d.mesh, models, spec);
+  const auto four = disc::makeDiscForcedResponse(d.mesh, models, patched);
+  const auto single = disc::makeDiscForcedResponse(d.mesh, models, one);
+  const auto values = disc::shroudContactValues(d.mesh, pairs, patched.contact);
+  const auto all = disc::shroudContactValues(d.mesh, pairs, spec.contact);
+  ASSERT_EQ(values.kn.size(), 4u);
+  EXPECT_NEAR(values.totalKn, all.totalKn, 1e-12 * all.totalKn);
+  EXPECT_NEAR(values.totalPreload, all.totalPreload, 1e-12 * all.totalPreload);
+  std::printf("%s\n", values.text.c_str());
+
+  auto& hb = *every.system;
+  const int nc = hb.numCoefficients();
+  const double omega = 2 * M_PI * disc::estimateResonance(every, models).stuckHz;
+  // Near the stuck resonance, doubled: contacts slip and open.
+  const Eigen::VectorXd X = 2.0 * hb.linearizedSolution(omega);
+  auto retained = [&](mesh::Index node) {
+    const auto it = std::find(models.retainedNodes.begin(), models.retainedNodes.end(), node);
+    return int(it - models.retainedNodes.begin());
+  };
+  // Every right node moves as the first right node, every left node as the first left node.
+  Eigen::VectorXd alike = X;
+  const int r0 = retained(pairs.right[0]), l0 = retained(pairs.left[0]);
+  for (int i = 0; i < n; ++i)
+    for (const auto& [node, from] : {std::pair{pairs.right[std::size_t(i)], r0}, {pairs.left[std::size_t(i)], l0}})
+      alike.segment(3 * retained(node) * nc, 3 * nc) = X.segment(3 * from * nc, 3 * nc);
+  auto difference = [&](const response::ForcedResponseSetup& a, const response::ForcedResponseSetup& b,
+                         const Eigen::VectorXd& x) {
+    Eigen::VectorXd Ra, Rb;
+    a.system->residual(x, omega, Ra, nullptr);
+    b.system->residual(x, omega, Rb, nullptr);
+    return (Ra - Rb).cwiseAbs().maxCoeff() / Ra.cwiseAbs().maxCoeff();
+  };
+  // The contacts at `alike` are not the linear springs: halving the motion does not halve
+  // the residual's change from rest.
+  Eigen::VectorXd R0, Rhalf, Rfull;
+  hb.residual(Eigen::VectorXd::Zero(X.size()), omega, R0, nullptr);
+  hb.residual(0.5 * alike, omega, Rhalf, nullptr);
+  hb.residual(alike, omega, Rfull, nullptr);
+  const double nonlinearity = (Rfull - R0 - 2 * (Rhalf - R0)).norm() / (Rfull - R0).norm();
+  EXPECT_GT(nonlinearity, 1e-3);
+  const double movingAlike = difference(every, four, alike), apart = difference(every, four, X),
+               onePairEach = difference(every, single, X);
+  EXPECT_LT(movingAlike, 1e-12);
+  EXPECT_GT(apart, 1e-4);
+  EXPECT_LT(onePairEach, 1e-12);
+  // A continuation of the preload or stiffness moves each patch's by its factor
+  // (DiscPeakFollowing's weights): the system at another value equals the one made there.
+  for (const std::string parameter : {"preload", "stiffness"}) {
+    auto following = disc::makeDiscForcedResponse(d.mesh, models, patched);
+    const double value = parameter == "preload" ? 700.0 : 8e3;
+    response::selectElementParameter(following, "contact", parameter, value,
+                                     parameter == "preload" ? values.preloadFactor : values.stiffnessFactor);
+    following.apply(value);
+    auto direct = patched;
+    if (parameter == "preload") direct.contact.preload = value;
+    else direct.contact.kn = direct.contact.kt = value;
+    EXPECT_LT(difference(following, disc::makeDiscForcedResponse(d.mesh, models, direct), X), 1e-12) << parameter;
+  }
+  std::printf("%d pairs in 4 patches at %.2f Hz: residual %.1e from every pair's where the pairs move alike (the "
+              "contacts' nonlinearity there %.2f), %.1e where they do not; %d patches of one pair %.1e\n",
+              n, omega / (2 * M_PI), movingAlike, nonlinearity, apart, n, onePairEach);
 }

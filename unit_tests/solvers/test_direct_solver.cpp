@@ -4,6 +4,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <Eigen/Eigenvalues>
 #include <complex>
 
@@ -120,6 +122,18 @@ TEST(ComplexDirectSolver, MatchesDenseComplexLu) {
 
 namespace {
 
+// A Tpetra matrix of a dense one's nonzeros.
+Teuchos::RCP<linalg::Matrix> sparseOf(const Eigen::MatrixXd& dense, const Teuchos::RCP<const linalg::Comm>& comm) {
+  const Eigen::Index n = dense.rows();
+  auto map = Teuchos::rcp(new linalg::Map(n, 0, comm));
+  auto A = Teuchos::rcp(new linalg::Matrix(map, std::size_t(n)));
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      if (dense(r, c) != 0) A->insertGlobalValues(r, Teuchos::tuple<linalg::GlobalIndex>(c), Teuchos::tuple(dense(r, c)));
+  A->fillComplete();
+  return A;
+}
+
 // A cyclic real form [[P, -Q], [Q, P]] with interleaved pairs (2m, 2m+1) = (a, b):
 // P symmetric (the cantilever's matrix), Q antisymmetric on P's pattern.
 Teuchos::RCP<linalg::Matrix> pairedRealForm(const Eigen::MatrixXd& P, double q,
@@ -135,13 +149,25 @@ Teuchos::RCP<linalg::Matrix> pairedRealForm(const Eigen::MatrixXd& P, double q,
       dense(2 * i + 1, 2 * j) = Q(i, j);
       dense(2 * i, 2 * j + 1) = -Q(i, j);
     }
-  auto map = Teuchos::rcp(new linalg::Map(2 * n, 0, comm));
-  auto A = Teuchos::rcp(new linalg::Matrix(map, std::size_t(2 * n)));
-  for (Eigen::Index r = 0; r < 2 * n; ++r)
-    for (Eigen::Index c = 0; c < 2 * n; ++c)
-      if (dense(r, c) != 0) A->insertGlobalValues(r, Teuchos::tuple<linalg::GlobalIndex>(c), Teuchos::tuple(dense(r, c)));
-  A->fillComplete();
-  return A;
+  return sparseOf(dense, comm);
+}
+
+// The paired real form of U P U^H, U = diag(exp(i theta_m)): Hermitian with P's
+// eigenvalues (P positive definite: so is it), P's pattern, and an imaginary part
+// sin(theta_m - theta_n) P(m, n) that is not small.
+Teuchos::RCP<linalg::Matrix> rotatedPairedRealForm(const Eigen::MatrixXd& P, const Teuchos::RCP<const linalg::Comm>& comm,
+                                                   Eigen::MatrixXd& dense) {
+  const Eigen::Index n = P.rows();
+  dense.setZero(2 * n, 2 * n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double t = 0.7 * double(i % 5) - 0.4 * double(j % 3) - (0.7 * double(j % 5) - 0.4 * double(i % 3));
+      const double re = std::cos(t) * P(i, j), im = std::sin(t) * P(i, j);
+      dense(2 * i, 2 * j) = dense(2 * i + 1, 2 * j + 1) = re;
+      dense(2 * i + 1, 2 * j) = im;
+      dense(2 * i, 2 * j + 1) = -im;
+    }
+  return sparseOf(dense, comm);
 }
 
 }  // namespace
@@ -173,6 +199,44 @@ TEST(ComplexDirectSolver, TravellingWavePairsMatchDenseComplexLuOfTheRealForm) {
   for (int r = 0; r < 3; ++r) I3->insertGlobalValues(r, Teuchos::tuple<linalg::GlobalIndex>(r), Teuchos::tuple(1.0));
   I3->fillComplete();
   EXPECT_THROW(solvers::ComplexDirectSolver(*I3, a, *I3, b, solvers::ComplexDirectSolver::Structure::TravellingWavePairs),
+               SolverError);
+}
+
+// The real solve of a paired real form by the Hermitian half's complex Cholesky
+// (DirectSolver::Structure::TravellingWavePairs) against a dense solve of the real form,
+// with a shift; a quarter of the real form factor's entries (complex: half its memory).
+// The matrices are the real forms of U P U^H (the cantilever's K and M). Not positive
+// definite (a shift above the first eigenvalue): refused like the real LL^T.
+TEST(DirectSolver, TravellingWavePairsFactorTheHermitianHalf) {
+  Cantilever c;
+  const Eigen::MatrixXd Kd = toDense(*c.assembler->stiffness(c.steel)), Md = toDense(*c.assembler->mass(c.steel));
+  const auto comm = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  Eigen::MatrixXd Kr, Mr;
+  const auto K = rotatedPairedRealForm(Kd, comm, Kr);
+  const auto M = rotatedPairedRealForm(Md, comm, Mr);
+  const double lambda1 = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(Kr, Mr).eigenvalues()(0);
+  const double sigma = -0.5 * lambda1;
+  const solvers::DirectSolver real(*K, M.get(), sigma);
+  const solvers::DirectSolver wave(*K, M.get(), sigma, solvers::DirectSolver::Definiteness::Positive,
+                                   solvers::DirectSolver::Structure::TravellingWavePairs);
+  linalg::MultiVector f(K->getRowMap(), 3), x(K->getRowMap(), 3), y(K->getRowMap(), 3);
+  f.randomize();
+  wave.solve(f, x);
+  real.solve(f, y);
+  const Eigen::MatrixXd A = Kr - sigma * Mr;
+  Eigen::MatrixXd F(A.rows(), 3), X(A.rows(), 3), Y(A.rows(), 3);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < A.rows(); ++i) F(i, j) = f.getData(j)[i], X(i, j) = x.getData(j)[i], Y(i, j) = y.getData(j)[i];
+  const Eigen::MatrixXd reference = A.ldlt().solve(F);
+  const double error = (X - reference).norm() / reference.norm();
+  EXPECT_LT(error, 1e-10);
+  EXPECT_LT((Y - reference).norm() / reference.norm(), 1e-10);
+  std::printf("paired %.1e, real %.1e from the dense solve; factor entries %.0f complex against %.0f real\n", error,
+              (Y - reference).norm() / reference.norm(), wave.statistics().nonzerosFactor,
+              real.statistics().nonzerosFactor);
+  EXPECT_LT(wave.statistics().nonzerosFactor, 0.5 * real.statistics().nonzerosFactor);
+  EXPECT_THROW(solvers::DirectSolver(*K, M.get(), 1.5 * lambda1, solvers::DirectSolver::Definiteness::Positive,
+                                     solvers::DirectSolver::Structure::TravellingWavePairs),
                SolverError);
 }
 

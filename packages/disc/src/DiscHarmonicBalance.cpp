@@ -74,6 +74,22 @@ void condenseOntoContacts(ForcedResponseSetup& setup) {
 
 }  // namespace
 
+namespace {
+
+// A contact frame the scene gives: unit vectors at right angles (InputError otherwise).
+void checkContactFrame(const ShroudContactSpec& contact) {
+  const Eigen::Vector3d &n = contact.normal, &t = contact.tangent;
+  const double tol = 1e-6;
+  if (std::abs(n.norm() - 1) > tol || std::abs(t.norm() - 1) > tol || std::abs(n.dot(t)) > tol) {
+    std::ostringstream msg;
+    msg << "contact frame not orthonormal: |normal| = " << n.norm() << ", |tangent| = " << t.norm()
+        << ", normal . tangent = " << n.dot(t) << " (give unit vectors at right angles)";
+    throw InputError("contact/normal, contact/tangent", msg.str());
+  }
+}
+
+}  // namespace
+
 Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                    const ShroudContactSpec& contact) {
   const auto& right = mesh.nodeSet(contact.rightSet);
@@ -89,13 +105,7 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
     n = a.cross(r);  // towards increasing angle: into the next sector
     t = r;
   } else {
-    const double tol = 1e-6;
-    if (std::abs(n.norm() - 1) > tol || std::abs(t.norm() - 1) > tol || std::abs(n.dot(t)) > tol) {
-      std::ostringstream msg;
-      msg << "contact frame not orthonormal: |normal| = " << n.norm() << ", |tangent| = " << t.norm()
-          << ", normal . tangent = " << n.dot(t) << " (give unit vectors at right angles)";
-      throw InputError("contact/normal, contact/tangent", msg.str());
-    }
+    checkContactFrame(contact);
   }
   Eigen::Matrix3d E;
   E.col(0) = t, E.col(1) = n.cross(t), E.col(2) = n;
@@ -142,10 +152,12 @@ void checkEngineOrder(int engineOrder, int N) {
 }
 
 // Which pairs carry a gap element instead of friction (checked), and that element.
-std::shared_ptr<const hbm::NonlinearElement> gapElementFor(const ShroudGapSpec& gap, std::size_t pairs,
-                                                          std::vector<bool>& isGap) {
+std::shared_ptr<const hbm::NonlinearElement> gapElementFor(const ShroudGapSpec& gap, const ShroudContactSpec& contact,
+                                                          std::size_t pairs, std::vector<bool>& isGap) {
   isGap.assign(pairs, false);
   if (gap.pairs.empty()) return nullptr;
+  if (contact.patches > 0)
+    throw InputError("gap/pairs", "names node pairs, which contact/patches groups: give one or the other");
   for (int i : gap.pairs) {
     if (i < 0 || i >= int(pairs))
       throw InputError("gap/pairs", "pair " + std::to_string(i) + " is not one of the " + std::to_string(pairs) +
@@ -178,26 +190,32 @@ void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, 
                         const DiscResponseSpec& spec, const mesh::NodePairing& pairs,
                         const ShroudContactValues& values, ForcedResponseSetup& setup) {
   const auto &left = pairs.left, &right = pairs.right;
-  const bool shared = spec.contact.law == ShroudContactSpec::Law::PerPair;
+  const bool shared = spec.contact.law == ShroudContactSpec::Law::PerPair && spec.contact.patches == 0;
   const auto sharedElement = frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
   const Eigen::Matrix3d Q = models.sector.rotation();
   const Eigen::Matrix3d E = shroudContactFrame(mesh, models, spec.contact);
   std::vector<bool> isGap;
-  const auto gapElement = gapElementFor(spec.gap, left.size(), isGap);
+  const auto gapElement = gapElementFor(spec.gap, spec.contact, values.members.size(), isGap);
   const int n = hb.numDofs();
-  for (std::size_t i = 0; i < left.size(); ++i) {
-    const int r = retainedIndex(models, right[i], spec.contact.rightSet);
-    const int l = retainedIndex(models, left[i], spec.contact.leftSet);
-    const int d = isGap[i] ? 1 : 3;
+  for (std::size_t c = 0; c < values.members.size(); ++c) {
+    const int d = isGap[c] ? 1 : 3;
     const Eigen::MatrixXd Ei = E.rightCols(d);
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
-    W.middleRows(3 * r, 3) = -Ei;                    // - this sector's right node
-    Wnext.middleRows(3 * l, 3) = Q.transpose() * Ei;  // + the next sector's left node, rotated into this frame
-    hb.addElement(isGap[i]  ? gapElement
+    // The contact's motion: its pairs' relative motions weighted (one pair of weight 1
+    // without patches); its force goes back to them by the same weights.
+    for (std::size_t m = 0; m < values.members[c].size(); ++m) {
+      const auto i = std::size_t(values.members[c][m]);
+      const double w = values.memberWeights[c][m];
+      const int r = retainedIndex(models, right[i], spec.contact.rightSet);
+      const int l = retainedIndex(models, left[i], spec.contact.leftSet);
+      W.middleRows(3 * r, 3) -= w * Ei;                    // - this sector's right node
+      Wnext.middleRows(3 * l, 3) += w * Q.transpose() * Ei;  // + the next sector's left node, rotated into this frame
+    }
+    hb.addElement(isGap[c]  ? gapElement
                   : shared ? sharedElement
-                           : frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]),
+                           : frictionElement(values.kn[c], values.kt[c], spec.contact.mu, values.preload[c]),
                   W, Wnext);
-    setup.elementNames.push_back(isGap[i] ? "gap" : "contact");
+    setup.elementNames.push_back(isGap[c] ? "gap" : "contact");
   }
 }
 
@@ -241,10 +259,12 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   for (std::size_t i = 0; i < values.kn.size(); ++i)
     frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]);
   std::vector<bool> isGap;
-  gapElementFor(spec.gap, pairs.left.size(), isGap);
+  gapElementFor(spec.gap, spec.contact, values.members.size(), isGap);
   if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
-  if (!std::isfinite(spec.excitation.amplitude))
-    throw InputError("excitation/amplitude", "must be finite, got " + std::to_string(spec.excitation.amplitude));
+  if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
+    throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
+                                                 std::to_string(spec.excitation.amplitude));
+  if (spec.contact.normal.norm() != 0 || spec.contact.tangent.norm() != 0) checkContactFrame(spec.contact);
   mesh.nodeSet(spec.excitation.nodeSet);
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
 }
@@ -347,6 +367,7 @@ ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReduce
     else a = x1;
   }
   out.stuckHz = 0.5 * (a + b);
+  out.stuckAmplitude = amplitude(out.stuckHz);
   return out;
 }
 

@@ -1,6 +1,8 @@
 #include "cyclone/disc/DiscParameterStudy.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -70,6 +72,57 @@ std::optional<DiscStudyParameter> discStudyParameterFromName(const std::string& 
   for (auto p : kParameters)
     if (discStudyParameterName(p) == name) return p;
   return std::nullopt;
+}
+
+void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                          const DiscResponseSpec& spec, DiscStudyParameter parameter, const std::vector<double>& values,
+                          int modes, int maxHarmonic) {
+  const std::string key = "disc_response/studies/" + discStudyParameterName(parameter);
+  if (values.empty()) throw InputError(key, "needs a list of values");
+  auto at = [](double v) {
+    std::ostringstream text;
+    text << "the value " << v << ": ";
+    return text.str();
+  };
+  for (double v : values) {
+    if (!std::isfinite(v)) throw InputError(key, at(v) + "must be finite");
+    switch (parameter) {
+      case DiscStudyParameter::LossFactor:
+        if (v < 0) throw InputError(key, at(v) + "a loss factor must be >= 0");
+        break;
+      case DiscStudyParameter::Modes:
+        if (v != std::floor(v) || v < 1 || v > modes)
+          throw InputError(key, at(v) + "must be a whole number of modes from 1 to the reduced models' " +
+                                    std::to_string(modes) + " (reduced_model/modes)");
+        break;
+      case DiscStudyParameter::Harmonics:
+        if (v != std::floor(v) || v < 1 || v > maxHarmonic)
+          throw InputError(key, at(v) + "must be a whole number from 1 to " + std::to_string(maxHarmonic) +
+                                    " (the highest harmonic the reduced models are built for: raise "
+                                    "disc_response/harmonics to the study's largest value)");
+        break;
+      case DiscStudyParameter::Speed:
+        throw InputError(key, "the speed is followed (peak_studies: speed: the models built at each speed), not "
+                              "swept as a value list");
+      default: {
+        // The contact and excitation values as the spec's own are checked.
+        DiscResponseSpec sv = spec;
+        if (parameter == DiscStudyParameter::Preload) sv.contact.preload = v;
+        if (parameter == DiscStudyParameter::FrictionCoefficient) sv.contact.mu = v;
+        if (parameter == DiscStudyParameter::ContactStiffness) sv.contact.kn = sv.contact.kt = v;
+        if (parameter == DiscStudyParameter::Force) sv.excitation.amplitude = spec.excitation.amplitude * v;
+        if (parameter == DiscStudyParameter::Clearance) {
+          if (spec.gap.pairs.empty()) throw InputError(key, "needs gap elements (disc_response/gap/pairs)");
+          sv.gap.clearance = v;
+        }
+        try {
+          checkDiscResponse(mesh, sectors, axis, sv);
+        } catch (const InputError& e) {
+          throw InputError(key, at(v) + e.where() + ": " + e.problem());
+        }
+      }
+    }
+  }
 }
 
 DiscReducedModels variedModels(const DiscReducedModels& base, double lossFactor, int modes) {

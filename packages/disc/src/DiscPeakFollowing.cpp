@@ -59,7 +59,10 @@ void followBothWays(const continuation::PeakTrackingProblem& problem,
     o.parameters = *part;
     const auto c = continuation::followPeaks(problem, starts, o);
     whole.sweeps += c.sweeps, whole.searches += c.searches, whole.solves += c.solves;
-    if (!c.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
+    if (!c.complete) {
+      whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + c.stopReason;
+      if (whole.end == continuation::PeakFollowingEnd::Running) whole.end = c.end, whole.branchEnd = c.branchEnd;
+    }
     auto points = c.points;
     if (part == &down) std::reverse(points.begin(), points.end());
     if (part == &up && !whole.points.empty()) points.erase(points.begin());  // the reference, already there
@@ -68,6 +71,7 @@ void followBothWays(const continuation::PeakTrackingProblem& problem,
   }
   whole.seconds = timer.seconds();
   whole.complete = whole.stopReason.empty();
+  if (whole.complete) whole.end = continuation::PeakFollowingEnd::RangeEnd;
   for (std::size_t i = 0; i < whole.points.size(); ++i)
     if (whole.optimum < 0 || out.merit(whole.points[i]) < out.merit(whole.points[std::size_t(whole.optimum)]))
       whole.optimum = int(i);
@@ -97,7 +101,10 @@ void continueBothWays(const continuation::PeakTrackingProblem& problem, const co
     c.from = out.referenceValue, c.to = end;
     const auto run = continuation::continuePeak(problem, start.x, start.frequency, c);
     whole.searches += run.searches, whole.solves += run.solves;
-    if (!run.complete) whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + run.stopReason;
+    if (!run.complete) {
+      whole.stopReason += (whole.stopReason.empty() ? "" : "; ") + run.stopReason;
+      if (whole.end == continuation::PeakFollowingEnd::Running) whole.end = run.end, whole.branchEnd = run.branchEnd;
+    }
     if (run.optimumLocated && run.optimum >= 0)
       located = true, locatedAt = run.points[std::size_t(run.optimum)].parameter;
     auto points = run.points;
@@ -109,6 +116,8 @@ void continueBothWays(const continuation::PeakTrackingProblem& problem, const co
   }
   whole.seconds = timer.seconds();
   whole.complete = whole.stopReason.empty() && !whole.points.empty();
+  if (whole.complete) whole.end = continuation::PeakFollowingEnd::RangeEnd;
+  else if (whole.end == continuation::PeakFollowingEnd::Running) whole.end = continuation::PeakFollowingEnd::NoPeakAtStart;
   for (std::size_t i = 0; i < whole.points.size(); ++i)
     if (whole.optimum < 0 || out.merit(whole.points[i]) < out.merit(whole.points[std::size_t(whole.optimum)]))
       whole.optimum = int(i);
@@ -270,16 +279,16 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   } else {
     const bool stiffness = following.parameter == DiscStudyParameter::ContactStiffness;
     // A law per unit area: each contact's preload is its share of the total, its stiffness
-    // the value per area times its area.
+    // the value per area times its area; a patch per pair holds its pairs' sum.
     std::vector<double> weights;
-    if (spec.contact.law == ShroudContactSpec::Law::PerArea &&
+    if ((spec.contact.law == ShroudContactSpec::Law::PerArea || spec.contact.patches > 0) &&
         following.parameter != DiscStudyParameter::FrictionCoefficient) {
       const auto values = shroudContactValues(
           mesh, shroudContactPairs(mesh, models.sectors, models.sector.axis, spec.contact), spec.contact);
       std::vector<bool> gap(values.kn.size(), false);
       for (int i : spec.gap.pairs) gap[std::size_t(i)] = true;
       for (std::size_t i = 0; i < gap.size(); ++i)
-        if (!gap[i]) weights.push_back(stiffness ? values.stiffnessFactor[i] : values.preloadShare[i]);
+        if (!gap[i]) weights.push_back(stiffness ? values.stiffnessFactor[i] : values.preloadFactor[i]);
     }
     response::selectElementParameter(setup, "contact", stiffness ? "stiffness" : name, out.referenceValue, weights);
   }

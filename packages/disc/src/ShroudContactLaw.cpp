@@ -1,9 +1,11 @@
 #include "cyclone/disc/ShroudContactLaw.hpp"
 
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/disc/ShroudContactPatches.hpp"
 #include "cyclone/mesh/TributaryArea.hpp"
 
 namespace cyclone::disc {
@@ -19,24 +21,50 @@ ShroudContactValues shroudContactValues(const mesh::Mesh& mesh, const mesh::Node
       if (!(std::isfinite(value) && value >= 0))
         throw InputError(std::string("contact/") + name, "must be finite and >= 0, got " + std::to_string(value));
   const std::size_t n = pairs.right.size();
+  if (contact.patches < 0 || std::size_t(contact.patches) > n)
+    throw InputError("contact/patches", "must lie in 0.." + std::to_string(n) + " (0: every node pair a contact; " +
+                                            std::to_string(n) + " pairs on this face), got " +
+                                            std::to_string(contact.patches));
   ShroudContactValues out;
-  out.stiffnessFactor.assign(n, 1.0);
-  out.preloadShare.assign(n, 1.0 / double(n));
-  if (perArea) {
-    const auto t = mesh::tributaryAreas(mesh, pairs.right, "contact/right_node_set '" + contact.rightSet +
-                                                               "' (contact law per area)");
-    out.area = t.area, out.totalArea = t.total;
-    for (std::size_t i = 0; i < n; ++i) out.stiffnessFactor[i] = t.area[i], out.preloadShare[i] = t.area[i] / t.total;
+  out.pairs = int(n);
+  // Each pair's own share: its tributary area (PerArea) or one (PerPair); patches weigh
+  // their pairs' motions by it.
+  std::vector<double> pairArea(n, 1.0);
+  double totalArea = double(n);
+  if (perArea || contact.patches > 0) {
+    const auto t = mesh::tributaryAreas(mesh, pairs.right, "contact/right_node_set '" + contact.rightSet + "' (" +
+                                                               (perArea ? "contact law per area" : "contact patches") +
+                                                               ")");
+    if (perArea) pairArea = t.area, totalArea = t.total;
+    if (contact.patches > 0) {
+      std::vector<Eigen::Vector3d> points;
+      for (auto node : pairs.right) points.emplace_back(mesh.coords[node][0], mesh.coords[node][1], mesh.coords[node][2]);
+      out.members = splitIntoPatches(points, t.area, contact.patches);
+    }
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    out.kn.push_back(contact.kn * out.stiffnessFactor[i]);
-    out.kt.push_back(contact.kt * out.stiffnessFactor[i]);
-    out.preload.push_back(perArea ? contact.preload * out.preloadShare[i] : contact.preload);
+  if (out.members.empty())
+    for (std::size_t i = 0; i < n; ++i) out.members.push_back({int(i)});
+  for (const auto& m : out.members) {
+    double share = 0;
+    for (int i : m) share += pairArea[std::size_t(i)];
+    std::vector<double> w;
+    for (int i : m) w.push_back(pairArea[std::size_t(i)] / share);
+    out.memberWeights.push_back(std::move(w));
+    if (perArea) out.area.push_back(share);
+    // Per area the contact's stiffness is the law's times its area and its preload the
+    // total's share; per pair both are the pair's times the pairs it holds.
+    out.stiffnessFactor.push_back(share);
+    out.preloadFactor.push_back(perArea ? share / totalArea : share);
+    out.kn.push_back(contact.kn * out.stiffnessFactor.back());
+    out.kt.push_back(contact.kt * out.stiffnessFactor.back());
+    out.preload.push_back(contact.preload * out.preloadFactor.back());
     out.totalKn += out.kn.back(), out.totalKt += out.kt.back(), out.totalPreload += out.preload.back();
   }
+  if (perArea) out.totalArea = totalArea;
   std::ostringstream text;
   text.precision(4);
   text << "shroud contact: " << n << " node pairs, ";
+  if (contact.patches > 0) text << "in " << out.members.size() << " patches (each one contact on its mean motion), ";
   if (perArea)
     text << "law per unit area over " << out.totalArea << " mm^2 (kn " << contact.kn << ", kt " << contact.kt
          << stiffnessUnit << ", normal load " << contact.preload << " N in all)";

@@ -10,6 +10,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
+#include "cyclone/solvers/SparseCholesky.hpp"
 
 namespace cyclone::solvers {
 
@@ -109,16 +110,41 @@ struct CholmodWithConditionEstimate : Eigen::CholmodDecomposition<SparseMatrix, 
   double rcond() { return m_cholmodFactor ? cholmod_rcond(m_cholmodFactor, &cholmod()) : 0.0; }
 };
 
+using ComplexSparse = Eigen::SparseMatrix<std::complex<double>, Eigen::ColMajor, int>;
+
+namespace {
+
+// The lower triangle of the Hermitian H = P + iQ from the lower triangle of its paired
+// real form [[P, -Q], [Q, P]] (pairs (2m, 2m+1)): H(m, n) = A(2m, 2n) + i A(2m+1, 2n),
+// both in the real form's lower triangle where m >= n. A's storage is released as it is
+// read (the real form's matrix is the largest thing held beside the factor).
+ComplexSparse hermitianOfPairs(SparseMatrix&& lower) {
+  std::vector<Eigen::Triplet<std::complex<double>, int>> entries;
+  entries.reserve(std::size_t(lower.nonZeros() / 4 + lower.cols()));
+  for (int col = 0; col < lower.outerSize(); col += 2)
+    for (SparseMatrix::InnerIterator it(lower, col); it; ++it)
+      entries.emplace_back(it.row() / 2, col / 2,
+                           it.row() % 2 == 0 ? std::complex<double>(it.value(), 0) : std::complex<double>(0, it.value()));
+  const int n = int(lower.rows() / 2);
+  SparseMatrix().swap(lower);
+  ComplexSparse H(n, n);
+  H.setFromTriplets(entries.begin(), entries.end());
+  return H;
+}
+
+}  // namespace
+
 struct DirectSolver::Impl {
   explicit Impl(const linalg::Matrix& A) : gather(A) {}
   RootGather gather;
   CholmodWithConditionEstimate cholmod;
+  std::unique_ptr<SparseCholesky<std::complex<double>>> paired;  // TravellingWavePairs: the factor of H
   Statistics stats;
   double rcond = 0;
 };
 
 DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, double sigma,
-                           Definiteness definiteness)
+                           Definiteness definiteness, Structure structure)
     : impl_(std::make_unique<Impl>(A)) {
   auto& I = *impl_;
   Timer timer;
@@ -132,6 +158,30 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
 
   timer.restart();
   const bool positive = definiteness == Definiteness::Positive;
+  if (positive && structure == Structure::TravellingWavePairs) {
+    if (n % 2 != 0)
+      throw SolverError("travelling-wave solve: an odd number of equations (" + std::to_string(n) + ") cannot pair");
+    std::string failure;
+    if (I.gather.root) {
+      try {
+        I.paired = std::make_unique<SparseCholesky<std::complex<double>>>(hermitianOfPairs(std::move(S)));
+        I.stats.nonzerosFactor = I.paired->factorNonzeros();
+        I.stats.flops = I.paired->factorFlops();
+        I.rcond = I.paired->reciprocalCondition();
+      } catch (const SolverError& e) {
+        failure = e.what();
+      }
+    }
+    int ok = failure.empty();
+    Teuchos::broadcast(*comm, 0, &ok);
+    Teuchos::broadcast(*comm, 0, &I.rcond);
+    I.stats.factorSeconds = timer.seconds();
+    if (!ok)
+      throw SolverError(failure.empty() ? "CHOLMOD: the matrix (" + std::to_string(n) +
+                                              " equations) is not positive definite"
+                                        : failure);
+    return;
+  }
   int ok = 1;
   if (I.gather.root) {
     I.cholmod.setMode(positive ? Eigen::CholmodSupernodalLLt : Eigen::CholmodLDLt);
@@ -163,10 +213,19 @@ double DirectSolver::reciprocalCondition() const { return impl_->rcond; }
 void DirectSolver::solve(const linalg::MultiVector& b, linalg::MultiVector& x) const {
   const auto& I = *impl_;
   const Eigen::MatrixXd rhs = I.gather.columns(b);
-  I.gather.scatter(I.gather.root ? Eigen::MatrixXd(I.cholmod.solve(rhs)) : Eigen::MatrixXd(), x);
+  if (!I.gather.root) return I.gather.scatter(Eigen::MatrixXd(), x);
+  if (!I.paired) return I.gather.scatter(Eigen::MatrixXd(I.cholmod.solve(rhs)), x);
+  // [x_a; x_b] pairs are the real and imaginary parts of H^{-1} (b_a + i b_b).
+  const Eigen::Index half = rhs.rows() / 2;
+  Eigen::MatrixXcd c(half, rhs.cols());
+  for (Eigen::Index m = 0; m < half; ++m)
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j) c(m, j) = {rhs(2 * m, j), rhs(2 * m + 1, j)};
+  const Eigen::MatrixXcd z = I.paired->solve(c);
+  Eigen::MatrixXd out(rhs.rows(), rhs.cols());
+  for (Eigen::Index m = 0; m < half; ++m)
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j) out(2 * m, j) = z(m, j).real(), out(2 * m + 1, j) = z(m, j).imag();
+  I.gather.scatter(out, x);
 }
-
-using ComplexSparse = Eigen::SparseMatrix<std::complex<double>, Eigen::ColMajor, int>;
 
 namespace {
 

@@ -203,6 +203,11 @@ double SparseCholesky<Scalar>::factorFlops() const {
   return impl_->cholmod.cholmod().fl;
 }
 
+template <class Scalar>
+double SparseCholesky<Scalar>::reciprocalCondition() const {
+  return impl_->cholmod.rcond();
+}
+
 template class SparseCholesky<double>;
 template class SparseCholesky<std::complex<double>>;
 

@@ -4,6 +4,7 @@
 // frequency range from the resonance estimate unless given, the curve traced with the
 // disc's continuation defaults, its checks, and the headline peak: the harmonics
 // check's highest level found, converged to 1 % or labelled an estimate.
+#include <cmath>
 #include <complex>
 #include <optional>
 #include <string>
@@ -56,9 +57,21 @@ struct DiscHeadline {
 /// The headline of a traced curve (found = false when the harmonics check found no peak).
 DiscHeadline discHeadline(const response::ForcedResponseResult& curve);
 
+/// Patches (ShroudContactSpec::patches) against every node pair, where both can be
+/// compared cheaply: the stuck system's resonance (harmonic 1, the contacts linear), the
+/// patches' discretisation error where they do not slip or open.
+struct PatchesCheck {
+  double stuckHz = 0, everyPairStuckHz = 0;
+  double stuckAmplitude = 0, everyPairStuckAmplitude = 0;  ///< mm
+  /// |patches / every pair - 1| of the frequency and of the amplitude.
+  double frequencyChange() const { return std::abs(stuckHz / everyPairStuckHz - 1); }
+  double amplitudeChange() const { return std::abs(stuckAmplitude / everyPairStuckAmplitude - 1); }
+};
+
 struct DiscForcedResponse {
   std::optional<ResonanceEstimate> estimate;  ///< none when it failed and the range was given
-  std::string estimateText;  ///< what the estimate found, or why it failed
+  std::optional<PatchesCheck> patchesCheck;   ///< with patches and an estimate
+  std::string estimateText;  ///< what the estimate found (and the patches against every pair), or why it failed
   double fromHz = 0, toHz = 0;
   response::ForcedResponseSetup setup;  ///< the system as traced (its state at the curve's end)
   response::ForcedResponseResult curve;

@@ -32,6 +32,10 @@ struct ShroudContactSpec {
   std::string leftSet = "shroud_contact_left", rightSet = "shroud_contact_right";
   double kn = 1e4 / 2.4, kt = 1e4 / 2.4, mu = 0.4;  ///< N/mm^3 (Law::PerArea), or N/mm per pair
   double preload = 0;  ///< N0: normal force at zero relative displacement per pair, or the interface's (N)
+  /// 0: every node pair a contact. Else the face split into this many patches, each one
+  /// contact on its pairs' mean motion (ShroudContactPatches.hpp): fewer contacts for
+  /// the harmonic balance, the same interface (area, stiffness, load).
+  int patches = 0;
   /// The contact frame, unit and orthogonal: the normal points from this sector into the
   /// next; zero vectors: the cyclic plane's normal at the right face and the radial direction.
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(), tangent = Eigen::Vector3d::Zero();
@@ -108,6 +112,7 @@ continuation::ContinuationOptions discContinuationOptions(
 struct ResonanceEstimate {
   int nodalDiameter = 0;
   double freeHz = 0, stuckHz = 0;
+  double stuckAmplitude = 0;  ///< the output DOF's at stuckHz, the contacts stuck (mm)
 };
 ResonanceEstimate estimateResonance(response::ForcedResponseSetup& setup, const DiscReducedModels& models, int family = 1);
 

@@ -47,6 +47,14 @@ std::vector<DiscStudyCurve> studyDisc(const mesh::Mesh& mesh, const DiscReducedM
                                       DiscStudyParameter parameter, const std::vector<double>& values,
                                       const DiscSweepOptions& options, const DiscStudyVisitor& visit = {});
 
+/// Every value of a study checked before any work (InputError naming
+/// disc_response/studies/<name> and the value): the contact and excitation values as
+/// checkDiscResponse checks the spec's, a loss factor >= 0, modes from 1 to the models'
+/// `modes`, harmonics from 1 to `maxHarmonic` (the highest the models are built for).
+void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                          const DiscResponseSpec& spec, DiscStudyParameter parameter, const std::vector<double>& values,
+                          int modes, int maxHarmonic);
+
 /// The models with another loss factor (>= 0) or fewer modes (> 0; else kept): hybrid and
 /// truncation models only (InputError otherwise).
 DiscReducedModels variedModels(const DiscReducedModels& base, double lossFactor, int modes);

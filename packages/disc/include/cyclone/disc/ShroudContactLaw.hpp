@@ -1,7 +1,8 @@
 #pragma once
-// Each shroud contact pair's law from the spec (ShroudContactSpec::Law): per pair as
-// given, or per unit area, the pair's share of the interface by the tributary area of its
-// right-face node.
+// Each shroud contact's law from the spec (ShroudContactSpec::Law): per pair as given, or
+// per unit area, the pair's share of the interface by the tributary area of its right-face
+// node. A contact is a node pair, or a patch of them (ShroudContactSpec::patches): the
+// patch's law is the sum of its pairs', on their mean motion (ShroudContactPatches.hpp).
 #include <string>
 #include <vector>
 
@@ -11,19 +12,26 @@
 namespace cyclone::disc {
 
 struct ShroudContactValues {
-  std::vector<double> area;             ///< per pair, mm^2 (Law::PerArea; empty for PerPair)
-  std::vector<double> kn, kt, preload;  ///< per pair: N/mm, N/mm, N
+  /// Per contact: its node pairs (indices into the pairing) and the weights of their
+  /// motions in the contact's (summing to 1: by tributary area for PerArea, equal for
+  /// PerPair). Without patches each contact is one pair of weight 1.
+  std::vector<std::vector<int>> members;
+  std::vector<std::vector<double>> memberWeights;
+  std::vector<double> area;             ///< per contact, mm^2 (Law::PerArea; empty for PerPair)
+  std::vector<double> kn, kt, preload;  ///< per contact: N/mm, N/mm, N
+  int pairs = 0;                        ///< node pairs over all contacts
   double totalArea = 0;                 ///< the interface's (Law::PerArea)
-  double totalKn = 0, totalKt = 0, totalPreload = 0;  ///< sums over the pairs
-  /// The preload's share of each pair (its area's for PerArea, 1 / pairs for PerPair) and
-  /// the stiffness's factor (its area for PerArea, 1 for PerPair): a study of the spec's
-  /// preload or stiffness moves each pair's by these.
-  std::vector<double> preloadShare, stiffnessFactor;
-  std::string text;  ///< one line: the law and the interface's totals
+  double totalKn = 0, totalKt = 0, totalPreload = 0;  ///< sums over the contacts
+  /// What multiplies the spec's preload and stiffness to give each contact's (its area's
+  /// share and its area for PerArea, its number of pairs for PerPair): a study of the
+  /// spec's preload or stiffness moves each contact's by these.
+  std::vector<double> preloadFactor, stiffnessFactor;
+  std::string text;  ///< one line: the law, the patches and the interface's totals
 };
 
-/// InputError naming `contact` for a negative or non-finite value, and (PerArea) where
-/// the right set's nodes do not make a surface (mesh::tributaryAreas).
+/// InputError naming `contact` for a negative or non-finite value, (PerArea or patches)
+/// where the right set's nodes do not make a surface (mesh::tributaryAreas), and
+/// `contact/patches` for more patches than pairs.
 ShroudContactValues shroudContactValues(const mesh::Mesh& mesh, const mesh::NodePairing& pairs,
                                         const ShroudContactSpec& contact);
 

@@ -46,6 +46,7 @@ public:
 
   double factorNonzeros() const;  ///< nnz(L)
   double factorFlops() const;     ///< CHOLMOD's flop count of the factorization
+  double reciprocalCondition() const;  ///< CHOLMOD's estimate (min/max pivot, squared for LL^H)
 
 private:
   SparseCholesky(const Matrix& A, Matrix* release);
