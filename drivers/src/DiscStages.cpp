@@ -351,6 +351,22 @@ DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int
   for (const auto& name : studyNames)
     if (stages.studies.has(name) && stages.studies.getDoubleList(name, {}).empty())
       throw InputError(stages.studies.where(name), "needs a list of values");
+  // And each value, before any work (a negative mu was refused after the reference curve).
+  if (forcedResponse) {
+    const auto& plan = stages.plan;
+    int top = plan.harmonicsCheckTo;
+    for (int h : plan.spec.harmonics) top = std::max(top, h);
+    for (const auto& name : studyNames) {
+      if (!stages.studies.has(name)) continue;
+      try {
+        disc::checkDiscStudyValues(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, plan.spec,
+                                   *disc::discStudyParameterFromName(name), stages.studies.getDoubleList(name, {}),
+                                   plan.modelSpec.modes, top);
+      } catch (const InputError& e) {
+        throw InputError(stages.studies.where(name), e.problem());
+      }
+    }
+  }
   d.rejectUnknownKeys();
   return stages;
 }

@@ -371,10 +371,12 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
     if (p.element->recommendedSamples() > 0)  // a nonsmooth law: samples that grow with the harmonics too
       recommended = std::max({recommended, p.element->recommendedSamples(), harmonics.nonsmoothSamples()});
   const int samples = scene.getInt("samples", recommended);
-  if (samples < 1 || samples > kMaxSamples)
-    throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in 1.." +
-                                                 std::to_string(kMaxSamples) + " time samples per period (every "
-                                                 "residual costs in proportion; the default here is " +
+  if (samples < harmonics.minimumSamples() || samples > kMaxSamples)
+    throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in " +
+                                                 std::to_string(harmonics.minimumSamples()) + ".." +
+                                                 std::to_string(kMaxSamples) + " time samples per period (2 H + 1 "
+                                                 "resolve harmonic H = " + std::to_string(harmonics.maxHarmonic()) +
+                                                 "; every residual costs in proportion; the default here is " +
                                                  std::to_string(recommended) + ")");
   setup.dofNames = in.dofNames;
   for (int d = int(setup.dofNames.size()); d < in.n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));

@@ -96,13 +96,15 @@ void responseSections(std::ostringstream& r, const std::string& outDir) {
   }
 }
 
-// The value-list studies' figures and tables, and the peaks followed over a parameter
-// (this run's only).
+// The value-list studies' figures and tables, and the peaks followed over a parameter:
+// this run's only (an earlier run's study_* files in the same directory made a section of
+// a run that had no studies).
 void studySections(std::ostringstream& r, const std::string& outDir, const SceneSummary& summary) {
   bool studies = false;
-  for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
-    const auto name = entry.path().filename().string();
-    if (name.rfind("study_", 0) != 0 || entry.path().extension() != ".svg") continue;
+  for (const auto& path : summary.written) {
+    const std::filesystem::path entry(path);
+    const auto name = entry.filename().string();
+    if (name.rfind("study_", 0) != 0 || entry.extension() != ".svg") continue;
     const std::string base = name.substr(0, name.size() - 4);
     if (exists(outDir, base + ".h5")) continue;  // one curve of a study (its points): the study's figure shows it
     if (!studies) r << "## Parameter studies\n\n", studies = true;

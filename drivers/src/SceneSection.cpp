@@ -3,8 +3,10 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
+#include <map>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 #include "cyclone/core/Error.hpp"
 
@@ -85,12 +87,41 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
   std::ostringstream text;
   std::string line;
   int number = 0, keyIndent = -1, listIndent = -1;
+  bool anything = false;
+  // The block mappings' keys seen so far, per indentation of the mappings open at this
+  // line (a key given twice: the YAML parser said only "Parser failure at line 15").
+  static const std::regex blockKey(R"(^(- )?([A-Za-z_][A-Za-z0-9_.-]*)[ \t]*:([ \t]|$))");
+  std::vector<std::pair<int, std::map<std::string, int>>> open;
   while (std::getline(in, line)) {
     ++number;
     const auto first = line.find_first_not_of(' ');
     const bool blank = first == std::string::npos || line[first] == '#';
     const int indent = blank ? -1 : int(first);
     const std::string content = blank ? std::string() : line.substr(first);
+    if (!blank && !anything) {
+      anything = true;
+      if (content.rfind("- ", 0) == 0 || content == "-")
+        throw InputError(source + ": line " + std::to_string(number),
+                         "the scene is a list; it must be a mapping: `cyclone:` and its sections under it");
+    }
+    if (!blank) {
+      std::smatch key;
+      if (std::regex_search(content, key, blockKey)) {
+        // A list item's key opens a mapping two columns in; the mappings deeper than
+        // this key's are closed, and so is its own where a list item starts it.
+        const int at = indent + (key[1].matched ? 2 : 0);
+        while (!open.empty() && (open.back().first > at || (key[1].matched && open.back().first == at))) open.pop_back();
+        if (open.empty() || open.back().first < at) open.push_back({at, {}});
+        auto& keys = open.back().second;
+        const auto [it, fresh] = keys.emplace(key[2].str(), number);
+        if (!fresh)
+          throw InputError(source + ": line " + std::to_string(number),
+                           "the key '" + key[2].str() + "' is given twice in the same section (first at line " +
+                               std::to_string(it->second) + ")");
+      } else {
+        while (!open.empty() && open.back().first > indent) open.pop_back();
+      }
+    }
     if (!blank) {
       std::string code = content;  // without a trailing comment or quoted text
       for (std::size_t i = 0; i < code.size(); ++i)
@@ -114,6 +145,9 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
     if (listIndent >= 0 && !blank) line.insert(0, "  ");
     text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList + "$2") << "\n";
   }
+  if (!anything)
+    throw InputError(source, "the scene is empty (nothing but blank lines and comments): it needs `cyclone:` and its "
+                             "sections, e.g. `cyclone print-demo-scene`");
   return text.str();
 }
 

@@ -1,12 +1,15 @@
 // Deterministic mutation fuzzing of Cyclone's readers (issue 20): the mesh readers
-// (.inp, .msh ASCII and binary, .exo with results) and the scene's YAML reading,
-// each fed mutations of valid seed files for a bounded time. Every input runs in a
+// (.inp, .msh ASCII and binary, .exo with results), the scene's YAML reading, and the
+// files a run reuses (issue 49): a reduced model's HDF5 cache file and a trace
+// checkpoint, each fed mutations of valid seed files for a bounded time. A reused file
+// must be refused (or, for a checkpoint, not loaded) or read back as it was written: a
+// mutated byte that changes what is read is a failure (a silently changed answer). Every input runs in a
 // child process under a time limit (a hang) and an address-space limit (a memory
 // blow-up); the reader must return or throw cyclone's Error. A crash, a hang, a
 // blow-up or another exception fails the run, and the input is kept under
 // fuzz_findings/ to reproduce it. Same seed, same inputs: a failure reproduces.
 //
-//   fuzz_readers <inp|msh|exo|yaml> [seconds] [seed]
+//   fuzz_readers <inp|msh|exo|yaml|rom|checkpoint> [seconds] [seed]
 #include <gmsh.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -25,6 +28,8 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/io/ReducedModelFile.hpp"
+#include "cyclone/io/TraceCheckpointDirectory.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/mesh/GmshIO.hpp"
@@ -75,6 +80,53 @@ void gmshBox(const fs::path& path, bool binary) {
   gmsh::finalize();
 }
 
+// A small hybrid model's record (6 retained DOFs, 3 modes, a load pattern): what the
+// disc chain caches per nodal diameter.
+io::ReducedModelRecord smallModelRecord() {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  rom::RetainedModes modes;
+  modes.eigenvalues = {1.0e6, 4.0e6, 9.0e6};
+  modes.shapes = Eigen::MatrixXd::NullaryExpr(6, 3, [&] { return u(rng); });
+  modes.loads = Eigen::MatrixXd::NullaryExpr(3, 1, [&] { return u(rng); });
+  rom::StaticCompliance compliance;
+  const Eigen::MatrixXd A = Eigen::MatrixXd::NullaryExpr(6, 6, [&] { return u(rng); });
+  compliance.matrix = A * A.transpose() + Eigen::MatrixXd::Identity(6, 6);
+  compliance.loadResponse = Eigen::MatrixXd::NullaryExpr(6, 1, [&] { return u(rng); });
+  const rom::HybridFrfModel model(modes, compliance, 0.006);
+  return io::makeReducedModelRecord(model, 2, 8, 10000, {0, 0, 0, 1, 1, 1}, {0, 1, 2, 0, 1, 2}, {0, 0, 0, 0, 0, 0});
+}
+
+// A trace's state part way (3 points of 4 unknowns, tangents, the step's scales).
+continuation::TraceState smallTraceState() {
+  continuation::TraceState s;
+  for (int i = 0; i < 3; ++i) {
+    s.branch.points.push_back({1.0 + 0.1 * i, Eigen::VectorXd::LinSpaced(4, i, i + 1.5)});
+    s.tangentX.push_back(Eigen::VectorXd::Constant(4, 0.5 * i));
+    s.tangentP.push_back(0.25 * i), s.measures.push_back(1.0 + i);
+  }
+  s.directionX = Eigen::VectorXd::Constant(4, 0.5), s.directionP = 0.5, s.step = 0.01, s.scaleP = 2;
+  s.scaleX = {1.5, 2.5}, s.largestNorm = {3.0, 4.0}, s.scaleFloor = {1e-3, 1e-2};
+  s.retractions = 1, s.anchor = 2, s.secant = 1, s.heldSteps = {1, 0, 1};
+  return s;
+}
+
+// What a checkpoint's reader must give back: the state as saved, value for value.
+bool sameState(const continuation::TraceState& a, const continuation::TraceState& b) {
+  if (a.branch.points.size() != b.branch.points.size() || a.complete != b.complete || a.tangentX.size() != b.tangentX.size())
+    return false;
+  for (std::size_t i = 0; i < a.branch.points.size(); ++i)
+    if (a.branch.points[i].parameter != b.branch.points[i].parameter || a.branch.points[i].x != b.branch.points[i].x ||
+        a.tangentX[i] != b.tangentX[i])
+      return false;
+  return a.tangentP == b.tangentP && a.measures == b.measures && a.directionX == b.directionX &&
+         a.directionP == b.directionP && a.step == b.step && a.scaleP == b.scaleP && a.scaleX == b.scaleX &&
+         a.largestNorm == b.largestNorm && a.scaleFloor == b.scaleFloor && a.retractions == b.retractions &&
+         a.anchor == b.anchor && a.creepChecked == b.creepChecked && a.secant == b.secant &&
+         a.smoothRun == b.smoothRun && a.heldSteps == b.heldSteps && a.branch.end == b.branch.end &&
+         a.branch.stopReason == b.branch.stopReason;
+}
+
 // Valid files of the reader's kind.
 std::vector<std::string> seeds(const std::string& reader, const fs::path& work) {
   std::vector<std::string> out;
@@ -105,6 +157,14 @@ std::vector<std::string> seeds(const std::string& reader, const fs::path& work) 
     }
     mesh::writeExodus((work / "seed.exo").string(), m, r);
     out.push_back(readFile(work / "seed.exo"));
+  } else if (reader == "rom") {
+    io::writeReducedModelHdf5((work / "seed.rom").string(), smallModelRecord());
+    out.push_back(readFile(work / "seed.rom"));
+  } else if (reader == "checkpoint") {
+    io::TraceCheckpointDirectory dir((work / "seed_checkpoints").string());
+    fs::create_directories(work / "seed_checkpoints");
+    dir.save("k", smallTraceState());
+    out.push_back(readFile(work / "seed_checkpoints" / "trace_k.h5"));
   } else if (reader == "yaml") {
     out.push_back(scenes::demoScene());
     for (const auto& e : fs::directory_iterator(CYCLONE_SCENE_DIR))
@@ -161,8 +221,24 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
   return s;
 }
 
+enum Outcome { Ok = 0, MemoryBlowUp = 4, OtherException = 5, UnknownThrow = 6, SilentChange = 7 };
+
 void read(const std::string& reader, const std::string& path) {
-  if (reader == "inp") mesh::readAbaqusInp(path);
+  if (reader == "rom") {
+    // Refused (an Error, or read without a digest to verify it by, which the disc cache
+    // refuses: "it carries no content digest"), or what was written.
+    const auto record = io::readReducedModelHdf5(path);
+    if (record.contentVerified && io::contentDigest(record) != io::contentDigest(smallModelRecord()))
+      _exit(SilentChange);
+  } else if (reader == "checkpoint") {
+    // Not loaded (computed again), or the state as saved.
+    const fs::path dir = fs::path(path).parent_path() / ("checkpoints_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    fs::copy_file(path, dir / "trace_k.h5", fs::copy_options::overwrite_existing);
+    const auto state = io::TraceCheckpointDirectory(dir.string(), true).load("k");
+    fs::remove_all(dir);
+    if (state && !sameState(*state, smallTraceState())) _exit(SilentChange);
+  } else if (reader == "inp") mesh::readAbaqusInp(path);
   else if (reader == "msh") mesh::readGmsh(path);
   else if (reader == "exo") {
     mesh::readExodus(path);
@@ -181,8 +257,6 @@ void read(const std::string& reader, const std::string& path) {
   }
 }
 
-enum Outcome { Ok = 0, MemoryBlowUp = 4, OtherException = 5, UnknownThrow = 6 };
-
 // 0: returned or threw cyclone's Error; otherwise what went wrong.
 std::string runChild(const std::string& reader, const std::string& path) {
   const pid_t pid = fork();
@@ -192,6 +266,9 @@ std::string runChild(const std::string& reader, const std::string& path) {
     setrlimit(RLIMIT_AS, &limit);
 #endif
     alarm(kSecondsPerInput);
+    // HDF5's error stacks and the checkpoint reader's warnings, thousands of them: the
+    // outcome is the exit status (the input is kept to reproduce a failure).
+    if (reader == "rom" || reader == "checkpoint") std::freopen("/dev/null", "w", stderr);
     try {
       read(reader, path);
     } catch (const Error&) {
@@ -216,6 +293,7 @@ std::string runChild(const std::string& reader, const std::string& path) {
     case Ok: return "";
     case MemoryBlowUp: return "memory blow-up (std::bad_alloc under a 4 GB address space)";
     case OtherException: return "an exception other than cyclone::Error";
+    case SilentChange: return "read back with other content than was written (a silently changed answer)";
     default: return "an unknown exception";
   }
 }
@@ -224,7 +302,7 @@ std::string runChild(const std::string& reader, const std::string& path) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: fuzz_readers <inp|msh|exo|yaml> [seconds] [seed]\n");
+    std::fprintf(stderr, "usage: fuzz_readers <inp|msh|exo|yaml|rom|checkpoint> [seconds] [seed]\n");
     return 2;
   }
   const std::string reader = argv[1];

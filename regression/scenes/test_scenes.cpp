@@ -1755,7 +1755,7 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                     "  samples: 2000000\n",
                 dir);
   EXPECT_NE(msg.find("cyclone/samples"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("must lie in 1..65536"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must lie in 15..65536 time samples per period (2 H + 1 resolve harmonic H = 7"), std::string::npos) << msg;
   msg = failure(base + "    M: [1.0, 0.0, 0.0, -1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce + range, dir);
   EXPECT_NE(msg.find("cyclone/system/M"), std::string::npos) << msg;
   EXPECT_NE(msg.find("positive definite"), std::string::npos) << msg;
@@ -2253,6 +2253,39 @@ TEST(Scenes, SectionsNoAnalysisReadsAreRefusedOrSaid) {
 // loads, which the disc chain reads only for its speed, passed silently). Each scene
 // below, the demo's on its coarsest mesh, must be refused naming the key, before the
 // static stage writes anything, in well under the seconds the stages would take.
+// A matrix scene's zero excitation (a curve of zeros, "end of the parameter range
+// reached", exit 0) and too few samples for its harmonics (refused by the AFT naming no
+// key): refused naming the key.
+TEST(Scenes, AZeroForceAndTooFewSamplesAreRefused) {
+  log::setQuiet(true);
+  const auto dir = freshDir("zero_force");
+  for (const auto& [pattern, replacement, what] :
+       {std::tuple<std::string, std::string, std::string>{"cos: 0.18", "cos: 0.0", "excitation: is zero"},
+        {"samples: 64", "samples: 3", "'cyclone/samples': 3: must lie in 15.."}}) {
+    const std::string msg = failure(duffingSceneWith(pattern, replacement), dir);
+    EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  }
+}
+
+// The report is this run's: an earlier run's study figure and table in the same output
+// directory made a "Parameter studies" section of a run that had none.
+TEST(Scenes, TheReportShowsOnlyThisRunsStudies) {
+  log::setQuiet(true);
+  const auto dir = freshDir("stale_study");
+  fs::create_directories(dir);
+  std::ofstream(dir / "study_preload.svg") << "<svg xmlns='http://www.w3.org/2000/svg'/>";
+  std::ofstream(dir / "study_preload.csv") << "preload,peak_hz,peak\n1,2,3\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  scenes::runSceneText(duffingSceneWith("output_directory: duffing_out", "output_directory: x"), "duffing.yaml", o,
+                       Tpetra::getDefaultComm());
+  std::ifstream in(dir / "report.md");
+  std::stringstream report;
+  report << in.rdbuf();
+  EXPECT_NE(report.str().find("# Cyclone run report"), std::string::npos);
+  EXPECT_EQ(report.str().find("Parameter studies"), std::string::npos) << report.str();
+}
+
 TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
   log::setQuiet(true);
   const auto dir = freshDir("keys_before_work");
@@ -2300,6 +2333,50 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
         << msg;
     EXPECT_LT(timer.seconds(), 10.0);
     EXPECT_FALSE(fs::exists(dir / "static.exo"));
+  }
+  // Contact patches: more than the face's pairs, and beside gap elements (which name
+  // pairs), refused with the key before the work.
+  for (const auto& [patches, gap, key, what] :
+       {std::tuple<int, bool, std::string, std::string>{400, false, "cyclone/disc_response/contact/patches",
+                                                        "must lie in 0.."},
+        {4, true, "cyclone/disc_response/gap/pairs", "names node pairs, which contact/patches groups"}}) {
+    Timer timer;
+    std::string scene = demoWith("[static, modal, disc_response]", "      mu: 0.4\n",
+                                 "      mu: 0.4\n      patches: " + std::to_string(patches) + "\n");
+    if (gap) scene = std::regex_replace(scene, std::regex("\n    excitation:\n"), "\n    gap: {pairs: [0]}\n    excitation:\n");
+    const std::string msg = failure(scene, dir);
+    EXPECT_NE(msg.find("'" + key + "': " + what), std::string::npos) << msg;
+    EXPECT_LT(timer.seconds(), 10.0);
+    EXPECT_FALSE(fs::exists(dir / "static.exo"));
+  }
+  // Values, each refused naming its key before the work (a probe of the shipped build
+  // found these refused only after the reduced models or the reference curve, or not at
+  // all: check_frequencies -1 skipped the check, a study of 50 modes used the models' 20).
+  const struct {
+    std::string from, to, key, what;
+  } values[] = {
+      {"    engine_order: 3\n", "    engine_order: 3\n    samples: 1\n", "cyclone/disc_response/samples",
+       "1: must lie in 3.."},
+      {"      preload: [16000.0,", "      mu: [0.2, -1.0]\n      preload: [16000.0,",
+       "cyclone/disc_response/studies/mu", "the value -1: contact"},
+      {"      preload: [16000.0,", "      modes: [50]\n      preload: [16000.0,",
+       "cyclone/disc_response/studies/modes", "the value 50: must be a whole number of modes from 1 to the reduced "
+                                              "models' 20"},
+      {"      preload: [16000.0,", "      force: [0.0]\n      preload: [16000.0,",
+       "cyclone/disc_response/studies/force", "the value 0: excitation/amplitude: must be finite and not zero"},
+      {"      amplitude: 20.0\n", "      amplitude: 0.0\n", "cyclone/disc_response/excitation/amplitude",
+       "must be finite and not zero"},
+      {"      mu: 0.4\n", "      mu: 0.4\n      normal: [1.0, 0.0, 0.0]\n      tangent: [1.0, 0.0, 0.0]\n",
+       "cyclone/disc_response/contact/normal, contact/tangent", "contact frame not orthonormal"},
+      {"    modes: 20\n", "    modes: 20\n    check_frequencies: -1\n", "cyclone/reduced_model/check_frequencies",
+       "-1: must be >= 0"},
+  };
+  for (const auto& c : values) {
+    Timer timer;
+    const std::string msg = failure(demoWith("[static, modal, disc_response]", c.from, c.to), dir);
+    EXPECT_NE(msg.find("'" + c.key + "': " + c.what), std::string::npos) << c.key << ": " << msg;
+    EXPECT_LT(timer.seconds(), 10.0) << c.key;
+    EXPECT_FALSE(fs::exists(dir / "static.exo")) << c.key;
   }
   {  // harmonics 500: the friction solve's cost known from the contact pairs (it was refused
      // only after the reduced models were built)
@@ -2368,6 +2445,23 @@ TEST(Scenes, YamlTeuchosDoesNotTakeIsReadOrRefusedPlainly) {
   std::string msg = failure(duffingSceneWith("  samples: 64", "  samples: &s 64"), dir);
   EXPECT_NE(msg.find("anchors and aliases"), std::string::npos) << msg;
   EXPECT_TRUE(std::regex_search(msg, std::regex("bad.yaml: line [0-9]+"))) << msg;
+  // A key given twice, an empty or comment-only scene, a list for a scene: said as such
+  // (the parser said "Parser failure at line 15 column 6", "Could not tokenize this").
+  msg = failure(duffingSceneWith("    K: \\[1.0\\]", "    K: [1.0]\n    K: [2.0]"), dir);
+  EXPECT_NE(msg.find("the key 'K' is given twice in the same section (first at line"), std::string::npos) << msg;
+  for (const std::string empty : {"", "\n\n", "# only a comment\n  # another\n"}) {
+    msg = failure(empty, dir);
+    EXPECT_NE(msg.find("the scene is empty"), std::string::npos) << msg;
+  }
+  msg = failure("- cyclone:\n    analysis: static\n", dir);
+  EXPECT_NE(msg.find("the scene is a list; it must be a mapping"), std::string::npos) << msg;
+  // The same key in two list items, or in sibling sections, is not twice.
+  {
+    scenes::SceneOverrides o;
+    o.outputDirectory = freshDir("yaml_siblings").string();
+    const std::string siblings = std::regex_replace(plain, std::regex("      k3: 0.1"), "      k3: 0.1\n  # dof: here\n");
+    EXPECT_NO_THROW(scenes::runSceneText(siblings, "siblings.yaml", o, Tpetra::getDefaultComm()));
+  }
   fs::create_directories(dir);
   try {
     scenes::runSceneFile(dir.string(), {}, Tpetra::getDefaultComm());

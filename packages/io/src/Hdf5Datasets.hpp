@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/Error.hpp"
 
 namespace cyclone::io::hdf5 {
 
@@ -39,10 +40,31 @@ void writeVector(H5::H5File& file, const char* name, const std::vector<T>& v, co
   file.createDataSet(name, type, space).write(v.data(), type);
 }
 
+// A dataset's size as it claims, checked against the file's bytes before anything is
+// allocated for it: the package writes contiguous, uncompressed datasets, so a damaged
+// extent (one mutated byte made a reduced model's file claim terabytes, issue 49) is an
+// Error naming the dataset, not a std::bad_alloc.
+inline hsize_t checkedExtent(const H5::DataSet& set, const char* name, std::size_t elementSize, int rank) {
+  const H5::DataSpace space = set.getSpace();
+  if (space.getSimpleExtentNdims() != rank) throw Error(std::string(name) + (rank == 1 ? ": not a vector" : ": not a matrix"));
+  hsize_t dims[2] = {1, 1};
+  space.getSimpleExtentDims(dims);
+  const hid_t file = H5Iget_file_id(set.getId());
+  hsize_t bytes = 0;
+  const herr_t got = file < 0 ? -1 : H5Fget_filesize(file, &bytes);
+  if (file >= 0) H5Fclose(file);
+  const hsize_t most = got < 0 ? 0 : bytes / elementSize;
+  if (dims[0] > most || (rank == 2 && dims[0] > 0 && dims[1] > most / dims[0]))
+    throw Error(std::string(name) + " claims " + std::to_string(dims[0]) + (rank == 2 ? " x " + std::to_string(dims[1]) : "") +
+                " values, more than the file's " + std::to_string(bytes) + " bytes hold (a damaged file)");
+  return rank == 2 ? dims[0] * dims[1] : dims[0];
+}
+
 template <class T>
 std::vector<T> readVector(H5::H5File& file, const char* name, const H5::PredType& type) {
   auto set = file.openDataSet(name);
   hsize_t dims[1];
+  checkedExtent(set, name, sizeof(T), 1);
   set.getSpace().getSimpleExtentDims(dims);
   std::vector<T> v(dims[0]);
   if (!v.empty()) set.read(v.data(), type);

@@ -28,7 +28,7 @@ void writeMatrix(H5::H5File& file, const char* name, const Eigen::MatrixXd& A) {
 Eigen::MatrixXd readMatrix(H5::H5File& file, const char* name) {
   auto set = file.openDataSet(name);
   hsize_t dims[2] = {0, 0};
-  if (set.getSpace().getSimpleExtentNdims() != 2) throw Error(std::string(name) + " is not a matrix");
+  hdf5::checkedExtent(set, name, sizeof(double), 2);
   set.getSpace().getSimpleExtentDims(dims);
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rowMajor(dims[0], dims[1]);
   if (rowMajor.size()) set.read(rowMajor.data(), H5::PredType::NATIVE_DOUBLE);

@@ -33,7 +33,7 @@ void writeRows(H5::H5File& h5, const char* name, const std::vector<Eigen::Vector
 std::vector<Eigen::VectorXd> readRows(H5::H5File& h5, const char* name) {
   auto set = h5.openDataSet(name);
   hsize_t dims[2];
-  if (set.getSpace().getSimpleExtentNdims() != 2) throw Error(std::string(name) + " is not two-dimensional");
+  hdf5::checkedExtent(set, name, sizeof(double), 2);
   set.getSpace().getSimpleExtentDims(dims);
   std::vector<double> flat(dims[0] * dims[1]);
   if (!flat.empty()) set.read(flat.data(), H5::PredType::NATIVE_DOUBLE);

@@ -419,8 +419,17 @@ std::vector<HarmonicsLevel> peakByRaisedHarmonics(ForcedResponseSetup& setup, do
 void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start) {
   if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale || start.size() == 0) return;
   const double force = std::abs(setup.excitationScale) * setup.system->excitation().cwiseAbs().maxCoeff();
-  const double response = start.cwiseAbs().maxCoeff();
-  if (force == 0 || response >= kSmallestTraceable) return;
+  if (force == 0)
+    throw InputError("excitation", "is zero (every force's coefficients times the scale): the response is the same "
+                                   "at every frequency, with no resonance to find; give a force");
+  // The vibration's size: the oscillating coefficients (a static offset, a preload's
+  // deformation, is no measure of it).
+  const auto& H = setup.system->aft().harmonics();
+  const int nc = setup.system->numCoefficients();
+  double response = 0;
+  for (Eigen::Index i = 0; i < start.size(); ++i)
+    if (!(H.contains(0) && int(i % nc) == H.cosIndex(0))) response = std::max(response, std::abs(start(i)));
+  if (response >= kSmallestTraceable) return;
   std::ostringstream why;
   why << "the response to it is " << response << " at the first point (largest coefficient), below "
       << kSmallestTraceable << ": too small to trace in double precision (its square underflows); the force's "
