@@ -157,7 +157,7 @@ std::string peakStudyLine(const std::string& name, const std::vector<double>& ra
         }
     if (compared > 0) line << "; against the frequency curves at " << compared << " values: " << worst << " (relative)";
   }
-  if (!whole.complete) line << "; stopped: " << whole.stopReason;
+  if (!whole.complete) line << "; stopped (" << continuation::peakFollowingEndName(whole.end) << "): " << whole.stopReason;
   return line.str();
 }
 

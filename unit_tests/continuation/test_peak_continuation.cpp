@@ -40,6 +40,7 @@ TEST(PeakContinuation, LinearPeakOverTheDampingOnTheClosedForm) {
   // Near the peak at c = 0.01: the response there (x_s = -1 / c at w = 1).
   const auto curve = continuation::continuePeak(P, Eigen::Vector2d(0, -100), 1.0, o);
   ASSERT_TRUE(curve.complete) << curve.stopReason;
+  EXPECT_EQ(curve.end, continuation::PeakFollowingEnd::RangeEnd);
   ASSERT_GE(curve.points.size(), 5u);
   EXPECT_NEAR(curve.points.front().parameter, 0.01, 1e-12);
   EXPECT_NEAR(curve.points.back().parameter, 1.0, 1e-9);
@@ -65,6 +66,22 @@ TEST(PeakContinuation, LinearPeakOverTheDampingOnTheClosedForm) {
   EXPECT_FALSE(curve.optimumLocated);
   std::printf("%zu points, %d solves, %.3f s; frequency %.1e, measure %.1e\n", curve.points.size(), curve.solves,
               curve.seconds, worstW, worstM);
+}
+
+// A continuation that stops inside the range says so as a type, with its branch's end.
+TEST(PeakContinuation, AStopInsideTheRangeIsTyped) {
+  const auto P = dampedOscillator();
+  continuation::PeakContinuationOptions o;
+  o.from = 0.01, o.to = 1.0;
+  o.maxSteps = 2;
+  const auto curve = continuation::continuePeak(P, Eigen::Vector2d(0, -100), 1.0, o);
+  EXPECT_FALSE(curve.complete);
+  EXPECT_EQ(curve.end, continuation::PeakFollowingEnd::ContinuationStopped) << curve.stopReason;
+  EXPECT_NE(curve.branchEnd, continuation::BranchEnd::RangeEnd);
+  EXPECT_NE(curve.branchEnd, continuation::BranchEnd::Running);
+  std::printf("%zu points: %s, the branch %s (%s)\n", curve.points.size(),
+              continuation::peakFollowingEndName(curve.end), continuation::branchEndName(curve.branchEnd),
+              curve.stopReason.c_str());
 }
 
 TEST(PeakContinuation, RefusesNonsenseWithTheReason) {

@@ -109,6 +109,7 @@ TEST(PeakFollowing, APeakThatOvertakesTheFollowedOneIsTaken) {
   o.search.tolerance = 1e-12;
   const auto followed = continuation::followPeaks(P, starts, o);
   ASSERT_TRUE(followed.complete) << followed.stopReason;
+  EXPECT_EQ(followed.end, continuation::PeakFollowingEnd::RangeEnd);
   ASSERT_EQ(followed.points.size(), o.parameters.size());
   // The only jump follows the first value where the exact response's largest peak is the lower one.
   int exactSwitch = -1, jumps = 0, jumpAt = -1;
@@ -204,4 +205,36 @@ TEST(PeakFollowing, AFollowedPeakThatVanishesIsReplacedByTheBandsLargest) {
     EXPECT_NEAR(p.measure / global, 1.0, 1e-6);
   }
   EXPECT_LT(worst, 1e-8);
+}
+
+// How a following ends, as a type: no peak in the band at the start; the followed peak
+// vanishing (the damping case above) where the band holds no other (below both
+// resonances, where the response only rises towards the band's edge).
+TEST(PeakFollowing, EachWayAFollowingEndsIsTyped) {
+  const auto P = absorber(Absorber::Damping);
+  continuation::PeakFollowingOptions o;
+  for (int i = 0; i <= 30; ++i) o.parameters.push_back(1e-3 * std::pow(40.0, i / 30.0));
+  o.search.step = 1e-4, o.search.maxStep = 1e-2, o.search.window = 0.03, o.search.parameterTolerance = 1e-9;
+  o.search.tolerance = 1e-12;
+  o.locateOptimum = false;
+  o.bandFrom = o.sweep.from = 0.2, o.bandTo = o.sweep.to = 0.5;
+  const auto none = continuation::followPeak(P, Eigen::VectorXd(), 0.0, o);
+  EXPECT_FALSE(none.complete);
+  EXPECT_TRUE(none.points.empty());
+  EXPECT_EQ(none.end, continuation::PeakFollowingEnd::NoPeakAtStart) << none.stopReason;
+  EXPECT_STREQ(continuation::peakFollowingEndName(none.end), "no_peak_at_start");
+  // The upper peak followed as the damping merges it into the other; the band below both.
+  double w0 = 1.0, top = 0;
+  for (int i = 0; i <= 30000; ++i) {
+    const double w = 1.0 + 0.3 * i / 30000;
+    if (const double a = dampedAmplitude(w, o.parameters.front()); a > top) top = a, w0 = w;
+  }
+  const auto vanished = continuation::followPeak(P, Eigen::VectorXd::Zero(4), w0, o);
+  EXPECT_FALSE(vanished.complete);
+  EXPECT_GE(vanished.points.size(), 2u);
+  EXPECT_LT(vanished.points.size(), o.parameters.size());
+  EXPECT_EQ(vanished.end, continuation::PeakFollowingEnd::PeakVanished) << vanished.stopReason;
+  std::printf("no peak in the band: %s (%s); the followed peak vanished after %zu values: %s (%s)\n",
+              continuation::peakFollowingEndName(none.end), none.stopReason.c_str(), vanished.points.size(),
+              continuation::peakFollowingEndName(vanished.end), vanished.stopReason.c_str());
 }

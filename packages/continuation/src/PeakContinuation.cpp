@@ -336,6 +336,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
     if (!solveNewton(atW0, xStart, o.from, o.tolerance, o.maxNewtonIterations).converged) xStart = x0;
   }
   if (!(std::hypot(xStart(P.phaseCosIndex), xStart(P.phaseSinIndex)) > 0)) {
+    out.end = PeakFollowingEnd::NoPeakAtStart;
     out.stopReason = "no response at the start (the phase's coefficients are zero)";
     out.seconds = timer.seconds();
     return out;
@@ -344,6 +345,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
   condition.remember(phiGuess, q0, w0, xStart);
   Condition first;
   if (!condition.peakAt(q0, phiGuess, first)) {
+    out.end = PeakFollowingEnd::NoPeakAtStart;
     out.stopReason = "no peak found near " + std::to_string(w0) + " rad/s at the start of the range";
     out.seconds = timer.seconds();
     return out;
@@ -402,6 +404,8 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
   const Branch branch = traceBranch(reduced, Eigen::VectorXd::Constant(1, 1.0), loca);
   out.searches = int(branch.points.size());
   out.complete = branch.finished;
+  out.end = branch.finished ? PeakFollowingEnd::RangeEnd : PeakFollowingEnd::ContinuationStopped;
+  out.branchEnd = branch.end;
   out.stopReason = branch.stopReason;
   // Each of LOCA's points solved at its G's zero.
   int unsolved = 0;

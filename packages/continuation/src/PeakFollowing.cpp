@@ -10,6 +10,18 @@
 
 namespace cyclone::continuation {
 
+const char* peakFollowingEndName(PeakFollowingEnd end) {
+  switch (end) {
+    case PeakFollowingEnd::Running: return "running";
+    case PeakFollowingEnd::RangeEnd: return "range_end";
+    case PeakFollowingEnd::NoPeakAtStart: return "no_peak_at_start";
+    case PeakFollowingEnd::PeakVanished: return "peak_vanished";
+    case PeakFollowingEnd::ValueNotReached: return "value_not_reached";
+    case PeakFollowingEnd::ContinuationStopped: return "continuation_stopped";
+  }
+  return "unknown";
+}
+
 namespace {
 
 // The frequency response at parameter p (the problem's frequency as the
@@ -88,6 +100,7 @@ void Follower::run(const Eigen::VectorXd& x0, double w0) {
   const double p0 = o_.parameters.front();
   const bool started = x0.size() > 0 ? searchFrom(p0, x0, w0, first) : largestInBand(p0, first);
   if (!started) {
+    out_.end = PeakFollowingEnd::NoPeakAtStart;
     out_.stopReason = "no peak at the start of the range (p = " + std::to_string(p0) + ")";
     return;
   }
@@ -108,6 +121,7 @@ void Follower::run(const Eigen::VectorXd& x0, double w0) {
     if (!searchFrom(p, x, w, next) && !searchFrom(p, a.x, a.frequency, next)) {
       // The followed maximum vanished: the band's largest, marked.
       if (!largestInBand(p, next)) {
+        out_.end = PeakFollowingEnd::PeakVanished;
         out_.stopReason = "the followed peak vanished at p = " + std::to_string(p) + " and the band's sweep found none";
         return;
       }
@@ -121,6 +135,7 @@ void Follower::run(const Eigen::VectorXd& x0, double w0) {
     out_.points.push_back(std::move(next));
   }
   out_.complete = true;
+  out_.end = PeakFollowingEnd::RangeEnd;
   out_.stopReason = "end of the parameter range reached";
   if (o_.locateOptimum) locateOptimum();
 }
@@ -243,6 +258,7 @@ FollowedPeakCurve followPeaks(const PeakTrackingProblem& problem, const std::vec
           (best < 0 || curves[k].points[i].measure > curves[std::size_t(best)].points[i].measure))
         best = int(k);
     if (best < 0) {
+      out.end = PeakFollowingEnd::ValueNotReached;
       out.stopReason = "no followed peak reached p = " + std::to_string(o.parameters[i]);
       break;
     }
@@ -252,7 +268,7 @@ FollowedPeakCurve followPeaks(const PeakTrackingProblem& problem, const std::vec
     out.points.push_back(std::move(point));
   }
   out.complete = out.points.size() == o.parameters.size();
-  if (out.complete) out.stopReason = "end of the parameter range reached";
+  if (out.complete) out.end = PeakFollowingEnd::RangeEnd, out.stopReason = "end of the parameter range reached";
   for (std::size_t i = 0; i < out.points.size(); ++i)
     if (out.optimum < 0 || out.points[i].measure < out.points[std::size_t(out.optimum)].measure) out.optimum = int(i);
   out.seconds = timer.seconds();

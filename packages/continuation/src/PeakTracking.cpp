@@ -161,6 +161,7 @@ PeakCurve trackPeak(const PeakTrackingProblem& P, const Eigen::VectorXd& x0, dou
   const auto branch = traceBranch(extended, y0, options);
   PeakCurve out;
   out.finished = branch.finished;
+  out.end = branch.end;
   out.stopReason = branch.stopReason;
   out.statistics = branch.statistics;
   for (const auto& pt : branch.points) {

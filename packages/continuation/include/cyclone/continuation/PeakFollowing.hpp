@@ -59,9 +59,24 @@ struct FollowedPeak {
                       ///< one is the band's largest
 };
 
+/// How a peak's following ended: what a calling program branches on.
+/// FollowedPeakCurve::stopReason says the same as a sentence, with where.
+enum class PeakFollowingEnd {
+  Running,              ///< not ended
+  RangeEnd,             ///< every parameter value has its peak (complete)
+  NoPeakAtStart,        ///< no peak (or no response) at the range's first value
+  PeakVanished,         ///< the followed peak vanished and the band's sweep found none
+  ValueNotReached,      ///< none of the several followed peaks reached a value (followPeaks)
+  ContinuationStopped,  ///< continuePeak's continuation ended inside the range (FollowedPeakCurve::branchEnd: how)
+};
+/// The outcome's name in files ("range_end", "peak_vanished", ...).
+const char* peakFollowingEndName(PeakFollowingEnd end);
+
 struct FollowedPeakCurve {
   std::vector<FollowedPeak> points;  ///< in parameter order (the optimum among them when located)
   bool complete = false;             ///< every parameter value has a peak
+  PeakFollowingEnd end = PeakFollowingEnd::Running;
+  BranchEnd branchEnd = BranchEnd::Running;  ///< continuePeak: how its continuation's branch ended
   std::string stopReason;
   int sweeps = 0, searches = 0, solves = 0;
   double seconds = 0;

@@ -62,6 +62,7 @@ struct TrackedPeak {
 struct PeakCurve {
   std::vector<TrackedPeak> points;
   bool finished = false;
+  BranchEnd end = BranchEnd::Running;  ///< how the extended system's branch ended (stopReason: as a sentence)
   std::string stopReason;
   ContinuationStatistics statistics;
 };
