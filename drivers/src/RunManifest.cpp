@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -70,7 +71,9 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
     : dir_(outDir), scene_(scene), started_(utcNow()) {
   const std::string lockPath = dir_ + "/.cyclone_run.lock", manifest = dir_ + "/run_manifest.txt";
   lock_ = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-  if (lock_ < 0) throw InputError(outDir, "cannot create the run's lock file " + lockPath);
+  if (lock_ < 0)
+    throw InputError(outDir, "cannot create the run's lock file " + lockPath + ": " + std::strerror(errno) +
+                                 " (the output directory must be writable)");
   if (::flock(lock_, LOCK_EX | LOCK_NB) != 0) {
     ::close(lock_);
     lock_ = -1;

@@ -2505,6 +2505,24 @@ TEST(Scenes, ASingularMassMatrixIsSaidBeforeTheTrace) {
 // points, text files ending in a newline) and no temporary is left. Needs the right to
 // mount a tmpfs (root, as this project's machine runs the suite): skipped, saying so,
 // where it is not given.
+// A read-only output directory (issue 49 probe: "cannot create the run's lock file",
+// no reason): the system's reason is said. A tmpfs mounted read-only (root ignores a
+// directory's mode); skipped where it cannot be mounted.
+TEST(Scenes, AReadOnlyOutputDirectoryIsSaidWithTheReason) {
+  log::setQuiet(true);
+  ::umount2((fs::temp_directory_path() / "cyclone_scene_test_read_only").c_str(), MNT_DETACH);
+  const auto disk = freshDir("read_only");
+  fs::create_directories(disk);
+  if (::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=64k") != 0)
+    GTEST_SKIP() << "cannot mount a tmpfs here (" << std::strerror(errno) << "): the test needs root";
+  fs::create_directories(disk / "o");
+  ASSERT_EQ(::mount("tmpfs", disk.c_str(), "tmpfs", MS_REMOUNT | MS_RDONLY, "size=64k"), 0) << std::strerror(errno);
+  const std::string msg = failure(duffingSceneWith("cos: 0.18", "cos: 0.18"), disk / "o");
+  ::umount2(disk.c_str(), MNT_DETACH);
+  EXPECT_NE(msg.find("cannot create the run's lock file"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Read-only file system"), std::string::npos) << msg;
+}
+
 TEST(Scenes, AFullDiskIsSaidAndLeavesNoHalfFile) {
   // A run of this test killed while its tmpfs was mounted leaves the mount: taken away first.
   ::umount2((fs::temp_directory_path() / "cyclone_scene_test_full_disk").c_str(), MNT_DETACH);
