@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -18,22 +19,36 @@ constexpr DiscStudyParameter kParameters[] = {
     DiscStudyParameter::Force,   DiscStudyParameter::Clearance,           DiscStudyParameter::Harmonics,
     DiscStudyParameter::LossFactor, DiscStudyParameter::Modes,            DiscStudyParameter::Speed};
 
+// The spec at one value of a contact or excitation parameter (the elements' values, no
+// models needed), and whether it reproduces the reference; none for the other parameters.
+std::optional<std::pair<DiscResponseSpec, bool>> specWithElementValue(const DiscResponseSpec& spec,
+                                                                      DiscStudyParameter parameter, double v,
+                                                                      const std::string& key) {
+  DiscResponseSpec sv = spec;
+  switch (parameter) {
+    case DiscStudyParameter::Preload: sv.contact.preload = v; return std::pair{sv, v == spec.contact.preload};
+    case DiscStudyParameter::FrictionCoefficient: sv.contact.mu = v; return std::pair{sv, v == spec.contact.mu};
+    case DiscStudyParameter::ContactStiffness:
+      sv.contact.kn = v, sv.contact.kt = v;
+      return std::pair{sv, v == spec.contact.kn && v == spec.contact.kt};
+    case DiscStudyParameter::Force:
+      sv.excitation.amplitude = spec.excitation.amplitude * v;
+      return std::pair{sv, v == 1.0};
+    case DiscStudyParameter::Clearance:
+      if (spec.gap.pairs.empty()) throw InputError(key, "needs gap elements (disc_response/gap/pairs)");
+      sv.gap.clearance = v;
+      return std::pair{sv, v == spec.gap.clearance};
+    default: return std::nullopt;
+  }
+}
+
 // The spec at one value, and whether it reproduces the reference (the loss factor and
 // modes change the models: never the reference).
 std::pair<DiscResponseSpec, bool> specAt(const DiscResponseSpec& spec, DiscStudyParameter parameter, double v,
                                          const DiscReducedModels& models, int sectors, const std::string& key) {
+  if (auto element = specWithElementValue(spec, parameter, v, key)) return *element;
   DiscResponseSpec sv = spec;
   switch (parameter) {
-    case DiscStudyParameter::Preload: sv.contact.preload = v; return {sv, v == spec.contact.preload};
-    case DiscStudyParameter::FrictionCoefficient: sv.contact.mu = v; return {sv, v == spec.contact.mu};
-    case DiscStudyParameter::ContactStiffness:
-      sv.contact.kn = v, sv.contact.kt = v;
-      return {sv, v == spec.contact.kn && v == spec.contact.kt};
-    case DiscStudyParameter::Force: sv.excitation.amplitude = spec.excitation.amplitude * v; return {sv, v == 1.0};
-    case DiscStudyParameter::Clearance:
-      if (spec.gap.pairs.empty()) throw InputError(key, "needs gap elements (disc_response/gap/pairs)");
-      sv.gap.clearance = v;
-      return {sv, v == spec.gap.clearance};
     case DiscStudyParameter::Harmonics:
       sv.harmonics.clear();
       for (int h = 0; h <= int(v); ++h) sv.harmonics.push_back(h);
@@ -47,6 +62,7 @@ std::pair<DiscResponseSpec, bool> specAt(const DiscResponseSpec& spec, DiscStudy
     case DiscStudyParameter::Speed:
       throw InputError(key, "the speed is followed (peak_studies: speed: the models built at each speed), not "
                             "swept as a value list");
+    default: break;  // the elements' values, above
   }
   return {sv, false};
 }
@@ -106,15 +122,7 @@ void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::Rotat
                               "swept as a value list");
       default: {
         // The contact and excitation values as the spec's own are checked.
-        DiscResponseSpec sv = spec;
-        if (parameter == DiscStudyParameter::Preload) sv.contact.preload = v;
-        if (parameter == DiscStudyParameter::FrictionCoefficient) sv.contact.mu = v;
-        if (parameter == DiscStudyParameter::ContactStiffness) sv.contact.kn = sv.contact.kt = v;
-        if (parameter == DiscStudyParameter::Force) sv.excitation.amplitude = spec.excitation.amplitude * v;
-        if (parameter == DiscStudyParameter::Clearance) {
-          if (spec.gap.pairs.empty()) throw InputError(key, "needs gap elements (disc_response/gap/pairs)");
-          sv.gap.clearance = v;
-        }
+        const auto sv = specWithElementValue(spec, parameter, v, key)->first;
         try {
           checkDiscResponse(mesh, sectors, axis, sv);
         } catch (const InputError& e) {

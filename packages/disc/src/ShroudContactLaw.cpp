@@ -1,7 +1,6 @@
 #include "cyclone/disc/ShroudContactLaw.hpp"
 
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
