@@ -2,11 +2,11 @@
 // Continuation of a dense nonlinear system F(x; p) = 0 in one parameter p,
 // through turning points and the corners of friction contacts, by one of two
 // engines (docs/architecture.md, "Continuation"):
-//  - Cyclone's predictor-corrector (PredictorCorrector.cpp): unknowns
+//  - Cyclone's predictor-corrector (PredictorCorrector.cpp; the default): unknowns
 //    scaled by their current size, a tangent predictor, a pseudo-arclength corrector
 //    with a spherical one as the fallback at sharp turns, steps from Newton's
 //    iteration count and the turning angle;
-//  - LOCA's stepper (LOCA::LAPACK, LocaContinuation.cpp; the default for now): a
+//  - LOCA's stepper (LOCA::LAPACK, LocaContinuation.cpp): a
 //    hyperplane corrector and LOCA's adaptive step, with kink bridging around it.
 // The branch up to a failure is kept, with the reason it stopped.
 #include <Eigen/Dense>
@@ -192,7 +192,7 @@ struct Branch {
   bool returnedToStart = false;
   double reached = 0;
   /// Where later segments start in `points` (empty: one segment). A curve traced again
-  /// from the other end of the range (scenes::traceForcedResponse) is a second segment:
+  /// from the other end of the range (response::traceForcedResponse) is a second segment:
   /// consecutive points across a start are not neighbours on a path.
   std::vector<std::size_t> segmentStarts;
   ContinuationStatistics statistics;  ///< PredictorCorrector only

@@ -24,7 +24,9 @@ struct StartingPoint {
 ///     linearised at rest (friction elements stuck, open gaps and cubic springs without
 ///     stiffness; NLvib's start for its example 07);
 ///  2. the same from the linear solution without the nonlinear elements;
-///  3. a ramp of the excitation scale from 0 (the system at rest) to the start's scale
+///  3. from H >= 4, the first harmonics' solution carried up level by level (Newton, or a
+///     homotopy to the added harmonics where Newton stalls), corrected by Newton;
+///  4. a ramp of the excitation scale from 0 (the system at rest) to the start's scale
 ///     at the start frequency by arclength continuation (through folds in the scale),
 ///     its end corrected by Newton.
 /// Each Newton attempt stops at a stagnation (continuation::solveNewton), so a failed way
