@@ -211,7 +211,7 @@ TEST(PeakContinuation, JenkinsPeakCurveByLocaAgainstTheDescribingFunction) {
     Timer timer;
     const auto curve = continuation::continuePeak(T, x0, w0, f);
     // Whole at either sample count: the curve parametrised by the phase, G's slope its
-    // stencil's own (docs/decisions.md, session 33; by frequency it stopped near fs =
+    // stencil's own (docs/decisions.md, D31; by frequency it stopped near fs =
     // 0.012 at 256 samples).
     ASSERT_TRUE(curve.complete) << curve.stopReason;
     char work[128];
