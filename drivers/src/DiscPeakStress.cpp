@@ -27,12 +27,10 @@
 
 namespace cyclone::scenes {
 
-PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection materialSection,
-                                  const fe::IsotropicElastic& material) {
-  PeakStressSpec spec;
-  if (!discResponse.has("peak_stress")) return spec;
-  spec.run = true;
-  auto s = discResponse.section("peak_stress");
+namespace {
+
+// disc_response/peak_stress's own keys.
+void readPeakStressKeys(SceneSection s, PeakStressSpec& spec) {
   const std::string margin = s.getString("margin", "true");
   if (margin != "true" && margin != "false") throw InputError(s.where("margin"), "must be true or false, got '" + margin + "'");
   spec.margin = margin == "true";
@@ -44,6 +42,17 @@ PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection mater
     throw InputError(s.where("animation_steps"), std::to_string(spec.animationSteps) +
                                                      ": one period needs 4..1000 time steps (about 32 play smoothly)");
   s.rejectUnknownKeys();
+}
+
+}  // namespace
+
+PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection materialSection,
+                                  const fe::IsotropicElastic& material) {
+  PeakStressSpec spec;
+  // material/fatigue is read and checked whether or not a margin is asked for (a wrong
+  // data name passed silently without peak_stress; issue 49).
+  spec.run = discResponse.has("peak_stress");
+  if (spec.run) readPeakStressKeys(discResponse.section("peak_stress"), spec);
   // The stress unit from E: titanium-like moduli in MPa (mm-N-s-t) or Pa (SI).
   const double ratio = material.E / 113.8e3;
   double unitInMpa = 0;
@@ -51,7 +60,7 @@ PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection mater
   else if (ratio > 0.3e6 && ratio < 3e6) unitInMpa = 1e-6, spec.stressUnit = "Pa";
   auto f = materialSection.section("fatigue");
   const bool given = materialSection.has("fatigue");
-  if (spec.margin && !given)
+  if (spec.run && spec.margin && !given)
     throw InputError(materialSection.where("fatigue"),
                      "disc_response/peak_stress asks for the Goodman margin (margin: true), which needs the "
                      "material's fatigue data: `data: Ti-6Al-4V` (ASM data sheet values), or ultimate_strength and "

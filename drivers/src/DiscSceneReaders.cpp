@@ -71,6 +71,16 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   const double loadsRpm = loads.speedRpm;
   spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
+  if (spec.retainedNodeSets.empty())
+    throw InputError(r.where("retained_node_sets"), "is empty: a reduced model needs the node sets it keeps "
+                                                    "(the contact faces and the excited node; leave it out for them)");
+  for (const auto& name : spec.retainedNodeSets) {
+    try {
+      mesh.nodeSet(name);
+    } catch (const InputError& e) {
+      throw InputError(r.where("retained_node_sets"), e.problem());
+    }
+  }
   spec.modes = r.getInt("modes", spec.modes);
   // The eigen-solver's space, about 3 modes vectors, must fit in the sector's DOFs: 10000
   // reached Anasazi and came back as its "Num Blocks must be strictly positive" (issue 49).
@@ -84,6 +94,8 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
   spec.rpm = r.getDouble("speed_rpm", loadsRpm);
   if (!(spec.rpm >= 0)) throw InputError(r.where("speed_rpm"), "must be >= 0");
+  checkCentrifugalStrain(spec.material, spec.rpm, mesh, spec.axis,
+                         r.has("speed_rpm") ? r.where("speed_rpm") : scene.where("loads/speed_rpm"));
   spec.prestress = readPrestressKind(r, "nonlinear");
   cache = r.getString("cache", "reuse");
   if (cache != "reuse" && cache != "rebuild" && cache != "off")
@@ -144,6 +156,10 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
     spec.gap.clearance = g.getDouble("clearance", spec.gap.clearance);
     g.rejectUnknownKeys();
   }
+  // The force is physics a forced response needs: not a silent 1 N (issue 49).
+  if (!d.has("excitation"))
+    throw InputError(d.where("excitation"), "is required: the force on each blade (node_set, direction, amplitude "
+                                            "in the scene's force unit)");
   auto e = d.section("excitation");
   spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
   spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));
@@ -164,10 +180,19 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
                                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
   disc::DiscSweepOptions sweep;
   sweep.family = d.getInt("family", 1);
+  // Against the models' modes before they are built (99 was refused after them; issue 49).
+  if (sweep.family < 1 || sweep.family > plan.modelSpec.modes)
+    throw InputError(d.where("family"), std::to_string(sweep.family) + ": must lie in 1.." +
+                                            std::to_string(plan.modelSpec.modes) +
+                                            " (the natural frequencies computed per nodal diameter, reduced_model/modes)");
   const auto range = d.getDoubleList("frequency_range_hz", {});
   if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
     throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
   if (!range.empty()) sweep.fromHz = range[0], sweep.toHz = range[1];
+  sweep.mustCoverHz = plan.peakStress.atHz;
+  if (!range.empty() && sweep.mustCoverHz > 0 && !(sweep.mustCoverHz >= range[0] && sweep.mustCoverHz <= range[1]))
+    throw InputError(d.where("peak_stress/at_hz"), std::to_string(sweep.mustCoverHz) +
+                                                       " Hz lies outside disc_response/frequency_range_hz");
   sweep.stability = readStability(d);
   sweep.harmonicsCheckTo = plan.harmonicsCheckTo;
   sweep.harmonicsTolerance = plan.harmonicsTolerance;
@@ -224,6 +249,11 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       for (const char* section : {"contact", "gap", "excitation"})
         if (e.where().rfind(section, 0) == 0) throw InputError(d.where(e.where()), e.problem());
       throw;
+    }
+    try {
+      disc::checkRetainedNodeSets(mesh, plan.modelSpec.retainedNodeSets, spec);
+    } catch (const InputError& e) {
+      throw InputError(r.where("retained_node_sets"), e.problem());
     }
     // The friction solve's cost at the highest harmonic the curve or its check reaches,
     // known from the contact pairs before any FE work (harmonics 500 on the demo's disc

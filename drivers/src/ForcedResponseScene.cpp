@@ -61,7 +61,7 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 
 
 // Forced response of a matrix-defined system with nonlinear elements: harmonic
-// balance (AFT) traced by LOCA arclength continuation in the excitation frequency.
+// balance (AFT) traced by arclength continuation in the excitation frequency.
 }  // namespace
 
 void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt, const std::string& defaultEngine) {
@@ -85,6 +85,14 @@ void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& 
   if (!(opt.initialStep > 0)) throw InputError(cs.where("initial_step"), "must be positive");
   if (!(opt.minStep > 0)) throw InputError(cs.where("min_step"), "must be positive");
   if (!(opt.maxStep >= opt.minStep)) throw InputError(cs.where("max_step"), "must be at least min_step");
+  // The predictor-corrector's steps are in the scaled space (x / |x|, p / |to - from|),
+  // where 1 spans the whole range: a longer step means nothing (issue 49: 1000).
+  if (opt.engine == Options::Engine::PredictorCorrector)
+    for (const auto& [key, value] : {std::pair<const char*, double>{"initial_step", opt.initialStep},
+                                     {"max_step", opt.maxStep}})
+      if (value > 1)
+        throw InputError(cs.where(key), std::to_string(value) + ": must be at most 1 (the steps are in the scaled "
+                                        "space x / |x|, p / |to - from|, where 1 spans the whole range)");
   if (opt.maxSteps < 2) throw InputError(cs.where("max_points"), "must be at least 2");
   if (!(opt.turnAngle > 0 && opt.turnAngle < 1.5))
     throw InputError(cs.where("turn_angle"), "must lie in (0, 1.5) radians");
@@ -242,6 +250,14 @@ std::vector<PlacedElement> readNonlinearElements(SceneSection& scene, const Matr
       if (!in.cyclic()) throw InputError(e.where("W_next"), "joins a sector to the next one: the system must be cyclic");
       pl.Wnext = matrixOf(e, "W_next", d);
     }
+    // Each element coordinate must see some motion (issue 49: direction [0] made an element
+    // that never acts, and the curve was the linear one, exit 0). A coordinate across the
+    // sector boundary may be W_next's alone.
+    const char* key = e.has("direction") ? "direction" : "W";
+    for (int j = 0; j < d; ++j)
+      if (pl.W.col(j).norm() == 0 && (pl.Wnext.size() == 0 || pl.Wnext.col(j).norm() == 0))
+        throw InputError(e.where(key), "coordinate " + std::to_string(j) + " of the element is zero on every DOF: "
+                                       "the element would never act (give the DOFs it acts on)");
     e.rejectUnknownKeys();
     placed.push_back(std::move(pl));
     names.push_back(name);

@@ -1,5 +1,8 @@
 // Readers shared by the scene stages: the rotation axis, prestress kind, harmonic
 // list, stability, harmonics check, cyclic faces and material of a scene section.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -112,6 +115,26 @@ CyclicFaces readCyclicFaces(SceneSection& cy) {
   if (f.shroudLeft.size() != f.shroudRight.size())
     throw InputError(cy.where("shroud_right_node_sets"), "the shroud's left and right side faces need as many sets each");
   return f;
+}
+
+void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, const mesh::Mesh& mesh,
+                            const mesh::RotationAxis& axis, const std::string& speedKey) {
+  const Eigen::Vector3d d = axis.direction.normalized();
+  double radius = 0;
+  for (const auto& x : mesh.coords) {
+    const Eigen::Vector3d r = Eigen::Vector3d(x[0], x[1], x[2]) - axis.point;
+    radius = std::max(radius, (r - r.dot(d) * d).norm());
+  }
+  const double omega = 2 * M_PI * rpm / 60;
+  const double strain = material.rho * omega * omega * radius * radius / material.E;
+  if (!(strain <= 0.05)) {
+    std::ostringstream why;
+    why << rpm << " rpm: rho (Omega r)^2 at the outermost radius " << radius << " is " << strain
+        << " times E (rho " << material.rho << ", E " << material.E
+        << "): the disc would be torn apart long before (a strain of 5 % is the limit; titanium bursts near 1 %). "
+           "Check the speed and the material's units (mm-N-s-t: rho in t/mm^3, E in MPa)";
+    throw InputError(speedKey, why.str());
+  }
 }
 
 fe::IsotropicElastic readMaterial(SceneSection m) {

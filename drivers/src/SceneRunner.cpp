@@ -139,6 +139,7 @@ analysis::StaticProblem readStaticProblem(SceneSection& scene, const mesh::Mesh&
       if (!mesh.nodeSets.count(name)) mesh.nodeSet(name);  // throws naming the mesh and its sets
   }
   readStaticLoads(scene.section("loads"), mesh, problem);
+  checkCentrifugalStrain(problem.material, problem.speedRpm, mesh, problem.axis, scene.where("loads/speed_rpm"));
   readStaticSolver(scene.section("solver"), problem);
   if (problem.fixedNodeSets.empty())
     throw InputError(scene.where("constraints/fixed_node_sets"),
@@ -155,6 +156,10 @@ void readStaticSolver(SceneSection s, analysis::StaticProblem& problem) {
 
 void readStaticLoads(SceneSection l, const mesh::Mesh& mesh, analysis::StaticProblem& problem) {
   problem.speedRpm = l.getDouble("speed_rpm", 0.0);
+  if (!(problem.speedRpm >= 0 && std::isfinite(problem.speedRpm)))
+    throw InputError(l.where("speed_rpm"), std::to_string(problem.speedRpm) +
+                                               ": must be >= 0 and finite (the centrifugal load does not depend on "
+                                               "the sense of rotation: give its magnitude)");
   problem.axis = readRotationAxis(l);
   const auto b = l.getVector3("body_force", {0, 0, 0});
   problem.bodyForce = Eigen::Vector3d(b[0], b[1], b[2]);

@@ -78,6 +78,11 @@ CyclicFaces readCyclicFaces(SceneSection& cyclic);
 /// `axis_point` and `axis_direction` of a section (default: the z axis); InputError for a
 /// zero direction.
 mesh::RotationAxis readRotationAxis(SceneSection& section);
+/// InputError under `speedKey` where the centrifugal stress scale rho (Omega r)^2 at the
+/// mesh's outermost node passes 5 % of E: a disc torn apart long before (titanium bursts
+/// near 1 %), so a wrong unit or a typo (rho 1e300, 1e9 rpm), not a speed to solve at.
+void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, const mesh::Mesh& mesh,
+                            const mesh::RotationAxis& axis, const std::string& speedKey);
 
 /// `prestress` of a section: linear, nonlinear or none (`fallback` when absent);
 /// InputError naming the key otherwise.

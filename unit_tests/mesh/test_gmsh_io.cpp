@@ -187,18 +187,24 @@ TEST(GmshModel, UnsupportedElementsAreAnInputError) {
   expectInputError([] { meshFromGmshModel("empty model"); }, {"empty model", "no 3D elements"});
 }
 
+namespace {
+// The tet10 box written by gmsh in format 4.1, binary or ASCII; its path.
+std::string writeTet10Box(TempDirectory& dir, const std::string& name, bool binary) {
+  const std::string path = dir.file(name);
+  GmshSession session;
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
+  meshTet10Box(path);
+  return path;
+}
+}  // namespace
+
 // A binary file reads as the ASCII one does; a damaged count (a node block's size read at
 // the wrong offset, as in a file written with padding after its int fields: 16.9 GB
 // allocated for 600 bytes, issue 20) is refused before gmsh allocates anything.
 TEST(GmshReader, BinaryCountsAreCheckedAgainstTheFileSize) {
   TempDirectory dir;
-  const std::string path = dir.file("box_binary.msh");
-  {
-    GmshSession session;
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.Binary", 1);
-    meshTet10Box(path);
-  }
+  const std::string path = writeTet10Box(dir, "box_binary.msh", true);
   const Mesh mesh = readGmsh(path);
   EXPECT_GT(mesh.numNodes(), 100);
   EXPECT_NEAR(meshVolume(mesh), 2 * 1 * 0.5, 1e-12);
@@ -232,6 +238,43 @@ TEST(GmshReader, BinaryCountsAreCheckedAgainstTheFileSize) {
       EXPECT_NE(std::string(e.what()).find("outside the nodes' tags"), std::string::npos) << e.what();
     }
   }
+}
+
+// gmsh 4.8's ASCII reader reserves what a count says as well (issue 49: a small file whose
+// node count read 4e9 took 15.6 GB, then read as the mesh it was, exit 0): each count of
+// an ASCII file must fit in its bytes at the fewest a record takes in text.
+TEST(GmshReader, AsciiCountsAreCheckedAgainstTheFileSize) {
+  TempDirectory dir;
+  const std::string path = writeTet10Box(dir, "box_ascii.msh", false);
+  const Mesh mesh = readGmsh(path);
+  EXPECT_NEAR(meshVolume(mesh), 2 * 1 * 0.5, 1e-12);
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The line after a section's header, and the first block's header after it, with one
+  // count (0-based field) made 4e9.
+  auto damaged = [&](const std::string& name, const std::string& section, int line, int field) {
+    std::string t = text;
+    std::size_t at = t.find(section + "\n") + section.size() + 1;
+    for (int i = 0; i < line; ++i) at = t.find('\n', at) + 1;
+    std::istringstream fields(t.substr(at, t.find('\n', at) - at));
+    std::vector<std::string> values{std::istream_iterator<std::string>(fields), {}};
+    values.at(std::size_t(field)) = "4000000000";
+    std::string joined;
+    for (const auto& v : values) joined += (joined.empty() ? "" : " ") + v;
+    t.replace(at, t.find('\n', at) - at, joined);
+    return dir.write(name, t);
+  };
+  expectInputError([&] { readGmsh(damaged("nodes.msh", "$Nodes", 0, 1)); },
+                   {"nodes.msh", "ASCII Gmsh file: the number of nodes", "damaged"});
+  expectInputError([&] { readGmsh(damaged("node_block.msh", "$Nodes", 1, 3)); },
+                   {"node_block.msh", "a node block's number of nodes", "damaged"});
+  expectInputError([&] { readGmsh(damaged("element_block.msh", "$Elements", 1, 3)); },
+                   {"element_block.msh", "an element block's number of elements", "damaged"});
+  expectInputError([&] { readGmsh(damaged("entities.msh", "$Entities", 0, 3)); },
+                   {"entities.msh", "the number of volumes", "damaged"});
 }
 
 // An element naming a node tag the file never defines made gmsh 4.8 crash (SIGSEGV in

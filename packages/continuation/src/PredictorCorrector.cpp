@@ -909,6 +909,10 @@ bool Tracer::atTheEnd(const Point& z, const Point& t, double ds) {
   }
   const double dir = o_.to >= o_.from ? 1.0 : -1.0;
   const Point predictor{z.x + ds * t.x, z.p + ds * t.p};
+  // A step that would pass a parameter mark (a linear resonance) lands on it first: the
+  // range's end is not reached over it (a step of 1000 went from 0.5 to the end at 2,
+  // over the Duffing resonance at 1.27, and called the range finished; issue 49).
+  if (stepToMark(z, t, ds) < ds) return false;
   if ((predictor.p - o_.to) * dir > 0 && endAt(o_.to, z, predictor)) {
     branch_.finished = true;
     branch_.end = BranchEnd::RangeEnd;

@@ -185,6 +185,12 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     out.fromHz = 0.9 * std::min(out.estimate->freeHz, out.estimate->stuckHz);
     out.toHz = 1.1 * std::max(out.estimate->freeHz, out.estimate->stuckHz);
   }
+  if (options.mustCoverHz > 0 && !(options.mustCoverHz >= out.fromHz && options.mustCoverHz <= out.toHz)) {
+    std::ostringstream why;
+    why << options.mustCoverHz << " Hz lies outside the curve's range " << out.fromHz << ".." << out.toHz
+        << " Hz (widen disc_response/frequency_range_hz, or leave at_hz out for the peak)";
+    throw InputError("disc_response/peak_stress/at_hz", why.str());
+  }
   out.curve = sweepDisc(out.setup, out.fromHz, out.toHz, options, out.warnings);
   out.headline = discHeadline(out.curve);
   if (out.headline.found) log::info(out.headline.text);

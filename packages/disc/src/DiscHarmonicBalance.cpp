@@ -269,6 +269,24 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
 }
 
+void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,
+                           const DiscResponseSpec& spec) {
+  if (retainedNodeSets.empty())
+    throw InputError("reduced_model/retained_node_sets", "is empty: the reduced models need the node sets the "
+                                                         "forced response uses (contact faces, excitation)");
+  std::vector<mesh::Index> retained;
+  for (const auto& name : retainedNodeSets)
+    for (mesh::Index n : mesh.nodeSet(name)) retained.push_back(n);
+  std::sort(retained.begin(), retained.end());
+  std::vector<std::string> used{spec.contact.leftSet, spec.contact.rightSet, spec.excitation.nodeSet};
+  used.insert(used.end(), spec.responseNodeSets.begin(), spec.responseNodeSets.end());
+  for (const auto& set : used)
+    for (mesh::Index n : mesh.nodeSet(set))
+      if (!std::binary_search(retained.begin(), retained.end(), n))
+        throw InputError("reduced_model/retained_node_sets", "does not retain node set '" + set +
+                                                                 "', which the forced response uses: add it");
+}
+
 ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                            const DiscResponseSpec& spec, double referenceHz) {
   const int N = models.sectors;
@@ -315,7 +333,7 @@ continuation::ContinuationOptions discContinuationOptions(continuation::Continua
     // opening or slip instant crossing a time sample folds the path back by ~1e-7 of the
     // range (a gap clearance study, docs/decisions.md 2026-11-26); 1e-6 stopped there.
     opt.initialStep = 0.01, opt.maxStep = 0.2, opt.minStep = 1e-8;
-    opt.turnAngle = 0.12;  // the disc's curves as measured (docs/scenes.md); 0.25 not yet tried there
+    opt.turnAngle = 0.12;  // 0.25 turned the preload study's 1 N curve where Hill sees no fold (docs/decisions.md, D3)
   } else {
     opt.initialStep = 0.002, opt.maxStep = 0.02, opt.minStep = 1e-7;
     opt.arcLengthScaling = false;     // the unknowns are scaled to order one (unknownScale)

@@ -355,7 +355,6 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
     ++out.built;
     if (k == spec.checkNodalDiameter && spec.kind != ReducedModelKind::FullFe && spec.checkFrequencies > 0) {
       out.check = checkAgainstFull(*built.model, *full, k, out.naturalHz[k], spec.checkFrequencies);
-      if (cache && comm->getRank() == 0) writeReducedModelCheckCsv(path + ".check.csv", out.check, true);
     }
     std::ostringstream msg;
     msg << "reduced model ND " << k << " (" << reducedModelKindName(spec.kind) << ", " << spec.modes
@@ -363,7 +362,20 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
         << out.naturalHz[k].front() << " Hz";
     log::info(msg.str());
     if (cache && built.record) {
-      if (comm->getRank() == 0) io::writeReducedModelHdf5(path, *built.record);
+      // The model first, then its check beside it: a write that fails (a full disk) leaves
+      // neither a check without its model nor a model whose check is half-written.
+      if (comm->getRank() == 0) {
+        io::writeReducedModelHdf5(path, *built.record);
+        if (!out.check.hz.empty() && k == spec.checkNodalDiameter) {
+          try {
+            writeReducedModelCheckCsv(path + ".check.csv", out.check, true);
+          } catch (...) {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+            throw;
+          }
+        }
+      }
       out.files[k] = path;
     }
   }

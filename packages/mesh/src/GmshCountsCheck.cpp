@@ -1,5 +1,6 @@
-#include "GmshBinaryCheck.hpp"
+#include "GmshCountsCheck.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -155,16 +156,78 @@ void checkElements(Reader& r, int (*nodesPerElement)(int), const TagRange& tags)
   }
 }
 
+// An ASCII file's counts: each must fit in the file's bytes at the fewest bytes a record
+// can take in text (a node: its tag and three coordinates, "1\n0 0 0\n"; an element: its
+// tag and one node, "1 1\n"). gmsh 4.8's ASCII reader reserves what a count says too:
+// a 400-byte file whose node count read 4e9 took 15.6 GB, then read as the mesh it was.
+void checkAsciiCounts(const std::string& path, double version) {
+  const std::uintmax_t size = std::uintmax_t(std::filesystem::file_size(path));
+  std::ifstream in(path);
+  std::string line;
+  std::uintmax_t lineNumber = 0;
+  auto fail = [&](const std::string& what, std::uint64_t n, std::uintmax_t bytesEach) {
+    std::ostringstream msg;
+    msg << "ASCII Gmsh file: " << what << " on line " << lineNumber << " is " << n << ", which needs at least "
+        << bytesEach << " bytes each, but the file has " << size << " bytes: the file is damaged";
+    throw InputError(path, msg.str());
+  };
+  // The fields of the next line checked in order (a field not given: none is), each
+  // count returned; empty where the line is not numbers (gmsh says what is wrong).
+  auto counts = [&](std::initializer_list<std::pair<const char*, std::uintmax_t>> fields) {
+    std::vector<std::uint64_t> read;
+    if (!std::getline(in, line)) return read;
+    ++lineNumber;
+    std::istringstream values(line);
+    for (const auto& [what, bytesEach] : fields) {
+      double n = 0;  // as read, so that a negative or huge count is seen as it is
+      if (!(values >> n)) return std::vector<std::uint64_t>();
+      if (bytesEach > 0 && n > double(size / bytesEach)) fail(what, std::uint64_t(std::max(0.0, n)), bytesEach);
+      read.push_back(std::uint64_t(std::max(0.0, n)));
+    }
+    return read;
+  };
+  auto skipLines = [&](std::uint64_t n) {
+    for (std::uint64_t i = 0; i < n && std::getline(in, line); ++i) ++lineNumber;
+  };
+  const bool four = version >= 4;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "$Entities" && four) {
+      counts({{"the number of points", 8}, {"the number of curves", 8}, {"the number of surfaces", 8},
+              {"the number of volumes", 8}});
+    } else if (line == "$Nodes" && four) {
+      const auto header = counts({{"the number of node blocks", 8}, {"the number of nodes", 8}});
+      for (std::uint64_t b = 0; header.size() == 2 && b < header[0]; ++b) {
+        const auto block = counts({{"", 0}, {"", 0}, {"", 0}, {"a node block's number of nodes", 8}});
+        if (block.size() != 4) break;
+        skipLines(2 * block[3]);  // the tags, then the coordinates
+      }
+    } else if (line == "$Elements" && four) {
+      const auto header = counts({{"the number of element blocks", 8}, {"the number of elements", 4}});
+      for (std::uint64_t b = 0; header.size() == 2 && b < header[0]; ++b) {
+        const auto block = counts({{"", 0}, {"", 0}, {"", 0}, {"an element block's number of elements", 4}});
+        if (block.size() != 4) break;
+        skipLines(block[3]);
+      }
+    } else if (line == "$Nodes") {
+      counts({{"the number of nodes", 8}});
+    } else if (line == "$Elements") {
+      counts({{"the number of elements", 4}});
+    }
+  }
+}
+
 }  // namespace
 
-void checkBinaryMshCounts(const std::string& path, int (*nodesPerElement)(int)) {
+void checkMshCounts(const std::string& path, int (*nodesPerElement)(int)) {
   Reader r(path);
   if (r.line() != "$MeshFormat") return;  // not format 2/4 with a header: gmsh says what it is
   std::istringstream version(r.line());
   double v = 0;
   int binary = 0, dataSize = 0;
   version >> v >> binary >> dataSize;
-  if (!binary) return;
+  if (!binary) return checkAsciiCounts(path, v);
   if (v < 4.1 || v >= 5) r.fail("version " + std::to_string(v) + " (binary files of version 4.1 are read)");
   if (dataSize != 8) r.fail("data size " + std::to_string(dataSize) + " (8 expected)");
   if (r.value<std::int32_t>("the byte-order mark") != 1) r.fail("byte order other than this machine's");

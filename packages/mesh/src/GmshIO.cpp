@@ -11,7 +11,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/GmshNodeOrder.hpp"
 #include "cyclone/mesh/MeshGeometryCheck.hpp"
-#include "GmshBinaryCheck.hpp"
+#include "GmshCountsCheck.hpp"
 #include "IsolatedRead.hpp"
 
 namespace cyclone::mesh {
@@ -231,7 +231,7 @@ Mesh readGmsh(const std::string& path) {
   // gmsh runs in a child process: some damaged files make gmsh 4.8 crash (IsolatedRead.hpp).
   Mesh mesh = detail::readInChildProcess(path, [&] {
     GmshSession session;
-    detail::checkBinaryMshCounts(path, [](int type) {
+    detail::checkMshCounts(path, [](int type) {
       std::string name;
       int dim, order, numNodes, numPrimary;
       std::vector<double> local;

@@ -34,6 +34,11 @@ void ShroudedSectorParameters::validate(const std::string& where) const {
   need(shroudThickness > 0, "shroud_thickness", "must be positive");
   need(shroudWidth > 0, "shroud_width", "must be positive");
   need(meshSize > 0, "mesh_size", "must be positive");
+  // Larger than the disc's radial depth it no longer sets the elements (the geometry's own
+  // coarsest mesh came out of 1e300, exit 0; issue 49).
+  need(!(meshSize > rimRadius - boreRadius), "mesh_size",
+       "must be at most the disc's radial depth rim_radius - bore_radius = " + std::to_string(rimRadius - boreRadius) +
+           " (the demo's is 6)");
   need(elementOrder == 1 || elementOrder == 2, "element_order", "must be 1 (tet4) or 2 (tet10)");
   need(std::abs(bladeStaggerDeg) < 80, "blade_stagger_deg", "must lie in (-80, 80) degrees");
   const double stagger = bladeStaggerDeg * M_PI / 180;

@@ -25,6 +25,10 @@ namespace cyclone::disc {
 struct DiscSweepOptions {
   int family = 1;  ///< which natural frequency of the engine order's nodal diameter (from 1) sets the range
   double fromHz = 0, toHz = 0;  ///< 0, 0: 0.9 x the lower and 1.1 x the higher of the estimate's two frequencies
+  /// A frequency the curve must reach (the peak stress asked at a frequency, > 0): checked
+  /// against the range, given or estimated, before the trace (InputError naming
+  /// disc_response/peak_stress/at_hz).
+  double mustCoverHz = 0;
   response::ForcedResponseSetup::Stability stability = response::ForcedResponseSetup::Stability::Auto;
   /// The highest harmonic the harmonics check raises H to (0: H + 1; < 0: no check).
   int harmonicsCheckTo = 0;

@@ -90,6 +90,12 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
 void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
                        const DiscResponseSpec& spec);
 
+/// The node sets the forced response uses (contact faces, excitation, response sets) all
+/// among the reduced models' retained node sets: InputError("reduced_model/retained_node_sets")
+/// naming the set, before any model is built.
+void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,
+                           const DiscResponseSpec& spec);
+
 /// The system: receptance form over `models`, one friction3d element named "contact" per
 /// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), or a
 /// unilateral spring named "gap" on w_n for the pairs spec.gap names, the
