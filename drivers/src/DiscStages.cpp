@@ -13,6 +13,7 @@
 
 #include <Teuchos_Comm.hpp>
 #include "cyclone/core/AtomicFile.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
@@ -24,7 +25,8 @@
 #include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
-#include "cyclone/hbm/ElementStates.hpp"
+#include "cyclone/disc/DiscPointStates.hpp"
+#include "cyclone/post/DiscPointFiles.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
@@ -49,121 +51,6 @@ void copyReferenceCurve(const std::string& outDir, const std::string& tag, const
   const std::string line = tag + ": " + what + " is the reference scene: disc_frc's curve, not traced again";
   summary.computed.push_back(line);
   log::info(line);
-}
-
-std::string shortNumber(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// Per contact at the peak point (hbm::elementStates): the energy friction dissipates per
-// cycle, the mean normal force and the first harmonic's slip amplitude. Returns the energies.
-std::vector<double> writeContactEnergies(const hbm::HarmonicSet& H, const std::vector<hbm::ElementState>& states,
-                                         double omega, const std::string& path) {
-  AtomicFile file(path);
-  std::ofstream csv(file.tempPath());
-  csv.precision(10);
-  csv << "contact,freq_hz,dissipated_energy_per_cycle,mean_normal_force,slip_amplitude\n";
-  std::vector<double> energies;
-  for (std::size_t e = 0; e < states.size(); ++e) {
-    const Eigen::MatrixXd &W = states[e].W, &F = states[e].F;
-    const double energy = hbm::dissipatedEnergyPerCycle(H, states[e]);
-    double slip = 0;
-    if (H.contains(1) && W.cols() == 3) {
-      const int ic = H.cosIndex(1), is = H.sinIndex(1);
-      slip = std::hypot(std::hypot(W(ic, 0), W(is, 0)), std::hypot(W(ic, 1), W(is, 1)));
-    }
-    const double normal = H.contains(0) ? F(H.cosIndex(0), W.cols() - 1) : 0.0;
-    csv << e << "," << omega / (2 * M_PI) << "," << energy << "," << normal << "," << slip << "\n";
-    energies.push_back(energy);
-  }
-  file.check(csv);
-  file.commit();
-  return energies;
-}
-
-// Contact hysteresis loops at the peak point: the sampled contact law
-// (not its truncated Fourier series, whose Gibbs ripples would blur the stick and
-// slip corners) against the relative motion over one period, for the chosen
-// contacts; and the response DOFs over that period.
-void writePeakTimeResponse(const ForcedResponseSetup& setup, const PeakPoint& point,
-                           const std::vector<hbm::ElementState>& states, const std::vector<int>& contacts,
-                           const std::string& outDir, SceneSummary& summary) {
-  const auto& hb = *point.system;
-  const auto& aft = hb.aft();
-  const int N = aft.numSamples();
-  const double hz = point.omega / (2 * M_PI);
-  std::vector<double> phase(std::size_t(N) + 1);
-  for (int i = 0; i <= N; ++i) phase[std::size_t(i)] = double(i) / N;
-  const char* tangential[] = {"t1", "t2"};
-  {
-    AtomicFile file(outDir + "/disc_hysteresis.csv");
-    std::ofstream csv(file.tempPath());
-    csv.precision(10);
-    csv << "contact,freq_hz,t_over_T,slip_t1,slip_t2,approach,force_t1,force_t2,force_n\n";
-    std::ostringstream title;
-    title << "Contact hysteresis at " << point.what;
-    // About each direction's mean: the static part differs between directions
-    // and would push the loops apart.
-    post::SvgPlot plot(title.str(), "relative tangential displacement about its mean (mm)",
-                       "tangential contact force (N)");
-    int line = 0;
-    double xLow = 0, xHigh = 0;  // the loops' extent: a margin on both sides, none drawn on the frame
-    for (int e : contacts) {
-      const auto period = hbm::elementPeriod(hb, std::size_t(e), states[std::size_t(e)], point.omega);
-      const Eigen::MatrixXd &w = period.w, &f = period.f;
-      const int d = int(w.cols());
-      for (int i = 0; i < N; ++i) {
-        // Tangential columns: d - 1 of them (none for a gap element).
-        auto t = [&](const Eigen::MatrixXd& m, int c) { return c < d - 1 ? m(i, c) : 0.0; };
-        csv << e << "," << hz << "," << phase[std::size_t(i)] << "," << t(w, 0) << "," << t(w, 1) << ","
-            << w(i, d - 1) << "," << t(f, 0) << "," << t(f, 1) << "," << f(i, d - 1) << "\n";
-      }
-      for (int c = 0; c + 1 < d; ++c) {  // closed loops: the first sample repeated at the end
-        std::vector<double> x(std::size_t(N) + 1), y(std::size_t(N) + 1);
-        const double mean = w.col(c).mean();
-        for (int i = 0; i <= N; ++i) x[std::size_t(i)] = w(i % N, c) - mean, y[std::size_t(i)] = f(i % N, c);
-        xLow = std::min(xLow, *std::min_element(x.begin(), x.end()));
-        xHigh = std::max(xHigh, *std::max_element(x.begin(), x.end()));
-        plot.addLine(x, y, post::SvgPlot::palette(line++),
-                     "contact " + std::to_string(e) + ", " + tangential[c]);
-      }
-    }
-    csv.close();
-    file.commit();
-    if (xHigh > xLow) plot.setXRange(xLow - 0.05 * (xHigh - xLow), xHigh + 0.05 * (xHigh - xLow));
-    plot.write(outDir + "/disc_hysteresis.svg");
-  }
-  {
-    AtomicFile file(outDir + "/disc_time_response.csv");
-    std::ofstream csv(file.tempPath());
-    csv.precision(10);
-    csv << "freq_hz,t_over_T";
-    for (int dof : setup.outputDofs) csv << "," << setup.dofNames[std::size_t(dof)];
-    csv << "\n";
-    std::ostringstream title;
-    title << "Response over one period at " << point.what;
-    post::SvgPlot plot(title.str(), "t / T", "displacement (mm)");
-    const int nc = hb.numCoefficients();
-    Eigen::MatrixXd x(N, setup.outputDofs.size());
-    for (std::size_t k = 0; k < setup.outputDofs.size(); ++k) {
-      aft.toTime(point.x.data() + std::ptrdiff_t(setup.outputDofs[k]) * nc, x.col(Eigen::Index(k)).data());
-      std::vector<double> y(std::size_t(N) + 1);
-      for (int i = 0; i <= N; ++i) y[std::size_t(i)] = x(i % N, Eigen::Index(k));
-      plot.addLine(phase, y, post::SvgPlot::palette(int(k)), setup.dofNames[std::size_t(setup.outputDofs[k])]);
-    }
-    for (int i = 0; i < N; ++i) {
-      csv << hz << "," << phase[std::size_t(i)];
-      for (Eigen::Index k = 0; k < x.cols(); ++k) csv << "," << x(i, k);
-      csv << "\n";
-    }
-    csv.close();
-    file.commit();
-    plot.write(outDir + "/disc_time_response.svg");
-  }
-  for (const char* f : {"disc_hysteresis.csv", "disc_hysteresis.svg", "disc_time_response.csv", "disc_time_response.svg"})
-    summary.written.push_back(outDir + "/" + f);
 }
 
 // The reduced models per nodal diameter (cached), their check against the full FE
@@ -244,7 +131,7 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
       {"forced response (H = " + std::to_string(solved.setup.system->aft().harmonics().maxHarmonic()) + ", " +
            std::to_string(reference.branch.points.size()) + " points)",
        timer.seconds(),
-       "Newton tolerance " + shortNumber(sweep.continuation.tolerance) + " (residual relative to the forces); " +
+       "Newton tolerance " + numberText(sweep.continuation.tolerance) + " (residual relative to the forces); " +
            reference.samplesCheck.text + "; " + reference.harmonicsCheck.text});
   // The headline: the peak at the highest harmonic count reached, converged or labelled
   // an estimate with the last change next to it.
@@ -260,15 +147,20 @@ void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, c
   auto& setup = solved.setup;
   const PeakPoint point = disc::referencePeakPoint(setup, solved.curve);
   if (comm->getRank() == 0) {
-    const auto states = hbm::elementStates(*point.system, point.x, point.omega);
-    const auto energies =
-        writeContactEnergies(point.system->aft().harmonics(), states, point.omega, outDir + "/disc_frc_contacts.csv");
-    summary.written.push_back(outDir + "/disc_frc_contacts.csv");
-    // Default: the contact that dissipates most at the peak.
-    std::vector<int> loops = hysteresisContacts;
-    if (loops.empty()) loops.push_back(int(std::max_element(energies.begin(), energies.end()) - energies.begin()));
-    writePeakTimeResponse(setup, point, states, loops, outDir, summary);
+    // The contacts' table; the loops of the contacts asked for (by default the one that
+    // dissipates most) and the output DOFs over the period.
+    const auto states = disc::discPointStates(setup, point, hysteresisContacts);
+    post::writeContactsCsv(outDir + "/disc_frc_contacts.csv", states);
+    post::writeHysteresisFiles(outDir + "/disc_hysteresis.csv", outDir + "/disc_hysteresis.svg",
+                               "Contact hysteresis at " + point.what, states);
+    std::vector<std::string> names;
+    for (int dof : setup.outputDofs) names.push_back(setup.dofNames[std::size_t(dof)]);
+    post::writePeriodResponseFiles(outDir + "/disc_time_response.csv", outDir + "/disc_time_response.svg",
+                                   "Response over one period at " + point.what, names, states);
   }
+  for (const char* f : {"disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
+                        "disc_time_response.csv", "disc_time_response.svg"})
+    summary.written.push_back(outDir + "/" + f);
   const auto& ps = plan.peakStress;
   if (ps.atHz > 0)
     writePeakStress(ps, mesh, models, plan.modelSpec, disc::referencePointAt(setup, solved.curve, ps.atHz),

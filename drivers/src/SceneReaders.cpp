@@ -148,9 +148,18 @@ fe::IsotropicElastic readMaterial(SceneSection m) {
   else if (quadrature != "exact")
     throw InputError(m.where("mass_quadrature"), "'" + quadrature + "': exact (the default) or stiffness_rule "
                                                  "(CalculiX's C3D10 mass and centrifugal load, for comparing with it)");
-  if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readFatigueMaterial)
+  // The unit set, said rather than guessed from E (a stress unit, fatigue data by name).
+  const std::string units = m.getString("units", "mm-N-s-t");
+  if (units == "mm-N-s-t") material.units = fe::UnitSystem::MillimetreNewtonSecondTonne;
+  else if (units == "SI") material.units = fe::UnitSystem::SI;
+  else if (units == "other") material.units = fe::UnitSystem::Other;
+  else
+    throw InputError(m.where("units"), "'" + units + "': mm-N-s-t (the default: mm, N, s, t; stresses in MPa), SI "
+                                       "(m, N, s, kg; Pa) or other (a consistent set the code cannot name)");
+  if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readPeakStressSpec)
   m.rejectUnknownKeys();
   material.validate(m.location());
+  material.checkPlausible(m.location());
   return material;
 }
 

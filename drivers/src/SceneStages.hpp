@@ -123,7 +123,7 @@ struct PeakStressSpec {
   int animationSteps = 32;  ///< time steps of one period in disc_peak_vibration.exo
   double atHz = 0;          ///< 0: at the peak; else at this frequency of the reference curve
   fatigue::FatigueMaterial material;
-  std::string stressUnit = "stress units";  ///< "MPa" or "Pa" when the material's E tells
+  std::string stressUnit = "stress units";  ///< "MPa" or "Pa" from material/units (fe::stressUnitName)
 };
 /// Reads disc_response/peak_stress and material/fatigue (`material` as read). InputError
 /// when a margin is asked for without fatigue data, naming both keys.

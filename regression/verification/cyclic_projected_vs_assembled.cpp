@@ -161,6 +161,6 @@ void compareHex20AnnularSector(double shift) {
 TEST(CyclicProjectedVsAssembled, Hex20AnnularSectorLinearPrestress) { compareHex20AnnularSector(std::nan("")); }
 
 // A given shift (K - sigma M factored, sigma < 0): the projected path forms T^H M T only
-// then (HarmonicForm projects K alone otherwise and applies M through the sector's
+// then (NodalDiameterForm projects K alone otherwise and applies M through the sector's
 // matrices); the same frequencies and modes as the assembled path with that shift.
 TEST(CyclicProjectedVsAssembled, Hex20AnnularSectorWithAShift) { compareHex20AnnularSector(-1.0e5); }

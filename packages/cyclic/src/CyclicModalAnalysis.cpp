@@ -29,7 +29,7 @@
 #include "cyclone/core/SingleThreadedBlas.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
-#include "cyclone/cyclic/HarmonicForm.hpp"
+#include "cyclone/cyclic/NodalDiameterForm.hpp"
 #include "cyclone/cyclic/SectorMatrices.hpp"
 #include "cyclone/fe/Assembler.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
@@ -139,7 +139,7 @@ std::optional<NodalDiameterModes> solveProjected(const mesh::Mesh& mesh, const C
                                             NodalDiameterWorker& worker) {
   Timer timer;
   const auto transform = cyclicTransform(mesh, sector, k, problem.fixedNodeSets);
-  HarmonicForm form(matrices, transform);
+  NodalDiameterForm form(matrices, transform);
   releaseFreedMemory();  // the projection's work, before the factor's peak
   NodalDiameterModes hm;
   hm.nodalDiameter = k;
@@ -435,10 +435,10 @@ void solveOnThreads(const std::vector<std::size_t>& owned, int threads,
 std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const CyclicSector& sector,
                                             const CyclicModalProblem& problem, linalg::CommPtr comm) {
   problem.material.validate("material");
-  std::vector<int> harmonics = problem.nodalDiameters;
-  if (harmonics.empty())
-    for (int k = 0; k <= sector.maxNodalDiameter(); ++k) harmonics.push_back(k);
-  for (int k : harmonics) checkNodalDiameter(sector.sectors, k);
+  std::vector<int> nodalDiameters = problem.nodalDiameters;
+  if (nodalDiameters.empty())
+    for (int k = 0; k <= sector.maxNodalDiameter(); ++k) nodalDiameters.push_back(k);
+  for (int k : nodalDiameters) checkNodalDiameter(sector.sectors, k);
   if (problem.modesPerNodalDiameter < 1) throw InputError("modes_per_nd", "must be at least 1");
   if (problem.threads < 0 || problem.threads > 1024)
     throw InputError("threads", std::to_string(problem.threads) + ": use 0 (as many as the cores) or 1..1024");
@@ -447,7 +447,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   const int ranks = comm->getSize(), rank = comm->getRank();
   if (problem.method == solvers::EigenMethod::Lobpcg) {
     // Distributed operators and preconditioner: every rank works on every nodal diameter.
-    for (int k : harmonics) {
+    for (int k : nodalDiameters) {
       std::string key;
       if (auto hm = readBackModes(mesh, sector, problem, k, key, rank)) {
         out.push_back(std::move(*hm));
@@ -478,19 +478,19 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     std::optional<NodalDiameterModes> saved;
     {
       const auto lock = section(worker.checkpoints);
-      saved = readBackModes(mesh, sector, problem, harmonics[i], key, rank);
+      saved = readBackModes(mesh, sector, problem, nodalDiameters[i], key, rank);
     }
     if (saved) {
       keepShapes(*saved, problem);
       return std::move(*saved);
     }
-    auto solved = solveProjected(mesh, sector, harmonics[i], matrices, problem, worker);
+    auto solved = solveProjected(mesh, sector, nodalDiameters[i], matrices, problem, worker);
     NodalDiameterModes hm;
     if (solved) {
       hm = std::move(*solved);
     } else {
       const auto trilinos = trilinosSection(worker);
-      hm = solveAssembled(mesh, sector, harmonics[i], problem, serial);
+      hm = solveAssembled(mesh, sector, nodalDiameters[i], problem, serial);
     }
     hm.rank = rank;
     releaseFreedMemory();  // the Krylov basis and the solves' work, before the next factor
@@ -509,10 +509,10 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
   };
   // This rank's nodal diameters: all of them on one rank, else round robin.
   std::vector<std::size_t> owned;
-  for (std::size_t i = 0; i < harmonics.size(); ++i)
+  for (std::size_t i = 0; i < nodalDiameters.size(); ++i)
     if (int(i % ranks) == rank) owned.push_back(i);
-  std::vector<NodalDiameterModes> mine(harmonics.size());
-  std::vector<std::exception_ptr> failure(harmonics.size());
+  std::vector<NodalDiameterModes> mine(nodalDiameters.size());
+  std::vector<std::exception_ptr> failure(nodalDiameters.size());
   const int threads = int(std::min<std::size_t>(std::size_t(threadsPerRank(problem.threads, ranks)), owned.size()));
   if (threads <= 1) {
     NodalDiameterWorker worker;
@@ -528,8 +528,8 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     solveOnThreads(owned, threads, solveOne, mine, failure);
   }
   // On one rank the first failure is thrown as it is; on several its message goes to all.
-  std::vector<std::string> messages(harmonics.size());
-  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+  std::vector<std::string> messages(nodalDiameters.size());
+  for (std::size_t i = 0; i < nodalDiameters.size(); ++i) {
     if (!failure[i]) continue;
     if (ranks == 1) std::rethrow_exception(failure[i]);
     try {
@@ -542,7 +542,7 @@ std::vector<NodalDiameterModes> solveCyclicModes(const mesh::Mesh& mesh, const C
     if (messages[i].empty()) messages[i] = "failed";
   }
   if (ranks == 1) return mine;
-  return shareOwnersResults(mine, messages, harmonics, mesh, problem, comm);
+  return shareOwnersResults(mine, messages, nodalDiameters, mesh, problem, comm);
 }
 
 void writeFrequenciesCsv(const std::string& path, const std::vector<SpeedModes>& speeds) {

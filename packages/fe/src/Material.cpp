@@ -25,6 +25,50 @@ void IsotropicElastic::validate(const std::string& where) const {
   if (!(rho >= 0)) throw InputError(where, describe(name, "density rho", rho) + " must not be negative");
 }
 
+const char* unitSystemName(UnitSystem units) {
+  switch (units) {
+    case UnitSystem::MillimetreNewtonSecondTonne: return "mm-N-s-t";
+    case UnitSystem::SI: return "SI";
+    case UnitSystem::Other: break;
+  }
+  return "other";
+}
+
+const char* stressUnitName(UnitSystem units) {
+  switch (units) {
+    case UnitSystem::MillimetreNewtonSecondTonne: return "MPa";
+    case UnitSystem::SI: return "Pa";
+    case UnitSystem::Other: break;
+  }
+  return "stress units";
+}
+
+double stressUnitInMpa(UnitSystem units) {
+  switch (units) {
+    case UnitSystem::MillimetreNewtonSecondTonne: return 1;
+    case UnitSystem::SI: return 1e-6;
+    case UnitSystem::Other: break;
+  }
+  return 0;
+}
+
+void IsotropicElastic::checkPlausible(const std::string& where) const {
+  if (units == UnitSystem::Other) return;
+  // In the set's own units: E in stress units, rho in mass per volume.
+  const bool mm = units == UnitSystem::MillimetreNewtonSecondTonne;
+  const double eLow = mm ? 1e2 : 1e8, eHigh = mm ? 2e6 : 2e12;
+  const double rhoLow = mm ? 1e-10 : 1e2, rhoHigh = mm ? 3e-8 : 3e4;
+  const std::string set = std::string(" in the ") + unitSystemName(units) + " set (";
+  if (!(E >= eLow && E <= eHigh))
+    throw InputError(where, describe(name, "Young's modulus E", E) + " is no solid's" + set + stressUnitName(units) +
+                                "; from " + (mm ? "1e2 to 2e6" : "1e8 to 2e12") +
+                                "): a value in other units? Give units: SI, mm-N-s-t or other");
+  if (!(rho == 0 || (rho >= rhoLow && rho <= rhoHigh)))  // 0: a static analysis without mass
+    throw InputError(where, describe(name, "density rho", rho) + " is no solid's" + set +
+                                (mm ? "t/mm^3; from 1e-10 to 3e-8" : "kg/m^3; from 1e2 to 3e4") +
+                                "): a value in other units? Give units: SI, mm-N-s-t or other");
+}
+
 Eigen::Matrix<double, 6, 6> IsotropicElastic::elasticity() const {
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   const double mu = E / (2 * (1 + nu));

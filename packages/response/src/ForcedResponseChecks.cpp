@@ -75,6 +75,22 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& ha
          << " would take " << gigabytes << " GB (at most " << kMaxGigabytes << " here); use fewer harmonics";
     throw InputError(harmonicsKey, what.str());
   }
+  // Krylov's preconditioner factors the linear block of every harmonic, dense over the
+  // DOFs: (2/3) (2 DOFs)^3 flops each (a 3000-DOF matrix scene at H = 7 spent minutes on
+  // its first one without a word; issue 49). About 10 Gflop/s here in single precision.
+  if (krylov) {
+    const double dofs = hb.numDofs();
+    const double seconds = hb.aft().harmonics().size() * (2.0 / 3.0) * std::pow(2 * dofs, 3) / 1e10;
+    if (seconds > 600)
+      throw InputError(harmonicsKey, what.str() + ": the Newton steps' preconditioner factors a dense " +
+                                         std::to_string(2 * int(dofs)) + "-square block per harmonic, about " +
+                                         std::to_string(int(seconds)) + " s each time; use fewer DOFs (a reduced "
+                                         "model at the nonlinear DOFs) or fewer harmonics");
+    if (seconds > 2)
+      log::warn(what.str() + ": the Newton steps' preconditioner factors a dense " + std::to_string(2 * int(dofs)) +
+                "-square block per harmonic, about " + std::to_string(int(std::ceil(seconds))) +
+                " s each time (a reduced model at the nonlinear DOFs would make it small)");
+  }
   if (!krylov && n > kSlowUnknowns)
     log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
               std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");

@@ -1,7 +1,7 @@
 #pragma once
 // Modes of a cyclic sector for each requested nodal diameter. Shift-invert: the sector's element matrices once per speed
 // (SectorMatrices), each nodal diameter projected by its cyclic transform
-// (HarmonicForm, complex Hermitian for travelling-wave pairs), factored by CHOLMOD
+// (NodalDiameterForm, complex Hermitian for travelling-wave pairs), factored by CHOLMOD
 // and solved by Anasazi's block Krylov-Schur; on several MPI ranks the nodal
 // diameters are spread over the ranks. LOBPCG + MueLu (no factorization): the
 // operators assembled per nodal diameter, distributed over the ranks. Mode shapes are

@@ -3,7 +3,7 @@
 // node-major, nothing eliminated, no cyclic constraint): everything of the
 // cyclic eigenproblem that does not depend on the nodal diameter. Assembled once
 // per speed; each nodal diameter then only projects it with its cyclic transform
-// (HarmonicForm), instead of computing every element matrix again.
+// (NodalDiameterForm), instead of computing every element matrix again.
 //
 // Both matrices are symmetric and share the mesh's node graph, so they are held as
 // the lower triangle in 3 x 3 node blocks on one pattern: a third of two general

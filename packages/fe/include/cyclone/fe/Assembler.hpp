@@ -8,7 +8,7 @@
 // lowest equation it owns. A partitioned mesh would change only this class.
 //
 // The unknowns are given by a DofTransform (DofMap::transform() for plain
-// constraints, cyclic transforms per harmonic index): every operator is
+// constraints, cyclic transforms per nodal diameter): every operator is
 // sum over copies of T_c^T A T_c; loads act on copy 0 (the real part).
 #include <array>
 #include <functional>

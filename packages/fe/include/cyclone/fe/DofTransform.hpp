@@ -2,7 +2,7 @@
 // The map from physical DOFs to the unknowns actually solved for:
 //   u(node, component, copy) = sum over terms of coefficient * x[equation].
 // A plain constrained model has one copy and one term (or none, when fixed)
-// per DOF. A cyclic sector at harmonic index k has one or two copies (the real
+// per DOF. A cyclic sector at nodal diameter k has one or two copies (the real
 // and imaginary parts, for 0 < k < N/2), and its right-face DOFs are rotated,
 // phase-shifted combinations of the left-face ones. Operators assemble as
 // sum over copies of T_c^T K T_c, element by element.

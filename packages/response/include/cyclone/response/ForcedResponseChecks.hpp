@@ -87,7 +87,8 @@ double levelsMeetTarget(const std::vector<HarmonicsLevel>& levels, double target
 /// unknowns' size; Krylov, where the system has Jacobian blocks and `solver` chooses it,
 /// per harmonic two blocks over the DOFs and GMRES's basis): an InputError naming
 /// `harmonicsKey` where it would not fit in this machine's memory, a warning where each
-/// dense Newton iteration takes seconds.
+/// dense Newton iteration, or each factorization of Krylov's preconditioner (a dense block
+/// over the DOFs per harmonic), takes seconds (refused beyond 10 minutes).
 void checkSolverSize(const hbm::HarmonicBalanceSystem& system, const std::string& harmonicsKey,
                      continuation::ContinuationOptions::LinearSolver solver =
                          continuation::ContinuationOptions::LinearSolver::Auto);

@@ -40,17 +40,17 @@ public:
   FactorCache& operator=(const FactorCache&) = delete;
 
 private:
-  friend class HarmonicForm;
+  friend class NodalDiameterForm;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
-class HarmonicForm {
+class NodalDiameterForm {
 public:
-  HarmonicForm(const SectorMatrices& sector, const fe::DofTransform& transform);
-  ~HarmonicForm();
-  HarmonicForm(HarmonicForm&&) noexcept;
-  HarmonicForm& operator=(HarmonicForm&&) noexcept;
+  NodalDiameterForm(const SectorMatrices& sector, const fe::DofTransform& transform);
+  ~NodalDiameterForm();
+  NodalDiameterForm(NodalDiameterForm&&) noexcept;
+  NodalDiameterForm& operator=(NodalDiameterForm&&) noexcept;
 
   bool complexForm() const;
   long long size() const;  ///< real-form unknowns (the transform's equations)

@@ -1,4 +1,4 @@
-#include "cyclone/cyclic/HarmonicForm.hpp"
+#include "cyclone/cyclic/NodalDiameterForm.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -211,7 +211,7 @@ void factorInto(std::unique_ptr<solvers::SparseCholesky<Scalar>>& slot, Matrix&&
 
 }  // namespace
 
-struct HarmonicForm::Impl {
+struct NodalDiameterForm::Impl {
   bool complexForm = false;
   long long size = 0;
   Real K, M;      // real form, lower triangles
@@ -252,7 +252,7 @@ void productThroughSector(const SectorMatrices& sector, const std::vector<double
 
 }  // namespace
 
-HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform& transform)
+NodalDiameterForm::NodalDiameterForm(const SectorMatrices& sector, const fe::DofTransform& transform)
     : impl_(std::make_unique<Impl>()) {
   auto& I = *impl_;
   I.size = transform.numEquations();
@@ -274,12 +274,12 @@ HarmonicForm::HarmonicForm(const SectorMatrices& sector, const fe::DofTransform&
   I.normK = hermitianNorm(I.K), I.normM = std::sqrt(normM2);
 }
 
-HarmonicForm::~HarmonicForm() = default;
-HarmonicForm::HarmonicForm(HarmonicForm&&) noexcept = default;
-HarmonicForm& HarmonicForm::operator=(HarmonicForm&&) noexcept = default;
+NodalDiameterForm::~NodalDiameterForm() = default;
+NodalDiameterForm::NodalDiameterForm(NodalDiameterForm&&) noexcept = default;
+NodalDiameterForm& NodalDiameterForm::operator=(NodalDiameterForm&&) noexcept = default;
 
-bool HarmonicForm::complexForm() const { return impl_->complexForm; }
-long long HarmonicForm::size() const { return impl_->size; }
+bool NodalDiameterForm::complexForm() const { return impl_->complexForm; }
+long long NodalDiameterForm::size() const { return impl_->size; }
 
 namespace {
 
@@ -301,7 +301,7 @@ void applyThroughSector(bool complexForm, const Coupling<std::complex<double>>& 
 
 }  // namespace
 
-void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& I = *impl_;
   // K is handed to the factor at sigma = 0 (not kept beside it).
   if (I.released || (I.complexForm ? I.ZK.nonZeros() == 0 : I.K.nonZeros() == 0)) return applyThroughSector(I.complexForm, I.complexCoupling, I.realCouplings, *I.sector, I.sector->k, x, y);
@@ -310,7 +310,7 @@ void HarmonicForm::applyK(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   else hermitianProduct(impl_->K, x.data(), y.data(), x.cols());
 }
 
-void HarmonicForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& I = *impl_;
   // M is formed only for a shifted factor, and then only until the projections are released.
   if (I.released || (I.complexForm ? I.ZM.nonZeros() == 0 : I.M.nonZeros() == 0))
@@ -320,14 +320,14 @@ void HarmonicForm::applyM(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   else hermitianProduct(impl_->M, x.data(), y.data(), x.cols());
 }
 
-void HarmonicForm::releaseProjections() {
+void NodalDiameterForm::releaseProjections() {
   auto& I = *impl_;
-  if (!I.factors) throw Error("HarmonicForm::releaseProjections: factor first");
+  if (!I.factors) throw Error("NodalDiameterForm::releaseProjections: factor first");
   I.K = Real(), I.M = Real(), I.ZK = Complex(), I.ZM = Complex();
   I.released = true;
 }
 
-void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   y.resize(x.rows(), x.cols());
   for (Eigen::Index m = 0; 2 * m + 1 < x.rows(); ++m) {
     y.row(2 * m) = -x.row(2 * m + 1);
@@ -335,12 +335,12 @@ void HarmonicForm::timesI(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   }
 }
 
-double HarmonicForm::normK() const { return impl_->normK; }
-double HarmonicForm::normM() const { return impl_->normM; }
+double NodalDiameterForm::normK() const { return impl_->normK; }
+double NodalDiameterForm::normM() const { return impl_->normM; }
 
-void HarmonicForm::factor(double sigma) { factor(sigma, impl_->own); }
+void NodalDiameterForm::factor(double sigma) { factor(sigma, impl_->own); }
 
-void HarmonicForm::factor(double sigma, FactorCache& cache) {
+void NodalDiameterForm::factor(double sigma, FactorCache& cache) {
   auto& I = *impl_;
   I.factors = nullptr;
   auto& slots = *cache.impl_;
@@ -349,7 +349,7 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
   else slots.complex.reset();
   // At sigma = 0 (a constrained sector, the usual case) K itself, handed over: released
   // once CHOLMOD has its permuted copy, so the factorization holds one copy of K.
-  if (I.released) throw Error("HarmonicForm::factor: the projections were released");
+  if (I.released) throw Error("NodalDiameterForm::factor: the projections were released");
   // K went to an earlier factor (at sigma = 0): projected again.
   if (I.complexForm && I.ZK.nonZeros() == 0)
     project<std::complex<double>>(*I.sector, {I.complexCoupling}, int(I.size / 2), &I.ZK, nullptr);
@@ -372,7 +372,7 @@ void HarmonicForm::factor(double sigma, FactorCache& cache) {
   I.factors = &slots;
 }
 
-bool HarmonicForm::factored() const { return impl_->factors != nullptr; }
+bool NodalDiameterForm::factored() const { return impl_->factors != nullptr; }
 
 namespace {
 
@@ -392,25 +392,25 @@ void solveBlock(bool complexForm, const Eigen::MatrixXd& x, Eigen::MatrixXd& y, 
 
 }  // namespace
 
-void HarmonicForm::solveShifted(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::solveShifted(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& f = *impl_->factors;
   solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solve(b); },
              [&](const Eigen::MatrixXcd& b) { return f.complex->solve(b); });
 }
 
-void HarmonicForm::solveLower(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::solveLower(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& f = *impl_->factors;
   solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solveLower(b); },
              [&](const Eigen::MatrixXcd& b) { return f.complex->solveLower(b); });
 }
 
-void HarmonicForm::solveUpper(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+void NodalDiameterForm::solveUpper(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const auto& f = *impl_->factors;
   solveBlock(impl_->complexForm, x, y, [&](const Eigen::MatrixXd& b) { return f.real->solveUpper(b); },
              [&](const Eigen::MatrixXcd& b) { return f.complex->solveUpper(b); });
 }
 
-double HarmonicForm::factorNonzeros() const {
+double NodalDiameterForm::factorNonzeros() const {
   if (!impl_->factors) return 0.0;
   return impl_->complexForm ? impl_->factors->complex->factorNonzeros() : impl_->factors->real->factorNonzeros();
 }
