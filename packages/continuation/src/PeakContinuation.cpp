@@ -1,5 +1,7 @@
 #include "cyclone/continuation/PeakContinuation.hpp"
 
+#include "GoldenSection.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -449,22 +451,11 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
       }
       return true;
     };
-    double a = condition.coordinateOf(out.points[k - 1].parameter), b = condition.coordinateOf(out.points[k + 1].parameter);
-    const double golden = 0.5 * (std::sqrt(5.0) - 1);
-    double c = b - golden * (b - a), d = a + golden * (b - a);
-    FollowedPeak pc, pd;
-    bool ok = peakMeasure(c, pc) && peakMeasure(d, pd);
-    while (ok && std::abs(b - a) > o.optimumTolerance) {
-      if (pc.measure < pd.measure) {
-        b = d, d = c, pd = pc, c = b - golden * (b - a);
-        ok = peakMeasure(c, pc);
-      } else {
-        a = c, c = d, pc = pd, d = a + golden * (b - a);
-        ok = peakMeasure(d, pd);
-      }
-    }
-    if (ok) {
-      const FollowedPeak& best = pc.measure < pd.measure ? pc : pd;
+    const auto located = detail::goldenSectionMinimum<FollowedPeak>(
+        condition.coordinateOf(out.points[k - 1].parameter), condition.coordinateOf(out.points[k + 1].parameter),
+        o.optimumTolerance, peakMeasure, [](const FollowedPeak& p) { return p.measure; });
+    if (located) {
+      const FollowedPeak& best = *located;
       if (best.measure <= out.points[k].measure) {
         // Into the curve in its order of tracing (between k's neighbours).
         const double qb = condition.coordinateOf(best.parameter), qk = condition.coordinateOf(out.points[k].parameter),

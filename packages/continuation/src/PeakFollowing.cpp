@@ -1,5 +1,7 @@
 #include "cyclone/continuation/PeakFollowing.hpp"
 
+#include "GoldenSection.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -157,22 +159,11 @@ void Follower::locateOptimum() {
       if (std::abs(p - pts[j].parameter) < std::abs(p - pts[near].parameter)) near = j;
     return searchFrom(p, pts[near].x, pts[near].frequency, peak);
   };
-  const double golden = 0.5 * (std::sqrt(5.0) - 1);
-  double a = pts[k - 1].parameter, b = pts[k + 1].parameter;
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  FollowedPeak pc, pd;
-  if (!peakAt(c, pc) || !peakAt(d, pd)) return;
   const double tolerance = 1e-6 * std::abs(o_.parameters.back() - o_.parameters.front());
-  while (std::abs(b - a) > tolerance) {
-    if (pc.measure < pd.measure) {
-      b = d, d = c, pd = pc, c = b - golden * (b - a);
-      if (!peakAt(c, pc)) return;
-    } else {
-      a = c, c = d, pc = pd, d = a + golden * (b - a);
-      if (!peakAt(d, pd)) return;
-    }
-  }
-  FollowedPeak best = pc.measure < pd.measure ? pc : pd;
+  auto located = detail::goldenSectionMinimum<FollowedPeak>(pts[k - 1].parameter, pts[k + 1].parameter, tolerance,
+                                                            peakAt, [](const FollowedPeak& p) { return p.measure; });
+  if (!located) return;
+  FollowedPeak best = std::move(*located);
   const auto at = pts.begin() + long(best.parameter < pts[k].parameter ? k : k + 1);
   const std::size_t index = std::size_t(at - pts.begin());
   if (best.measure < pts[k].measure) {
