@@ -37,8 +37,14 @@ int main(int argc, char** argv) {
   disc::DiscSweepOptions sweep;
   sweep.harmonicsCheckTo = 2;
   const auto response = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
-  std::printf("%zu points, %s\n%s\n", response.curve.branch.points.size(), response.curve.branch.stopReason.c_str(),
-              response.headline.text.c_str());
+  // How the curve ended and whether its peak converged are types to branch on; the
+  // sentences are for a person.
+  const bool wholeRange = response.curve.branch.end == continuation::BranchEnd::RangeEnd;
+  std::printf("%zu points, ended: %s (%s)\nheadline: %s; %s\n", response.curve.branch.points.size(),
+              continuation::branchEndName(response.curve.branch.end), response.curve.branch.stopReason.c_str(),
+              disc::convergenceName(response.headline.convergence), response.headline.text.c_str());
+  if (response.headline.convergence == disc::DiscHeadline::Convergence::Estimate)
+    std::printf("the peak is an estimate: raise harmonicsCheckTo for a converged one\n");
 
   // 3. The preload study: one curve per preload over the same range (100 N is the
   //    reference: its curve, not traced again).
@@ -48,7 +54,7 @@ int main(int argc, char** argv) {
   // 4. What friction must give: the peak between the linear limits (shroud free and
   //    contacts stuck), rising in frequency as more preload holds the contacts.
   const double hz = response.curve.peakOmega / (2 * M_PI);
-  bool ok = response.curve.branch.finished && response.estimate &&
+  bool ok = wholeRange && response.headline.found() && response.estimate &&
             hz >= response.estimate->freeHz && hz <= response.estimate->stuckHz;
   double lastHz = 0;
   for (const auto& c : study) {

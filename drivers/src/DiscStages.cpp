@@ -135,7 +135,7 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
            reference.samplesCheck.text + "; " + reference.harmonicsCheck.text});
   // The headline: the peak at the highest harmonic count reached, converged or labelled
   // an estimate with the last change next to it.
-  if (solved.headline.found) summary.computed.insert(summary.computed.begin(), solved.headline.text);
+  if (solved.headline.found()) summary.computed.insert(summary.computed.begin(), solved.headline.text);
   return solved;
 }
 

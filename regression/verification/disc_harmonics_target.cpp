@@ -39,8 +39,8 @@ TEST(DiscHarmonicsTarget, ConvergedPeakMeetsACurveWithTwoHarmonicsMore) {
   sweep.harmonicsCheckTo = kMax;
   const auto target = disc::solveDiscForcedResponse(mesh, reduced, spec, sweep);
   const double targetSeconds = timer.seconds();
-  ASSERT_TRUE(target.headline.found);
-  ASSERT_TRUE(target.headline.converged) << target.headline.text;
+  ASSERT_TRUE(target.headline.found());
+  ASSERT_TRUE(target.headline.converged()) << target.headline.text;
   const int H = target.headline.peak.maxHarmonic;
   const double peak = target.headline.peak.value, hz = target.headline.peak.hz;
   EXPECT_EQ(target.curve.harmonicsTarget.reached, H);

@@ -36,7 +36,7 @@ response::ForcedResponseResult curveWith(int stable, std::complex<double> expone
 
 TEST(DiscHeadline, StatesHillsVerdictAtThePeak) {
   const auto stable = disc::discHeadline(curveWith(1, {-8.2, 3381.9}));
-  EXPECT_TRUE(stable.converged);
+  EXPECT_EQ(stable.convergence, disc::DiscHeadline::Convergence::Converged);
   EXPECT_EQ(stable.stability, PS::Stable);
   EXPECT_NE(stable.text.find("stable by Hill's method at the traced curve's top"), std::string::npos) << stable.text;
 
@@ -55,6 +55,26 @@ TEST(DiscHeadline, StatesHillsVerdictAtThePeak) {
   const auto unsure = disc::discHeadline(curveWith(2, {1.7, 0}));
   EXPECT_EQ(unsure.stability, PS::Undetermined);
   EXPECT_NE(unsure.text.find("undetermined"), std::string::npos) << unsure.text;
+}
+
+// The convergence state a calling program branches on: converged where the last raise of
+// H changed the peak by at most 1 % (0.5 % here), an estimate above (3 %) or where a level
+// above was tried and not found, not found where the check found no peak.
+TEST(DiscHeadline, ItsConvergenceIsTyped) {
+  using C = disc::DiscHeadline::Convergence;
+  EXPECT_EQ(disc::discHeadline(curveWith(1, {-8.2, 3381.9})).convergence, C::Converged);
+  auto coarse = curveWith(1, {-8.2, 3381.9});
+  coarse.harmonicsCheck.converged.change = 0.03;
+  const auto estimate = disc::discHeadline(coarse);
+  EXPECT_EQ(estimate.convergence, C::Estimate);
+  EXPECT_STREQ(disc::convergenceName(estimate.convergence), "estimate");
+  auto wall = curveWith(1, {-8.2, 3381.9});
+  wall.harmonicsCheck.converged.notFoundHarmonic = 6;
+  EXPECT_EQ(disc::discHeadline(wall).convergence, C::Estimate);
+  auto none = curveWith(1, {-8.2, 3381.9});
+  none.harmonicsCheck.converged.found = false;
+  EXPECT_EQ(disc::discHeadline(none).convergence, C::NotFound);
+  EXPECT_FALSE(disc::discHeadline(none).found());
 }
 
 TEST(DiscHeadline, SaysNothingOfAnotherPointsStability) {

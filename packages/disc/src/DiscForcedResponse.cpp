@@ -47,14 +47,24 @@ std::string peakStability(const response::ForcedResponseResult& curve, DiscHeadl
 
 }  // namespace
 
+const char* convergenceName(DiscHeadline::Convergence convergence) {
+  switch (convergence) {
+    case DiscHeadline::Convergence::NotFound: return "not found";
+    case DiscHeadline::Convergence::Estimate: return "estimate";
+    case DiscHeadline::Convergence::Converged: break;
+  }
+  return "converged";
+}
+
 DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   constexpr double kConverged = 1e-2;
   DiscHeadline headline;
   const auto& best = curve.harmonicsCheck.converged;
   if (!best.found) return headline;
-  headline.found = true;
   headline.peak = best;
-  headline.converged = best.change >= 0 && best.change <= kConverged && best.notFoundHarmonic < 0;
+  using C = DiscHeadline::Convergence;
+  headline.convergence =
+      best.change >= 0 && best.change <= kConverged && best.notFoundHarmonic < 0 ? C::Converged : C::Estimate;
   const std::string stability = peakStability(curve, headline);
   std::ostringstream line;
   line.precision(6);
@@ -73,7 +83,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
   }
   const auto& target = curve.harmonicsTarget;
   if (target.tolerance > 0 && target.reached >= 0) {  // harmonics by an error target, met (two raises)
-    headline.converged = true;
+    headline.convergence = C::Converged;
     line << "; converged in the harmonics to " << 100 * target.tolerance << " % (each of the last two raises of H "
          << "changed it by at most " << 100 * target.change << " %; the curve traced whole with H = " << target.reached
          << ")" << dropped;
@@ -81,7 +91,7 @@ DiscHeadline discHeadline(const response::ForcedResponseResult& curve) {
     return headline;
   }
   if (target.tolerance > 0) {  // not met: an estimate whatever the last raise alone did
-    headline.converged = false;
+    headline.convergence = C::Estimate;
     line << "; an estimate: the error target " << 100 * target.tolerance
          << " % on the harmonics (harmonics: auto) was not met, each of the last two raises of H must change it "
             "by at most that";
@@ -193,7 +203,7 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   }
   out.curve = sweepDisc(out.setup, out.fromHz, out.toHz, options, out.warnings);
   out.headline = discHeadline(out.curve);
-  if (out.headline.found) log::info(out.headline.text);
+  if (out.headline.found()) log::info(out.headline.text);
   return out;
 }
 

@@ -43,10 +43,13 @@ struct DiscSweepOptions {
 
 /// The peak a disc run reports: the harmonics check's highest level found.
 struct DiscHeadline {
-  bool found = false;
-  /// Its change from the level below is at most 1 %, and no level above failed; with an
-  /// error target on the harmonics, the target met (its last two raises within it).
-  bool converged = false;
+  /// NotFound: the harmonics check found no peak. Converged: its change from the level
+  /// below is at most 1 %, and no level above failed; with an error target on the
+  /// harmonics, the target met (its last two raises within it). Estimate: found, not that.
+  enum class Convergence { NotFound, Estimate, Converged };
+  Convergence convergence = Convergence::NotFound;
+  bool found() const { return convergence != Convergence::NotFound; }
+  bool converged() const { return convergence == Convergence::Converged; }
   response::HarmonicsConvergedPeak peak;
   /// Hill's verdict at the traced curve's largest point, where that is the headline's peak
   /// (within 1 % in frequency). A complex pair of exponents with Re > 0 there (the
@@ -58,8 +61,10 @@ struct DiscHeadline {
   std::complex<double> leadingExponent;  ///< 1/s, where Hill's pick left one
   std::string text;  ///< "friction-damped peak: max|x(t)| ... converged ... / an estimate ..."
 };
-/// The headline of a traced curve (found = false when the harmonics check found no peak).
+/// The headline of a traced curve (NotFound when the harmonics check found no peak).
 DiscHeadline discHeadline(const response::ForcedResponseResult& curve);
+/// "not found", "estimate", "converged".
+const char* convergenceName(DiscHeadline::Convergence convergence);
 
 /// Patches (ShroudContactSpec::patches) against every node pair, where both can be
 /// compared cheaply: the stuck system's resonance (harmonic 1, the contacts linear), the
