@@ -12,6 +12,7 @@
 #include "SceneStages.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
@@ -63,6 +64,16 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
 // Forced response of a matrix-defined system with nonlinear elements: harmonic
 // balance (AFT) traced by arclength continuation in the excitation frequency.
 }  // namespace
+
+double readContinuationTolerance(SceneSection& cs, double defaultValue) {
+  const double tolerance = cs.getDouble("tolerance", defaultValue);
+  if (!(tolerance >= 1e-14 && tolerance <= 1e-4))
+    throw InputError(cs.where("tolerance"), numberText(tolerance) +
+                                                ": must lie in 1e-14..1e-4, the residual relative to the forces acting "
+                                                "(below: under the rounding of double precision; above: a response "
+                                                "near a resonance, amplified by its quality factor, off by percents)");
+  return tolerance;
+}
 
 void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt, const std::string& defaultEngine) {
   using Options = continuation::ContinuationOptions;
@@ -288,6 +299,7 @@ void readEngineOrder(SceneSection& ex, MatrixSystemInput& in) {
 // + phi)), its scale, and the static loads.
 void readForces(SceneSection& scene, SceneSection& ex, ForcedResponseSetup& setup) {
   auto& hb = *setup.system;
+  bool vibrating = false;  // some force at a harmonic >= 1
   for (const auto& name : ex.sectionNames()) {
     auto f = ex.section(name);
     if (f.has("engine_order")) f.getInt("engine_order", 0);  // read with the system
@@ -300,9 +312,16 @@ void readForces(SceneSection& scene, SceneSection& ex, ForcedResponseSetup& setu
     } else if (f.has("phase")) {
       throw InputError(f.where("phase"), "goes with amplitude (A cos(h w t + phase))");
     }
-    hb.addExcitation(f.getInt("dof", 0), f.getInt("harmonic", 1), c, sn);
+    const int harmonic = f.getInt("harmonic", 1);
+    hb.addExcitation(f.getInt("dof", 0), harmonic, c, sn);
+    vibrating = vibrating || harmonic >= 1;
     f.rejectUnknownKeys();
   }
+  // Only harmonic 0: a static load swept in frequency, whose "peak" was the range's start,
+  // exit 0 (issue 49 probe).
+  if (!vibrating && !ex.sectionNames().empty())
+    throw InputError(ex.location(), "has forces at harmonic 0 only: a static load, nothing vibrates (give the "
+                                    "vibrating forces harmonic >= 1; a constant load belongs in static_loads)");
   setup.excitationScale = ex.getDouble("scale", 1.0);
   if (!std::isfinite(setup.excitationScale)) throw InputError(ex.where("scale"), "must be a finite number");
   ex.rejectUnknownKeys();
@@ -364,9 +383,7 @@ void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
     setup.fallback = continuation::locaOptions();
   }
   readContinuationSteps(cs, opt, "predictor_corrector");
-  opt.tolerance = cs.getDouble("tolerance", opt.tolerance);
-  if (!(opt.tolerance > 0 && opt.tolerance < 1))
-    throw InputError(cs.where("tolerance"), "must lie in (0, 1): the residual relative to the forces acting");
+  opt.tolerance = readContinuationTolerance(cs, opt.tolerance);
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
     throw InputError(cs.location(), "the frequency range must be positive");

@@ -76,6 +76,8 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
     mesh = mesh::generateShroudedSector(p);
     builtInSectors = p.sectors;
   } else {
+    if (overrides.meshSize)
+      throw InputError("--mesh-size", "applies to the built-in sector; this scene reads its mesh from '" + source + "'");
     // The built-in sector's keys do not apply to a mesh read from a file: say so, not
     // "unknown key (known here: )" (issue 20).
     if (s.has("shrouded_sector"))
@@ -447,7 +449,10 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
                SceneSummary& summary, std::map<std::string, std::string>& unreadNotes) {
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
   if (wants("forced_response")) {
-    // Matrix-defined systems need no mesh.
+    // Matrix-defined systems need no mesh (--mesh-size was ignored, exit 0; issue 49 probe).
+    if (overrides.meshSize)
+      throw InputError("--mesh-size", "applies to the built-in sector (mesh: source: shrouded_sector); this scene is "
+                                      "a system given by its matrices (forced_response)");
     Timer stage;
     forcedResponseStage(scene, outDir, checkpoints, comm, summary);
     summary.stages.push_back({"forced response", stage.seconds(), "see the samples check"});

@@ -2,6 +2,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -40,6 +41,9 @@ int usageError(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Progress goes to stdout; a reader that closes it (`cyclone run s.yaml | head`) must not
+  // end the run by SIGPIPE with its manifest left "running": the writes fail, the run goes on.
+  std::signal(SIGPIPE, SIG_IGN);
   // Commands that need no MPI/Kokkos are answered first: Kokkos would take --help for itself.
   if (argc < 2) return usageError("no command given");
   const std::string command = argv[1];

@@ -167,6 +167,26 @@ TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) { stopMidCurveAndResume(SI
 
 TEST(Scenes, ATerminatedRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGTERM, "interrupted"); }
 
+// A run whose stdout reader goes away (`cyclone run s.yaml | head -1`): it was killed by
+// SIGPIPE at its second log line, exit 141, its manifest left "running" (issue 49 probe).
+// The run goes on to the end without its progress lines.
+TEST(Scenes, AClosedStdoutDoesNotEndTheRun) {
+  const auto dir = freshDir("closed_stdout");
+  const fs::path status = dir.string() + ".status";
+  const std::string command = "bash -c '" + std::string(CYCLONE_EXE) + " run " + CYCLONE_SCENE_DIR +
+                              "/duffing.yaml --output " + dir.string() + " | head -c 1 > /dev/null; echo ${PIPESTATUS[0]} > " +
+                              status.string() + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(status);
+  int code = -1;
+  in >> code;
+  EXPECT_EQ(code, 0);
+  std::ifstream manifestFile(dir / "run_manifest.txt");
+  const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(manifest.rfind("status: complete", 0), 0u) << manifest;
+  EXPECT_TRUE(fs::exists(dir / "frc.csv"));
+}
+
 // The report is this run's: an earlier run's study figure and table in the same output
 // directory made a "Parameter studies" section of a run that had none.
 TEST(Scenes, TheReportShowsOnlyThisRunsStudies) {

@@ -18,6 +18,11 @@ class SceneSection;
 /// values in `options` on entry; a value out of its domain is an InputError naming the key.
 void readContinuationSteps(SceneSection& continuationSection, continuation::ContinuationOptions& options,
                            const std::string& defaultEngine);
+/// continuation/tolerance: the Newton residual relative to the forces acting, within
+/// [1e-14, 1e-4] (InputError with the key): below, double precision's rounding of these
+/// systems; above, a response near a resonance, amplified by its quality factor (hundreds),
+/// off by percents (0.99 moved the disc's peak by 23 % while the harmonics took the blame).
+double readContinuationTolerance(SceneSection& continuationSection, double defaultValue);
 
 /// Reads the keys of a forced-response scene (strictly: unknown keys are errors).
 response::ForcedResponseSetup readForcedResponseSetup(SceneSection& scene);
