@@ -90,6 +90,10 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
                                            std::to_string(nodes) + " nodes: the eigen-solver's space of about 3 x "
                                            "modes vectors must fit in its 3 x nodes DOFs");
   spec.omega0 = r.getDouble("omega0", spec.omega0);
+  // Before the prestress and the models (-1 was refused after them; issue 49 probe).
+  if (!(spec.omega0 >= 0 && std::isfinite(spec.omega0)))
+    throw InputError(r.where("omega0"), "must be >= 0 (rad/s; 0 for a held sector: the static correction's "
+                                        "expansion point)");
   spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
   if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
   spec.rpm = r.getDouble("speed_rpm", loadsRpm);

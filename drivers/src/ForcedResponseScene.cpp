@@ -51,8 +51,8 @@ Eigen::MatrixXd squareMatrix(SceneSection& s, const std::string& key, int n, boo
     return A;
   }
   const auto v = s.getDoubleList(key, {});
-  if (int(v.size()) != n * n)
-    throw InputError(s.where(key), "needs " + std::to_string(n * n) + " numbers (row by row for " +
+  if ((long long)v.size() != (long long)n * n)  // 1e5 DOFs: n * n overflowed an int in the message
+    throw InputError(s.where(key), "needs " + std::to_string((long long)n * n) + " numbers (row by row for " +
                                        std::to_string(n) + " DOFs), got " + std::to_string(v.size()));
   Eigen::MatrixXd A(n, n);
   for (int i = 0; i < n; ++i)
@@ -200,7 +200,7 @@ struct PlacedElement {
   Eigen::MatrixXd W, Wnext;
 };
 
-std::shared_ptr<const hbm::NonlinearElement> readElementLaw(SceneSection& e) {
+std::shared_ptr<const hbm::NonlinearElement> elementLaw(SceneSection& e) {
   const std::string type = e.getString("type", "");
   auto scalar = [](std::shared_ptr<const hbm::ScalarElement> s) {
     return std::make_shared<hbm::ScalarElementAdapter>(std::move(s));
@@ -218,14 +218,21 @@ std::shared_ptr<const hbm::NonlinearElement> readElementLaw(SceneSection& e) {
     p.kn = e.getDouble("kn", 0.0);
     p.mu = e.requireDouble("mu");
     p.preload = e.getDouble("preload", 0.0);
-    try {
-      return std::make_shared<hbm::FrictionContact>(p);
-    } catch (const InputError& err) {
-      throw InputError(e.location(), err.what());
-    }
+    return std::make_shared<hbm::FrictionContact>(p);
   }
   throw InputError(e.where("type"), "unknown element type '" + type +
                                         "' (cubic, unilateral, quadratic_damper, jenkins, friction2d, friction3d)");
+}
+
+// The element's law, a law's own refusal ("UnilateralSpring: stiffness must be ...") put
+// under the element's key in the scene (it named neither; issue 49 probe).
+std::shared_ptr<const hbm::NonlinearElement> readElementLaw(SceneSection& e) {
+  try {
+    return elementLaw(e);
+  } catch (const InputError& err) {
+    if (err.where().rfind(e.location(), 0) == 0) throw;  // a key of the element, named already
+    throw InputError(e.location(), err.what());
+  }
 }
 
 std::vector<PlacedElement> readNonlinearElements(SceneSection& scene, const MatrixSystemInput& in,

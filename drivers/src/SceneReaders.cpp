@@ -39,6 +39,15 @@ std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
     list.clear();
     for (int h = 0; h <= H; ++h) list.push_back(h);
   }
+  // The harmonic set's own refusals under the key: they named its class (issue 49 probe).
+  if (list.empty()) throw InputError(section.where("harmonics"), "is empty: give a list of harmonics or H (0..H)");
+  std::vector<int> sorted = list;
+  std::sort(sorted.begin(), sorted.end());
+  if (sorted.front() < 0)
+    throw InputError(section.where("harmonics"), "harmonic " + std::to_string(sorted.front()) + " is negative");
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i] == sorted[i - 1])
+      throw InputError(section.where("harmonics"), "harmonic " + std::to_string(sorted[i]) + " is listed twice");
   return list;
 }
 

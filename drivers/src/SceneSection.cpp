@@ -78,6 +78,8 @@ void checkSceneLimits(const std::string& yaml, const std::string& source) {
 // dropped; a block list whose dashes stand at its key's own indentation (valid YAML, a
 // common style) is indented under its key; anchors and aliases (&name, *name) are refused
 // naming the line. `[]` becomes kEmptyList.
+constexpr std::size_t kLongestPlainLine = 2000;
+
 std::string plainSceneText(const std::string& yaml, const std::string& source) {
   static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\]([ \t]*(#.*)?)$)");
   static const std::regex valuelessKey(R"(^[^#\s-][^:#]*:[ \t]*(#.*)?$)");
@@ -94,6 +96,14 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
   std::vector<std::pair<int, std::map<std::string, int>>> open;
   while (std::getline(in, line)) {
     ++number;
+    // std::regex matches recursively, a frame per character: a 30 000-character key
+    // overflowed the stack (SIGSEGV; issue 49 probe). A line that long is data (a matrix's
+    // values): passed to the YAML reader as it is.
+    if (line.size() > kLongestPlainLine) {
+      anything = true;
+      text << line << "\n";
+      continue;
+    }
     const auto first = line.find_first_not_of(' ');
     const bool blank = first == std::string::npos || line[first] == '#';
     const int indent = blank ? -1 : int(first);
@@ -103,6 +113,11 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
       if (content.rfind("- ", 0) == 0 || content == "-")
         throw InputError(source + ": line " + std::to_string(number),
                          "the scene is a list; it must be a mapping: `cyclone:` and its sections under it");
+      // `cyclone: 5` or `cyclone: [1, 2]`: the reader said only its source file's line.
+      static const std::regex scalarTop(R"(^cyclone[ \t]*:[ \t]*[^ \t#{].*$)");
+      if (std::regex_match(content, scalarTop))
+        throw InputError(source + ": line " + std::to_string(number),
+                         "`cyclone:` must hold the scene's sections, indented under it (a mapping), not a value");
     }
     if (!blank) {
       std::smatch key;
@@ -204,6 +219,10 @@ int SceneSection::getInt(const std::string& key, int fallback) {
   markUsed(key);
   if (!has(key)) return fallback;
   if (list_.isType<int>(key)) return list_.get<int>(key);
+  // A whole number too large for an int is read as another type: said as such, not as
+  // "expected an integer" for 2147483648 (issue 49 probe).
+  if (list_.isType<long long>(key) || list_.isType<double>(key))
+    throw InputError(where(key), "expected an integer from -2147483648 to 2147483647");
   throw InputError(where(key), "expected an integer");
 }
 

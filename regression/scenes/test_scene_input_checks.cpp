@@ -385,6 +385,9 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       {"    engine_order: 3\n", "    engine_order: 3\n    frequency_range_hz: [1400.0, 1700.0]\n",
        "cyclone/disc_response/peak_stress/at_hz", "2000.000000 Hz lies outside"},
       {"speed_rpm: 10000.0", "speed_rpm: 1.0e9", "cyclone/loads/speed_rpm", "1e+09 rpm: rho (Omega r)^2"},
+      {"    modes: 20\n", "    modes: 20\n    omega0: -1.0\n", "cyclone/reduced_model/omega0", "must be >= 0"},
+      {"    modes: 20\n", "    modes: 2147483648\n", "cyclone/reduced_model/modes",
+       "expected an integer from -2147483648 to 2147483647"},
       // A tolerance inside (0, 1) but far from a converged curve: 0.99 moved the peak by
       // 23 % and the harmonics took the blame (issue 49 probe); 1e-16 under the rounding.
       {"    engine_order: 3\n", "    engine_order: 3\n    continuation: {tolerance: 0.99}\n",
@@ -456,7 +459,11 @@ TEST(Scenes, AZeroForceAndTooFewSamplesAreRefused) {
        {std::tuple<std::string, std::string, std::string>{"cos: 0.18", "cos: 0.0", "excitation: is zero"},
         {"samples: 64", "samples: 3", "'cyclone/samples': 3: must lie in 15.."},
         {"direction: \\[1.0\\]", "direction: [0.0]", "coordinate 0 of the element is zero on every DOF"},
-        {"harmonic: 1", "harmonic: 0", "has forces at harmonic 0 only"}}) {
+        {"harmonic: 1", "harmonic: 0", "has forces at harmonic 0 only"},
+        // The harmonic set's and the element laws' own refusals named their classes only.
+        {"  harmonics: \\[7\\]", "  harmonics: [1, 1, 2]", "'cyclone/harmonics': harmonic 1 is listed twice"},
+        {"      type: cubic\n      direction: \\[1.0\\]\n      k3: 0.1",
+         "      type: unilateral\n      direction: [1.0]\n      k: -100.0", "'cyclone/nonlinear_elements/hardening': "}}) {
     const std::string msg = failure(duffingSceneWith(pattern, replacement), dir);
     EXPECT_NE(msg.find(what), std::string::npos) << msg;
   }
@@ -554,6 +561,16 @@ TEST(Scenes, YamlTeuchosDoesNotTakeIsReadOrRefusedPlainly) {
   }
   msg = failure("- cyclone:\n    analysis: static\n", dir);
   EXPECT_NE(msg.find("the scene is a list; it must be a mapping"), std::string::npos) << msg;
+  // `cyclone:` holding a value: the reader's own source line and "Throw number" before.
+  for (const char* top : {"cyclone: 5\n", "cyclone: [1, 2]\n"}) {
+    msg = failure(top, dir);
+    EXPECT_NE(msg.find("must hold the scene's sections"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("Teuchos"), std::string::npos) << msg;
+  }
+  // A 30 000-character key: the key matchers' recursion overflowed the stack (SIGSEGV,
+  // which would end this test program); refused as an unknown key.
+  msg = failure(duffingSceneWith("  samples: 64", "  samples: 64\n  " + std::string(30000, 'x') + ": 1"), dir);
+  EXPECT_NE(msg.find("unknown key"), std::string::npos) << msg.substr(0, 300);
   // The same key in two list items, or in sibling sections, is not twice.
   {
     scenes::SceneOverrides o;
