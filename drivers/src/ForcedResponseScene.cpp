@@ -394,6 +394,16 @@ void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
     throw InputError(cs.location(), "the frequency range must be positive");
+  // The residual is relative to the forces at scale 1, so a point at scale s is solved to
+  // tolerance / s of its own forces: at 1e-10 the solution 0 passed (issue 49 probe).
+  if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale)
+    for (const auto& [key, s] : {std::pair<const char*, double>{"from", opt.from}, {"to", opt.to}})
+      if (s != 0 && std::abs(s) < 1e4 * opt.tolerance)
+        throw InputError(cs.where(key), "a force scale of " + numberText(s) +
+                                            " is solved to the tolerance over it of its own forces (" +
+                                            numberText(opt.tolerance / std::abs(s)) +
+                                            "; the residual is relative to the forces at scale 1): start at " +
+                                            numberText(1e4 * opt.tolerance) + " or above, or at 0");
 }
 
 }  // namespace

@@ -120,6 +120,68 @@ TEST(Scenes, ADiscSceneTakesTheMeshsOwnSetNames) {
   EXPECT_LT(largest, 1e-9);
 }
 
+// A reduced model with too few modes for the curve's range (one mode: the stuck
+// resonance of the default disc at 3079 Hz instead of 1577 Hz, its peak reported there,
+// exit 0, its model check passed over the one mode's band) is refused naming the key,
+// with the range estimated (here no stuck resonance below the one mode's frequency) and
+// with a range given above the modes kept. The same disc with the default modes is traced
+// by the other disc tests.
+TEST(Scenes, TooFewModesForTheRangeAreRefused) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_modes");
+  std::string scene = discResponseScene();
+  scene.replace(scene.find("    prestress: linear\n"), 0, "    modes: 1\n");
+  const auto estimated = failure(scene, dir);
+  EXPECT_NE(estimated.find("reduced_model/modes: no resonance of the stuck system between"), std::string::npos)
+      << estimated;
+  EXPECT_NE(estimated.find("keeps natural frequencies only up to"), std::string::npos) << estimated;
+  const auto given = failure(scene + "    frequency_range_hz: [300.0, 2000.0]\n", dir);
+  EXPECT_NE(given.find("reduced_model/modes: the reduced model of nodal diameter 3 keeps natural frequencies up to"),
+            std::string::npos)
+      << given;
+  EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
+}
+
+// No damping but friction's and the contacts held stuck by a large preload: the response
+// at the stuck resonance grows without bound and the curve has no peak. The run said
+// nothing of it (exit 0, no headline line); now its summary starts with the warning and
+// names the loss factor.
+TEST(Scenes, ACurveWithoutAPeakSaysSoFirst) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_no_peak");
+  std::string scene = discResponseScene();
+  scene.replace(scene.find("    prestress: linear\n"), 0, "    loss_factor: 0.0\n");
+  scene.replace(scene.find("preload: 5.0"), 12, "preload: 5000.0");
+  scene += "    stability: false\n    frequency_range_hz: [880.0, 930.0]\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(scene, "no_peak.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_FALSE(summary.computed.empty());
+  const auto& first = summary.computed.front();
+  EXPECT_EQ(first.rfind("warning: disc_frc: no friction-damped peak was found", 0), 0u) << first;
+  EXPECT_NE(first.find("reduced_model/loss_factor: 0"), std::string::npos) << first;
+}
+
+// An excitation of 1e5 N gave a peak of 550 mm on the default disc's 60 mm blade, exit 0,
+// with no word that the linear models hold small displacements only. Here the shroud
+// carries only its constant preload (mu = 0, kn = 0: a linear disc): the peak, about
+// 7 times the sector's size, is said second, after the headline.
+TEST(Scenes, AMotionBeyondSmallDisplacementsIsSaid) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_large_motion");
+  std::string scene = discResponseScene();
+  scene.replace(scene.find("amplitude: 20.0"), 15, "amplitude: 1.0e5");
+  scene.replace(scene.find("      preload: 5.0\n"), 0, "      kn: 0.0\n      mu: 0.0\n");
+  scene += "    stability: false\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(scene, "large.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_GE(summary.computed.size(), 2u);
+  EXPECT_EQ(summary.computed[0].rfind("friction-damped peak", 0), 0u) << summary.computed[0];
+  EXPECT_EQ(summary.computed[1].rfind("warning: disc_frc: the peak's motion, ", 0), 0u) << summary.computed[1];
+  EXPECT_NE(summary.computed[1].find("beyond the small displacements"), std::string::npos) << summary.computed[1];
+}
+
 // (Also: bad peak studies are named before any work.)
 TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   log::setQuiet(true);

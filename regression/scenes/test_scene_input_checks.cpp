@@ -462,6 +462,11 @@ TEST(Scenes, AZeroForceAndTooFewSamplesAreRefused) {
         {"harmonic: 1", "harmonic: 0", "has forces at harmonic 0 only"},
         // The harmonic set's and the element laws' own refusals named their classes only.
         {"  harmonics: \\[7\\]", "  harmonics: [1, 1, 2]", "'cyclone/harmonics': harmonic 1 is listed twice"},
+        // A force scale from 1e-10: its first point the solution 0 (the residual relative to
+        // the forces at scale 1), exit 0.
+        {"    parameter: omega\n    from: 0.5\n    to: 2.0",
+         "    parameter: force_scale\n    omega: 1.2\n    from: 1.0e-10\n    to: 1.0e10",
+         "'cyclone/continuation/from': a force scale of 1e-10 is solved to the tolerance over it"},
         {"      type: cubic\n      direction: \\[1.0\\]\n      k3: 0.1",
          "      type: unilateral\n      direction: [1.0]\n      k: -100.0", "'cyclone/nonlinear_elements/hardening': "}}) {
     const std::string msg = failure(duffingSceneWith(pattern, replacement), dir);

@@ -8,6 +8,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/hbm/CondensedSystem.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
@@ -372,6 +373,12 @@ ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReduce
       at = i;
       break;
     }
+  if (at < 0 && hz.back() < hi)  // a model without the modes the stuck system resonates in
+    throw InputError("reduced_model/modes", "no resonance of the stuck system between " + numberText(lo) + " and " +
+                                                numberText(hi) + " Hz, and the reduced model of nodal diameter " +
+                                                std::to_string(out.nodalDiameter) +
+                                                " keeps natural frequencies only up to " + numberText(hz.back()) +
+                                                " Hz: keep more modes");
   if (at < 0)
     throw InputError("disc_response", "no resonance of the stuck system between " + std::to_string(lo) + " and " +
                                           std::to_string(hi) + " Hz: give frequency_range_hz");
@@ -387,6 +394,16 @@ ResonanceEstimate estimateResonance(ForcedResponseSetup& setup, const DiscReduce
   out.stuckHz = 0.5 * (a + b);
   out.stuckAmplitude = amplitude(out.stuckHz);
   return out;
+}
+
+ResonanceEstimate estimateDiscResonance(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                        const DiscResponseSpec& spec, int family) {
+  auto first = spec;
+  first.harmonics = {1};
+  // Closed and stuck under any positive load: the same tangent at rest.
+  if (!(first.contact.preload > 0)) first.contact.preload = 1.0;
+  auto setup = makeDiscForcedResponse(mesh, models, first);
+  return estimateResonance(setup, models, family);
 }
 
 }  // namespace cyclone::disc

@@ -86,7 +86,17 @@ struct DiscForcedResponse {
   response::ForcedResponseResult curve;
   DiscHeadline headline;
   std::vector<std::string> warnings;  ///< e.g. the largest response at the end of the sweep
+  double sectorSize = 0;  ///< the mesh's bounding box's diagonal (mm)
+  /// The headline's peak beyond 1 % of the sector's size: the reduced models are linear
+  /// elasticity about the prestressed state, small displacements (an excitation of 1e5 N
+  /// gave a peak of 550 mm on a 60 mm blade).
+  bool beyondSmallDisplacements() const { return headline.found() && headline.peak.value > 0.01 * sectorSize; }
 };
+
+/// InputError naming reduced_model/modes where the engine order's nodal diameter's model
+/// keeps no natural frequency at or above `toHz` (the curve's range's top): its resonances
+/// above the modes kept would be missing from the response.
+void checkModesCoverRange(const DiscReducedModels& models, const DiscResponseSpec& spec, double toHz);
 
 /// The frequency curve of the disc `spec` describes over `models` (InputError for an
 /// engine order its sectors cannot carry, a family out of range, or no resonance of the

@@ -121,5 +121,10 @@ struct ResonanceEstimate {
   double stuckAmplitude = 0;  ///< the output DOF's at stuckHz, the contacts stuck (mm)
 };
 ResonanceEstimate estimateResonance(response::ForcedResponseSetup& setup, const DiscReducedModels& models, int family = 1);
+/// estimateResonance for the disc `spec` describes (harmonic 1 alone). Without a preload
+/// the contacts linearised at rest carry nothing, so its stuck resonance would be the free
+/// one: they are closed for it (any preload's linearisation at rest, the same tangent).
+ResonanceEstimate estimateDiscResonance(const mesh::Mesh& mesh, const DiscReducedModels& models,
+                                        const DiscResponseSpec& spec, int family = 1);
 
 }  // namespace cyclone::disc
