@@ -428,6 +428,17 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                                  "resolve harmonic H = " + std::to_string(harmonics.maxHarmonic()) +
                                                  "; every residual costs in proportion; the default here is " +
                                                  std::to_string(recommended) + ")");
+  // Before the system: its transform alone held 4.8 GB for harmonics [5000] on one DOF
+  // before the same cost check refused it (issue 49 probe).
+  {
+    std::vector<int> dimensions;
+    for (const auto& p : placed) dimensions.push_back(p.element->dimension());
+    std::ostringstream what;
+    what << harmonics.size() << " harmonics (up to " << harmonics.maxHarmonic() << ") on " << in.n << " DOFs make "
+         << in.n * harmonics.numCoefficients() << " unknowns";
+    response::checkElementJacobianCost(samples, harmonics.numCoefficients(), dimensions, what.str(),
+                                       scene.where("harmonics"));
+  }
   setup.dofNames = in.dofNames;
   for (int d = int(setup.dofNames.size()); d < in.n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(in.M, in.C, in.K, harmonics, samples);

@@ -7,6 +7,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/continuation/PeakFollowing.hpp"
 #include "cyclone/hbm/BifurcationFlags.hpp"
@@ -38,6 +39,29 @@ void logProblem(const ForcedResponseSetup& setup) {
     for (int h : harmonics.harmonics()) msg << " " << h << "->" << hb.nodalDiameter(h);
   }
   log::info(msg.str());
+}
+
+// The inertia forces against the stiffness and damping forces at the curve's highest
+// frequency: max|M| w^2 / max(max|K|, w max|C|), on a matrix system (inf otherwise).
+// Far below rounding, Hill's method inverts a mass that carries nothing, and its
+// exponents are rounding magnified (M = 1e-300 on the Duffing DOF: Re mu = +2e284, 4
+// points flagged unstable, exit 0; issue 49 probe).
+constexpr double kNegligibleInertia = 1e-12;
+double inertiaRatio(const ForcedResponseSetup& setup) {
+  const auto& hb = *setup.system;
+  if (hb.isReceptance()) return HUGE_VAL;
+  const auto& o = setup.continuation;
+  const double w = setup.parameter == ForcedResponseSetup::Parameter::Omega
+                       ? setup.omegaUnit * std::max(std::abs(o.from), std::abs(o.to))
+                       : setup.omega;
+  const double inertia = hb.M().cwiseAbs().maxCoeff() * w * w;
+  const double other = std::max(hb.K().cwiseAbs().maxCoeff(), w * hb.C().cwiseAbs().maxCoeff());
+  return other > 0 ? inertia / other : HUGE_VAL;
+}
+std::string negligibleInertiaText(double ratio) {
+  return "the mass matrix's inertia forces are " + numberText(ratio, 3) +
+         " of the stiffness and damping forces at the curve's highest frequency: Hill's method inverts the mass "
+         "matrix, and its exponents would be rounding";
 }
 
 // Whether Hill's method runs on this curve, and why (not). It needs velocity-free
@@ -85,6 +109,11 @@ bool stabilityApplies(const ForcedResponseSetup& setup, std::string& note) {
   }
   if (!hbm::hillMassInvertible(hb)) {  // asked for, refused before the trace (solveForcedResponse)
     note = "stability not computed: the mass matrix is singular (Hill's method needs it invertible)";
+    log::warn(note);
+    return false;
+  }
+  if (const double r = inertiaRatio(setup); r < kNegligibleInertia) {  // likewise
+    note = "stability not computed: " + negligibleInertiaText(r);
     log::warn(note);
     return false;
   }
@@ -382,6 +411,8 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
     throw InputError("stability", "Hill's method needs an invertible mass matrix, and this system's is singular "
                                   "(its reciprocal condition number is below 1e-14): leave stability to auto or "
                                   "false, or give every DOF a mass");
+  if (setup.stability == Stability::Always && inertiaRatio(setup) < kNegligibleInertia)
+    throw InputError("stability", negligibleInertiaText(inertiaRatio(setup)) + ": leave stability to auto or false");
   const StartingPoint start = findStartingPoint(setup);
   checkResponseScale(setup, start.x);
   if (start.x.size() > 0) {
