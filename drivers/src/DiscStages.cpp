@@ -159,36 +159,6 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   return solved;
 }
 
-// Contacts, loops, the period and the sector's stresses at one point: the converged
-// peak (or peak_stress/at_hz for the stresses).
-void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,
-                      disc::DiscForcedResponse& solved, const std::vector<int>& hysteresisContacts,
-                      const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
-  auto& setup = solved.setup;
-  const PeakPoint point = disc::referencePeakPoint(setup, solved.curve);
-  if (comm->getRank() == 0) {
-    // The contacts' table; the loops of the contacts asked for (by default the one that
-    // dissipates most) and the output DOFs over the period.
-    const auto states = disc::discPointStates(setup, point, hysteresisContacts);
-    post::writeContactsCsv(outDir + "/disc_frc_contacts.csv", states);
-    post::writeHysteresisFiles(outDir + "/disc_hysteresis.csv", outDir + "/disc_hysteresis.svg",
-                               "Contact hysteresis at " + point.what, states);
-    std::vector<std::string> names;
-    for (int dof : setup.outputDofs) names.push_back(setup.dofNames[std::size_t(dof)]);
-    post::writePeriodResponseFiles(outDir + "/disc_time_response.csv", outDir + "/disc_time_response.svg",
-                                   "Response over one period at " + point.what, names, states);
-  }
-  for (const char* f : {"disc_frc_contacts.csv", "disc_hysteresis.csv", "disc_hysteresis.svg",
-                        "disc_time_response.csv", "disc_time_response.svg"})
-    summary.written.push_back(outDir + "/" + f);
-  const auto& ps = plan.peakStress;
-  if (ps.atHz > 0)
-    writePeakStress(ps, mesh, models, plan.modelSpec, disc::referencePointAt(setup, solved.curve, ps.atHz),
-                    setup.excitationScale, outDir, comm, summary);
-  else
-    writePeakStress(ps, mesh, models, plan.modelSpec, point, setup.excitationScale, outDir, comm, summary);
-}
-
 // One parameter study of disc_response/studies: a curve per value (each written as it
 // comes, a reference value's files copied from disc_frc's), study_<name>.svg with every
 // curve and study_<name>.csv with their peaks. Returns the curves traced.

@@ -69,4 +69,17 @@ response::ForcedResponseResult traceAndWriteForcedResponse(response::ForcedRespo
   return result;
 }
 
+void forcedResponseStage(SceneSection& scene, const std::string& outDir,
+                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
+                         SceneSummary& summary) {
+  auto setup = readForcedResponseSetup(scene);
+  setup.continuation.checkpoints = checkpoints;
+  if (setup.fallback) setup.fallback->checkpoints = checkpoints;
+  for (const auto& note : setup.notes) {
+    log::info(note);
+    summary.computed.push_back(note);
+  }
+  traceAndWriteForcedResponse(setup, outDir, "frc", comm, summary);
+}
+
 }  // namespace cyclone::scenes

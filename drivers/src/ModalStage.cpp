@@ -226,7 +226,8 @@ ModalPlan readModalPlan(SceneSection& scene, const mesh::Mesh& mesh, int builtIn
   auto m = scene.section("modal");
   plan.sweep = readModalSweep(m, mesh, sectors, material, fixedSets, outDir, plan.writeMac);
   plan.sweep.axis = axis;
-  checkCentrifugalStrain(material, plan.sweep.speedsRpm.back(), mesh, axis, m.where("speeds_rpm"));
+  checkCentrifugalStrain(material, plan.sweep.speedsRpm.back(), mesh, axis, m.where("speeds_rpm"),
+                         scene.where("mesh"));
   plan.engineOrders = readEngineOrders(scene.section("diagrams"), sectors);
   if (fixedSets.empty())
     log::warn("modal analysis without fixed node sets: rigid-body modes are expected (zero frequencies)");

@@ -83,6 +83,15 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
                                  "): wait for it, or give this run another output_directory");
   }
   const std::string previous = std::filesystem::exists(manifest) ? manifestValue(manifest, "status") : "";
+  {
+    std::ifstream in(manifest);
+    bool listed = false;
+    for (std::string line; std::getline(in, line);) {
+      if (line == "files:") listed = true;
+      else if (listed && line.rfind("  - ", 0) == 0) earlierFiles_.push_back(line.substr(4));
+      else listed = false;
+    }
+  }
   if (previous == "running" || previous == "interrupted")
     previousUnfinished = "the previous run into " + outDir + " (scene " + manifestValue(manifest, "scene") +
                          ", started " + manifestValue(manifest, "started") +
@@ -143,6 +152,15 @@ RunManifest::~RunManifest() {
     }
   }
   if (lock_ >= 0) ::close(lock_);  // releases the lock
+}
+
+std::vector<std::string> RunManifest::earlierFilesLeft(const std::vector<std::string>& written) const {
+  std::vector<std::string> mine, left;
+  for (const auto& f : written) mine.push_back(std::filesystem::path(f).lexically_relative(dir_).generic_string());
+  for (const auto& f : earlierFiles_)
+    if (std::find(mine.begin(), mine.end(), f) == mine.end() && std::filesystem::exists(dir_ + "/" + f))
+      left.push_back(f);
+  return left;
 }
 
 void RunManifest::complete(const std::vector<std::string>& written) {

@@ -22,12 +22,17 @@ public:
   RunManifest(const RunManifest&) = delete;
   RunManifest& operator=(const RunManifest&) = delete;
 
+  /// The files the directory's earlier manifest listed that this run did not write and
+  /// that are still there, relative to the directory: another scene's products beside this
+  /// run's (a Duffing run into a disc run's directory left disc_frc.* without a word).
+  std::vector<std::string> earlierFilesLeft(const std::vector<std::string>& written) const;
   void complete(const std::vector<std::string>& written);
   void fail(const std::string& reason);
 
 private:
   void write(const std::string& status, const std::string& extra);
   std::string dir_, scene_, started_;
+  std::vector<std::string> earlierFiles_;  ///< the earlier manifest's files, relative
   int lock_ = -1;
   bool finished_ = false;
 };

@@ -127,12 +127,26 @@ CyclicFaces readCyclicFaces(SceneSection& cy) {
 }
 
 void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, const mesh::Mesh& mesh,
-                            const mesh::RotationAxis& axis, const std::string& speedKey) {
+                            const mesh::RotationAxis& axis, const std::string& speedKey, const std::string& meshKey) {
   const Eigen::Vector3d d = axis.direction.normalized();
   double radius = 0;
   for (const auto& x : mesh.coords) {
     const Eigen::Vector3d r = Eigen::Vector3d(x[0], x[1], x[2]) - axis.point;
     radius = std::max(radius, (r - r.dot(d) * d).norm());
+  }
+  // A mesh in metres with the mm-N-s-t material (or in mm with SI) reached the prestress
+  // and failed there as "10000 rpm cannot be reached" (issue 49 probe): a bladed disc's
+  // outer radius lies between 1 mm and 20 m in any unit set.
+  const double metres = material.units == fe::UnitSystem::SI ? radius
+                        : material.units == fe::UnitSystem::MillimetreNewtonSecondTonne ? radius / 1000
+                                                                                         : 0.1;
+  if (radius > 0 && !(metres >= 1e-3 && metres <= 20)) {
+    std::ostringstream why;
+    why << "its outermost radius about the axis is " << radius << " in the material's units ("
+        << fe::unitSystemName(material.units) << "): " << metres
+        << " m, no bladed disc's; a mesh in other length units than the material's? (material/units: mm-N-s-t takes "
+           "millimetres, SI metres)";
+    throw InputError(meshKey, why.str());
   }
   const double omega = 2 * M_PI * rpm / 60;
   const double strain = material.rho * omega * omega * radius * radius / material.E;

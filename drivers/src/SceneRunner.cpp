@@ -6,11 +6,8 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <optional>
-#include <Teuchos_YamlParameterListCoreHelpers.hpp>
-
 #include <algorithm>
 #include <set>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -20,16 +17,10 @@
 #include "DemoScene.hpp"
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
-#include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Timer.hpp"
-#include "cyclone/io/ResultCheckpointDirectory.hpp"
 #include "cyclone/io/TraceCheckpointDirectory.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
-#include "cyclone/mesh/AbaqusIO.hpp"
-#include "cyclone/mesh/ExodusIO.hpp"
-#include "cyclone/mesh/MeshReader.hpp"
-#include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "RunManifest.hpp"
@@ -38,169 +29,6 @@
 namespace cyclone::scenes {
 
 const char* demoScene() { return demoSceneYaml(); }
-
-namespace {
-
-mesh::ShroudedSectorParameters readSectorParameters(SceneSection s) {
-  mesh::ShroudedSectorParameters p;
-  p.sectors = s.getInt("sectors", p.sectors);
-  p.boreRadius = s.getDouble("bore_radius", p.boreRadius);
-  p.rimRadius = s.getDouble("rim_radius", p.rimRadius);
-  p.discThickness = s.getDouble("disc_thickness", p.discThickness);
-  p.bladeHeight = s.getDouble("blade_height", p.bladeHeight);
-  p.bladeChord = s.getDouble("blade_chord", p.bladeChord);
-  p.bladeThickness = s.getDouble("blade_thickness", p.bladeThickness);
-  p.bladeStaggerDeg = s.getDouble("blade_stagger_deg", p.bladeStaggerDeg);
-  p.shroudThickness = s.getDouble("shroud_thickness", p.shroudThickness);
-  p.shroudWidth = s.getDouble("shroud_width", p.shroudWidth);
-  p.meshSize = s.getDouble("mesh_size", p.meshSize);
-  p.elementOrder = s.getInt("element_order", p.elementOrder);
-  s.rejectUnknownKeys();
-  p.validate(s.location());
-  return p;
-}
-
-// The mesh stage: built-in generator or a file; optional copies in Exodus and .inp.
-mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std::string& sceneDir,
-                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary,
-                     int& builtInSectors) {
-  builtInSectors = 0;
-  const bool writer = comm.getRank() == 0;
-  const std::string source = s.getString("source", "shrouded_sector");
-  const auto write = s.getStringList("write", {});
-  SceneSection sector = s.section("shrouded_sector");
-  mesh::Mesh mesh;
-  if (source == "shrouded_sector") {
-    auto p = readSectorParameters(sector);
-    if (overrides.meshSize) p.meshSize = *overrides.meshSize;
-    mesh = mesh::generateShroudedSector(p);
-    builtInSectors = p.sectors;
-  } else {
-    if (overrides.meshSize)
-      throw InputError("--mesh-size", "applies to the built-in sector; this scene reads its mesh from '" + source + "'");
-    // The built-in sector's keys do not apply to a mesh read from a file: say so, not
-    // "unknown key (known here: )" (issue 20).
-    if (s.has("shrouded_sector"))
-      throw InputError(s.where("shrouded_sector"), "applies to source: shrouded_sector only; the mesh is read from '" +
-                                                       source + "' (remove the block, or the source key)");
-    const std::filesystem::path path = std::filesystem::path(source).is_absolute()
-                                           ? std::filesystem::path(source)
-                                           : std::filesystem::path(sceneDir) / source;
-    log::info("reading mesh " + path.string());
-    mesh = mesh::readMesh(path.string());
-  }
-  s.rejectUnknownKeys();
-  std::ostringstream line;
-  line << "mesh: " << mesh.numNodes() << " nodes, " << mesh.numElements() << " elements (" << mesh.source << ")";
-  summary.computed.push_back(line.str());
-  for (const auto& format : write) {
-    if (format == "exodus") {
-      const std::string path = outDir + "/mesh.exo";
-      if (writer) mesh::writeExodus(path, mesh);
-      summary.written.push_back(path);
-    } else if (format == "inp") {
-      const std::string path = outDir + "/mesh.inp";
-      if (writer) mesh::writeAbaqusInp(path, mesh);
-      summary.written.push_back(path);
-    } else {
-      throw InputError(s.where("write"), "unknown mesh format '" + format + "' (use exodus, inp)");
-    }
-  }
-  return mesh;
-}
-
-
-
-}  // namespace
-
-namespace {
-
-void forcedResponseStage(SceneSection& scene, const std::string& outDir,
-                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
-                         SceneSummary& summary) {
-  auto setup = readForcedResponseSetup(scene);
-  setup.continuation.checkpoints = checkpoints;
-  if (setup.fallback) setup.fallback->checkpoints = checkpoints;
-  for (const auto& note : setup.notes) {
-    log::info(note);
-    summary.computed.push_back(note);
-  }
-  traceAndWriteForcedResponse(setup, outDir, "frc", comm, summary);
-}
-
-}  // namespace
-
-analysis::StaticProblem readStaticProblem(SceneSection& scene, const mesh::Mesh& mesh) {
-  analysis::StaticProblem problem;
-  problem.material = readMaterial(scene.section("material"));
-  {
-    auto c = scene.section("constraints");
-    problem.fixedNodeSets = c.getStringList("fixed_node_sets", {});
-    c.rejectUnknownKeys();
-    for (const auto& name : problem.fixedNodeSets)
-      if (!mesh.nodeSets.count(name)) mesh.nodeSet(name);  // throws naming the mesh and its sets
-  }
-  readStaticLoads(scene.section("loads"), mesh, problem);
-  checkCentrifugalStrain(problem.material, problem.speedRpm, mesh, problem.axis, scene.where("loads/speed_rpm"));
-  readStaticSolver(scene.section("solver"), problem);
-  if (problem.fixedNodeSets.empty())
-    throw InputError(scene.where("constraints/fixed_node_sets"),
-                     "a static analysis needs fixed node sets (the model would move as a rigid body)");
-  return problem;
-}
-
-void readStaticSolver(SceneSection s, analysis::StaticProblem& problem) {
-  problem.solver.kind = solvers::linearSolverKindFromName(s.getString("type", "direct"), s.where("type"));
-  problem.solver.tolerance = s.getDouble("tolerance", problem.solver.tolerance);
-  problem.solver.maxIterations = s.getInt("max_iterations", problem.solver.maxIterations);
-  s.rejectUnknownKeys();
-}
-
-void readStaticLoads(SceneSection l, const mesh::Mesh& mesh, analysis::StaticProblem& problem) {
-  problem.speedRpm = l.getDouble("speed_rpm", 0.0);
-  if (!(problem.speedRpm >= 0 && std::isfinite(problem.speedRpm)))
-    throw InputError(l.where("speed_rpm"), std::to_string(problem.speedRpm) +
-                                               ": must be >= 0 and finite (the centrifugal load does not depend on "
-                                               "the sense of rotation: give its magnitude)");
-  problem.axis = readRotationAxis(l);
-  const auto b = l.getVector3("body_force", {0, 0, 0});
-  problem.bodyForce = Eigen::Vector3d(b[0], b[1], b[2]);
-  auto forces = l.section("nodal_forces");
-  for (const auto& name : forces.sectionNames()) {
-    auto f = forces.section(name);
-    analysis::NodalForce load;
-    load.nodeSet = f.getString("node_set", "");
-    const auto v = f.getVector3("force", {0, 0, 0});
-    load.forcePerNode = Eigen::Vector3d(v[0], v[1], v[2]);
-    f.rejectUnknownKeys();
-    mesh.nodeSet(load.nodeSet);
-    problem.nodalForces.push_back(load);
-  }
-  forces.rejectUnknownKeys();
-  l.rejectUnknownKeys();
-}
-
-namespace {
-
-void staticStage(const analysis::StaticProblem& problem, const mesh::Mesh& mesh, const std::string& outDir,
-                 linalg::CommPtr comm, SceneSummary& summary) {
-  {
-    std::ostringstream msg;
-    msg << "linear static analysis at " << problem.speedRpm << " rpm";
-    log::info(msg.str());
-  }
-  const auto result = analysis::solveStatic(mesh, problem, comm);
-  const std::string path = outDir + "/static.exo";
-  if (comm->getRank() == 0) analysis::writeStaticResult(path, mesh, result);
-  std::ostringstream line;
-  line << "static: " << result.equations << " equations, max |u| = " << result.maxDisplacement << " at node "
-       << (result.maxDisplacementNode >= 0 ? mesh.nodeIds[result.maxDisplacementNode] : -1)
-       << ", max von Mises = " << result.maxVonMises << ", residual " << result.solve.relativeResidual;
-  summary.computed.push_back(line.str());
-  summary.written.push_back(path);
-}
-
-}  // namespace
 
 namespace {
 void runStages(SceneSection& scene, const std::vector<std::string>& analyses, const SceneOverrides& overrides,
@@ -260,68 +88,6 @@ std::vector<std::string> readAnalyses(SceneSection& scene) {
   return analyses;
 }
 
-// The run's mark in the directory (rank 0), before anything is written: a second run
-// into it is refused on every rank; a previous run that did not finish is said.
-std::unique_ptr<RunManifest> claimOutputDirectory(const std::string& outDir, const std::string& source,
-                                                linalg::CommPtr comm, SceneSummary& summary) {
-  if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
-  std::unique_ptr<RunManifest> manifest;
-  std::string refused, previousUnfinished;
-  if (comm->getRank() == 0) {
-    try {
-      manifest = std::make_unique<RunManifest>(outDir, source, previousUnfinished);
-    } catch (const InputError& e) {
-      refused = e.what();
-    }
-  }
-  int isRefused = refused.empty() ? 0 : 1;
-  Teuchos::broadcast(*comm, 0, &isRefused);
-  if (isRefused) throw InputError(outDir, comm->getRank() == 0 ? refused : "another run is writing into it");
-  if (!previousUnfinished.empty()) {
-    log::warn(previousUnfinished);
-    summary.computed.push_back("warning: " + previousUnfinished);
-  }
-  return manifest;
-}
-
-// Curves save their traces in <out>/checkpoints as they go (rank 0 writes; the others,
-// which trace the same curves, only read). --resume reads them: finished traces are read
-// back, the one the kill interrupted continues; any other run starts without them.
-std::shared_ptr<io::TraceCheckpointDirectory> openCheckpoints(const std::string& checkpointDir,
-                                                              const SceneOverrides& overrides, linalg::CommPtr comm) {
-  if (!(overrides.checkpointSeconds >= 0))
-    throw InputError("--checkpoint-seconds", "must be zero or positive, got " + std::to_string(overrides.checkpointSeconds));
-  if (comm->getRank() == 0) {
-    if (!overrides.resume) {
-      std::filesystem::remove_all(checkpointDir);
-    } else if (!std::filesystem::exists(checkpointDir)) {
-      log::warn("--resume: " + checkpointDir + " holds nothing to continue (the run before completed, or saved "
-                "no curve): everything is computed");
-    } else {
-      log::info("--resume: traces saved in " + checkpointDir + " are read back or continued");
-    }
-  }
-  Teuchos::barrier(*comm);
-  auto checkpoints = std::make_shared<io::TraceCheckpointDirectory>(checkpointDir, comm->getRank() != 0);
-  checkpoints->intervalSeconds = overrides.checkpointSeconds;
-  return checkpoints;
-}
-
-}  // namespace
-
-namespace {
-
-// The manifest marked failed with the run's error; where even that cannot be written (a
-// full disk), said in the log: the error that stopped the run is the one reported.
-void markFailed(RunManifest* manifest, const std::string& reason) {
-  if (!manifest) return;
-  try {
-    manifest->fail(reason);
-  } catch (const std::exception& e) {
-    log::warn(std::string("the run's manifest could not be marked failed: ") + e.what());
-  }
-}
-
 }  // namespace
 
 SceneSummary runSceneText(const std::string& yaml, const std::string& source, const SceneOverrides& overrides,
@@ -369,7 +135,18 @@ SceneSummary runSceneText(const std::string& yaml, const std::string& source, co
     log::warn(warning);
     summary.computed.push_back("warning: " + warning);
   }
-  if (manifest) manifest->complete(summary.written);
+  if (manifest) {
+    if (const auto left = manifest->earlierFilesLeft(summary.written); !left.empty()) {
+      std::string named;
+      for (std::size_t i = 0; i < left.size() && i < 3; ++i) named += (i ? ", " : "") + left[i];
+      const std::string warning = std::to_string(left.size()) + " file" + (left.size() > 1 ? "s" : "") +
+                                  " of an earlier run into " + outDir + " stay beside this run's (" + named +
+                                  (left.size() > 3 ? ", ..." : "") + "): run_manifest.txt lists this run's";
+      log::warn(warning);
+      summary.computed.push_back("warning: " + warning);
+    }
+    manifest->complete(summary.written);
+  }
   if (comm->getRank() == 0) {
     std::error_code ignored;  // a leftover directory costs disk space, not the run
     std::filesystem::remove_all(checkpointDir, ignored);

@@ -28,6 +28,9 @@
 namespace cyclone::mesh {
 class Mesh;
 }
+namespace cyclone::io {
+class TraceCheckpointDirectory;
+}
 
 namespace cyclone::scenes {
 
@@ -38,6 +41,31 @@ using disc::DiscModelSpec;
 using disc::DiscReducedModels;
 using disc::DiscResponseSpec;
 using disc::PeakPoint;
+
+class RunManifest;
+
+/// The mesh stage (MeshStage.cpp): the built-in sector (`builtInSectors` its sector
+/// count, else 0) or a mesh file, its copies in `write`'s formats; the summary's line.
+mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std::string& sceneDir,
+                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary, int& builtInSectors);
+/// The static analysis and static.exo (StaticStage.cpp).
+void staticStage(const analysis::StaticProblem& problem, const mesh::Mesh& mesh, const std::string& outDir,
+                 linalg::CommPtr comm, SceneSummary& summary);
+/// A matrix scene's forced response, frc.* (ForcedResponseOutput.cpp).
+void forcedResponseStage(SceneSection& scene, const std::string& outDir,
+                         const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
+                         SceneSummary& summary);
+
+/// The run's mark in the directory (rank 0; RunDirectory.cpp), before anything is
+/// written: a second run into it is refused on every rank; a previous run that did not
+/// finish is said.
+std::unique_ptr<RunManifest> claimOutputDirectory(const std::string& outDir, const std::string& source,
+                                                  linalg::CommPtr comm, SceneSummary& summary);
+/// <out>/checkpoints: emptied, or read back with --resume.
+std::shared_ptr<io::TraceCheckpointDirectory> openCheckpoints(const std::string& checkpointDir,
+                                                              const SceneOverrides& overrides, linalg::CommPtr comm);
+/// The manifest marked failed with the run's error (said in the log where it cannot be).
+void markFailed(RunManifest* manifest, const std::string& reason);
 
 /// The most time samples per period a scene may ask for: every residual's cost grows in
 /// proportion (a friction contact's march too), and 2e6 ran for minutes without a point
@@ -81,8 +109,10 @@ mesh::RotationAxis readRotationAxis(SceneSection& section);
 /// InputError under `speedKey` where the centrifugal stress scale rho (Omega r)^2 at the
 /// mesh's outermost node passes 5 % of E: a disc torn apart long before (titanium bursts
 /// near 1 %), so a wrong unit or a typo (rho 1e300, 1e9 rpm), not a speed to solve at.
+/// InputError under `meshKey` where that radius is no bladed disc's in the material's
+/// units (1 mm..20 m): a mesh in metres with the mm-N-s-t material, or in mm with SI.
 void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, const mesh::Mesh& mesh,
-                            const mesh::RotationAxis& axis, const std::string& speedKey);
+                            const mesh::RotationAxis& axis, const std::string& speedKey, const std::string& meshKey);
 
 /// `prestress` of a section: linear, nonlinear or none (`fallback` when absent);
 /// InputError naming the key otherwise.
@@ -228,6 +258,12 @@ std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh,
 /// disc_response/studies' parameters (one frequency curve per listed value).
 inline constexpr const char* kStudyNames[] = {"preload", "mu", "contact_stiffness", "force",
                                               "loss_factor", "harmonics", "modes", "clearance"};
+
+/// Contacts, loops, the period and the sector's stresses at one point: the converged peak
+/// (or peak_stress/at_hz for the stresses); DiscPeakStress.cpp.
+void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,
+                      disc::DiscForcedResponse& solved, const std::vector<int>& hysteresisContacts,
+                      const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
 
 /// Everything the disc chain's stages take from the scene, read and checked before any
 /// work (the keys of reduced_model, disc_response and its studies; node sets, ranges).

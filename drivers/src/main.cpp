@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "cyclone/core/Error.hpp"
@@ -111,6 +112,11 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const cyclone::InputError& e) {
     std::fprintf(stderr, "cyclone: input error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // std::bad_alloc's own text is "std::bad_alloc".
+    std::fprintf(stderr, "cyclone: error: out of memory: the run needed more than this machine, or the process's "
+                         "limit (ulimit -v), allows; use a coarser mesh, fewer modes or fewer harmonics\n");
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cyclone: error: %s\n", e.what());

@@ -336,3 +336,55 @@ TEST(Scenes, AKilledRunsTemporaryFilesAreRemoved) {
   for (const auto& line : summary.computed) said = said || line.find("removed 2 temporary files") != std::string::npos;
   EXPECT_TRUE(said) << "the summary does not say what was removed";
 }
+
+// A run into a directory another scene's run completed in: the other run's products
+// stayed beside this run's without a word (issue 49 probe: a Duffing run into the demo's
+// directory, its disc_frc.* and reduced models left there, exit 0). Said now, naming them.
+TEST(Scenes, AnEarlierRunsFilesLeftInTheDirectoryAreSaid) {
+  log::setQuiet(true);
+  const auto dir = freshDir("earlier_files");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto first = scenes::runSceneText(smallScene(), "static.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_TRUE(fs::exists(dir / "static.exo"));
+  const auto second =
+      scenes::runSceneText(duffingSceneWith("dofs: 1", "dofs: 1"), "duffing.yaml", o, Tpetra::getDefaultComm());
+  bool said = false;
+  for (const auto& line : second.computed)
+    said = said || (line.find("of an earlier run into") != std::string::npos &&
+                    line.find("static.exo") != std::string::npos);
+  EXPECT_TRUE(said) << "the static run's files are not said";
+  // The same scene again writes the same files: nothing to say.
+  const auto third =
+      scenes::runSceneText(duffingSceneWith("dofs: 1", "dofs: 1"), "duffing.yaml", o, Tpetra::getDefaultComm());
+  for (const auto& line : third.computed) EXPECT_EQ(line.find("of an earlier run into"), std::string::npos) << line;
+}
+
+// Out of memory (a process limited to 700 MB of address space, the demo's disc at mesh
+// size 3): CHOLMOD's partial factor read as "the matrix is not positive definite: a free
+// body ..." and, with 1 GB, an allocation failure inside the prestress as "10000 rpm cannot
+// be reached" (issue 49 probe). Said as memory now, exit 1, the manifest failed.
+TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
+  const auto dir = freshDir("out_of_memory");
+  const fs::path scene = dir.string() + ".yaml", log = dir.string() + ".log";
+  {
+    std::string text = scenes::demoScene();
+    text.replace(text.find("mesh_size: 6.0"), 14, "mesh_size: 3.0");
+    std::ofstream(scene) << text;
+  }
+  const std::string command = "bash -c 'ulimit -v 700000; OPENBLAS_NUM_THREADS=1 timeout 120 " +
+                              std::string(CYCLONE_EXE) + " run " + scene.string() + " --output " + dir.string() +
+                              " > " + log.string() + " 2>&1'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto error = text.substr(std::min(text.size(), text.rfind("cyclone: ")));
+  EXPECT_NE(error.find("memory"), std::string::npos) << error;
+  EXPECT_EQ(error.find("not positive definite"), std::string::npos) << error;
+  EXPECT_EQ(error.find("cannot be reached"), std::string::npos) << error;
+  std::ifstream manifestFile(dir / "run_manifest.txt");
+  const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(manifest.rfind("status: failed", 0), 0u) << manifest;
+}

@@ -370,6 +370,9 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "cyclone/disc_response/studies/force", "the value 0: excitation/amplitude: must be finite and not zero"},
       {"      amplitude: 20.0\n", "      amplitude: 0.0\n", "cyclone/disc_response/excitation/amplitude",
        "must be finite and not zero"},
+      // 1e300 was refused after the reduced models, as a response too small
+      {"      amplitude: 20.0\n", "      amplitude: 1.0e300\n", "cyclone/disc_response/excitation/amplitude",
+       "1e+300 N is beyond 1e+100"},
       {"      mu: 0.4\n", "      mu: 0.4\n      normal: [1.0, 0.0, 0.0]\n      tangent: [1.0, 0.0, 0.0]\n",
        "cyclone/disc_response/contact/normal, contact/tangent", "contact frame not orthonormal"},
       {"    modes: 20\n", "    modes: 20\n    check_frequencies: -1\n", "cyclone/reduced_model/check_frequencies",
@@ -397,6 +400,10 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       {"    rho: 4.507e-9\n", "    rho: 1.0e300\n", "cyclone/material", "material 'titanium': density rho"},
       {"    E: 1.16e5\n", "    E: 1.16e11\n", "cyclone/material", "material 'titanium': Young's modulus E"},
       {"    nu: 0.34\n", "    nu: 0.34\n    units: imperial\n", "cyclone/material/units", "'imperial'"},
+      // the built-in sector's millimetres with the SI material (a mesh in metres with the
+      // mm-N-s-t one ran the prestress and failed as "10000 rpm cannot be reached")
+      {"    E: 1.16e5\n    nu: 0.34\n    rho: 4.507e-9\n", "    units: SI\n    E: 1.16e11\n    nu: 0.34\n    rho: 4507.0\n",
+       "cyclone/mesh", "its outermost radius about the axis is 164"},
       {"speed_rpm: 10000.0", "speed_rpm: -100.0", "cyclone/loads/speed_rpm", "-100.000000: must be >= 0"},
       {"mesh_size: 12.0", "mesh_size: 1.0e300", "cyclone/mesh/shrouded_sector",
        "parameter 'mesh_size' must be at most"},
@@ -460,6 +467,8 @@ TEST(Scenes, AZeroForceAndTooFewSamplesAreRefused) {
         {"samples: 64", "samples: 3", "'cyclone/samples': 3: must lie in 15.."},
         {"direction: \\[1.0\\]", "direction: [0.0]", "coordinate 0 of the element is zero on every DOF"},
         {"harmonic: 1", "harmonic: 0", "has forces at harmonic 0 only"},
+        // 1e100 ended in "no point of the curve was computed" and the solver's attempts
+        {"cos: 0.18", "cos: 1.0e100", "excitation: its largest coefficient is 1e+100, beyond 1e+100"},
         // The harmonic set's and the element laws' own refusals named their classes only.
         {"  harmonics: \\[7\\]", "  harmonics: [1, 1, 2]", "'cyclone/harmonics': harmonic 1 is listed twice"},
         // A force scale from 1e-10: its first point the solution 0 (the residual relative to
@@ -696,4 +705,20 @@ TEST(Scenes, MeshSizeOnASceneWithoutTheBuiltInSectorIsRefused) {
     EXPECT_NE(std::string(e.what()).find("--mesh-size"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "frc.csv"));
+}
+
+// LOCA's point budget was said as "step size fell below the minimum or too many steps"
+// (max_points: 2 on the Duffing curve, issue 49 probe): named as the budget now.
+TEST(Scenes, ALocaPointBudgetIsNamed) {
+  log::setQuiet(true);
+  const auto dir = freshDir("loca_budget");
+  const std::string scene = duffingSceneWith("    to: 2.0\n", "    to: 2.0\n    engine: loca\n    max_points: 2\n");
+  ASSERT_NE(scene.find("max_points: 2"), std::string::npos);
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(scene, "budget.yaml", o, Tpetra::getDefaultComm());
+  bool said = false;
+  for (const auto& line : summary.computed)
+    said = said || line.find("the point budget (max_points 2) was reached") != std::string::npos;
+  EXPECT_TRUE(said) << (summary.computed.empty() ? "" : summary.computed.front());
 }

@@ -127,6 +127,14 @@ TEST(ReducedModelCache, AnUnreadableCachedModelIsRebuilt) {
   EXPECT_FALSE(edited.check.reused);
   EXPECT_NEAR(edited.check.maxError(), again.check.maxError(), 1e-6 * again.check.maxError());
   EXPECT_TRUE(c.build(nds).check.reused);  // written again with its digest: reused
+  // A deleted check: the model was reused and the check asked for silently missing from
+  // the summary (issue 49 probe). Checked again, the same check.
+  fs::remove(checkPath);
+  const auto unchecked = c.build(nds);
+  EXPECT_EQ(unchecked.built, 1);
+  EXPECT_FALSE(unchecked.check.reused);
+  EXPECT_NEAR(unchecked.check.maxError(), again.check.maxError(), 1e-6 * again.check.maxError());
+  EXPECT_TRUE(fs::exists(checkPath));
 }
 
 // A cached file whose content is not what its name and digest promise is computed again,

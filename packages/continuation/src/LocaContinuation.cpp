@@ -257,16 +257,18 @@ void runLoca(const ContinuationProblem& problem, const Eigen::VectorXd& x0, doub
     // count): a corner no arclength step passes (bridgeKink).
     stalled = !branch.finished && !threw && !turnedBack && int(branch.points.size() + run.points.size()) < o.maxSteps;
     branch.failedSteps += stepperObject.getNumFailedSteps();
-    branch.stopReason = run.stopReason.empty()
-                            ? (branch.finished ? "end of the parameter range reached"
-                                               : "step size fell below the minimum or too many steps (the branch so far "
-                                                 "is kept)")
-                            : run.stopReason;
     // A turn back onto the branch or a step below the minimum is a corner no step passes.
-    branch.end = branch.finished                                                           ? BranchEnd::RangeEnd
-                 : threw                                                                   ? BranchEnd::EngineStopped
-                 : int(branch.points.size() + run.points.size()) >= o.maxSteps && !turnedBack ? BranchEnd::PointBudget
-                                                                                           : BranchEnd::Wall;
+    const bool budget = int(branch.points.size() + run.points.size()) >= o.maxSteps && !turnedBack;
+    branch.end = branch.finished ? BranchEnd::RangeEnd
+                 : threw         ? BranchEnd::EngineStopped
+                 : budget        ? BranchEnd::PointBudget
+                                 : BranchEnd::Wall;
+    // (The budget was said as "the step fell below the minimum or too many steps": issue 49.)
+    branch.stopReason = !run.stopReason.empty() ? run.stopReason
+                        : branch.finished       ? "end of the parameter range reached"
+                        : budget ? "the point budget (max_points " + std::to_string(o.maxSteps) +
+                                       ") was reached (the branch so far is kept)"
+                                 : "the step size fell below the minimum (the branch so far is kept)";
   }
   LOCA::destroyGlobalData(globalData);
   for (std::size_t i = keepStart ? 0 : 1; i < run.points.size(); ++i) branch.points.push_back(run.points[i]);

@@ -10,6 +10,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/NumberText.hpp"
 #include "cyclone/hbm/CondensedSystem.hpp"
+#include "cyclone/response/ForcedResponseChecks.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
@@ -265,6 +266,12 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
     throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
                                                  std::to_string(spec.excitation.amplitude));
+  // (the same bound the trace holds it to, response::checkExcitationSize, here before the
+  // models: 1e300 was refused after them, as a response too small)
+  if (!(std::abs(spec.excitation.amplitude) < response::kLargestTraceable))
+    throw InputError("excitation/amplitude", numberText(spec.excitation.amplitude) + " N is beyond " +
+                                                 numberText(response::kLargestTraceable) +
+                                                 ": the trace's products of it overflow double precision");
   if (spec.contact.normal.norm() != 0 || spec.contact.tangent.norm() != 0) checkContactFrame(spec.contact);
   mesh.nodeSet(spec.excitation.nodeSet);
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);

@@ -194,6 +194,13 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
               "; rebuilding it");
     return false;
   }
+  // A check asked for and not beside the model (deleted, or the model built without one)
+  // was silently missing from the summary (issue 49 probe): the model is checked again.
+  if (k == spec.checkNodalDiameter && spec.checkFrequencies > 0 && !std::filesystem::exists(path + ".check.csv")) {
+    log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " has no check beside it (" + path +
+              ".check.csv); rebuilding the model and checking it");
+    return false;
+  }
   if (k == spec.checkNodalDiameter && std::filesystem::exists(path + ".check.csv")) {
     std::string why;
     const auto check = readCheck(path + ".check.csv", k, why);

@@ -413,6 +413,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
                                   "false, or give every DOF a mass");
   if (setup.stability == Stability::Always && inertiaRatio(setup) < kNegligibleInertia)
     throw InputError("stability", negligibleInertiaText(inertiaRatio(setup)) + ": leave stability to auto or false");
+  checkExcitationSize(setup);
   const StartingPoint start = findStartingPoint(setup);
   checkResponseScale(setup, start.x);
   if (start.x.size() > 0) {

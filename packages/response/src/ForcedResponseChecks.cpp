@@ -9,6 +9,7 @@
 #include "cyclone/continuation/NewtonSolve.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
@@ -432,6 +433,16 @@ std::vector<HarmonicsLevel> peakByRaisedHarmonics(ForcedResponseSetup& setup, do
   const double scale = setup.apply(value).second;
   return peakByHarmonics(*setup.system, x, omega / (2 * M_PI), scale, setup.outputDofs.front(),
                          setup.continuation.tolerance, upTo, SolvedPoints{}, 0);
+}
+
+void checkExcitationSize(const ForcedResponseSetup& setup) {
+  if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale) return;
+  const double force = std::abs(setup.excitationScale) * setup.system->excitation().cwiseAbs().maxCoeff();
+  if (!(force < kLargestTraceable))
+    throw InputError("excitation", "its largest coefficient is " + numberText(force) + ", beyond " +
+                                       numberText(kLargestTraceable) +
+                                       ": the trace's products of it (an element's force of the response cubed, the "
+                                       "squared norms) overflow double precision; scale the force down");
 }
 
 void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start) {

@@ -190,12 +190,16 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
     I.rcond = I.cholmod.rcond();
     // min/max pivot of D (LDL^T) or of diag(L)^2 (LL^T): the same measure.
     ok = I.cholmod.info() == Eigen::Success && I.rcond > 1e-24;
+    // Out of memory leaves a partial factor, which read as "not positive definite" (a
+    // process limited to 700 MB; issue 49 probe): said as what it is.
+    if (I.cholmod.cholmod().status == CHOLMOD_OUT_OF_MEMORY) ok = -1;
     I.stats.nonzerosFactor = I.cholmod.cholmod().lnz;
     I.stats.flops = I.cholmod.cholmod().fl;
   }
   Teuchos::broadcast(*comm, 0, &ok);
   Teuchos::broadcast(*comm, 0, &I.rcond);
   I.stats.factorSeconds = timer.seconds();
+  if (ok < 0) throw SolverError(cholmodOutOfMemory(n));
   if (!ok && positive)
     throw SolverError("CHOLMOD: the matrix (" + std::to_string(n) +
                       " equations) is not positive definite: a free body without enough constraints, "

@@ -69,6 +69,12 @@ Matrix permutedLower(const Matrix& A, const std::vector<int>& pinv) {
 
 }  // namespace
 
+std::string cholmodOutOfMemory(long long equations) {
+  return "CHOLMOD ran out of memory factoring the matrix (" + std::to_string(equations) +
+         " equations): its factor needs more than this machine, or the process's limit (ulimit -v), allows; use a "
+         "coarser mesh or more memory";
+}
+
 // CHOLMOD's own choice of ordering (AMD, METIS when AMD fills much; then the weighted
 // postorder of the elimination tree) is found once on A's pattern, and A is handed over
 // permuted, P A P^T, to be factored in the natural ordering: cholmod_factorize otherwise
@@ -82,6 +88,7 @@ struct SparseCholesky<Scalar>::Impl {
 
   void factorize(const Matrix& B, Eigen::Index equations) {
     cholmod.factorize(B);
+    if (cholmod.cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw SolverError(cholmodOutOfMemory(equations));
     if (cholmod.info() != Eigen::Success || !(cholmod.rcond() > 1e-24))
       throw SolverError("CHOLMOD: the matrix (" + std::to_string(equations) +
                         " equations) is not positive definite: a free body without enough constraints, "

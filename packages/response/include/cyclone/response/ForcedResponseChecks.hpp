@@ -106,6 +106,13 @@ void checkElementJacobianCost(int samples, int numCoefficients, const std::vecto
 /// out zeros with "end of the range reached": an InputError naming the excitation and
 /// the force it would take. Not for a force-scale curve (its start may be the zero force).
 void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd& start);
+/// Forces from kLargestTraceable (1e100) leave no room in a double for what the trace
+/// forms of them (a cubic spring's force of the response cubed, the continuation's
+/// squared norms): an InputError naming the excitation, before the first point (a cos of
+/// 1e100 on the Duffing DOF ended in "no point of the curve was computed" and a page of
+/// solver attempts). Not for a force-scale curve (the scale is its parameter).
+void checkExcitationSize(const ForcedResponseSetup& setup);
+constexpr double kLargestTraceable = 1e100;
 constexpr double kSmallestTraceable = 1e-150;
 
 }  // namespace cyclone::response

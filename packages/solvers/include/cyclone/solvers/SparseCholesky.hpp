@@ -6,6 +6,7 @@
 // is factored once. DirectSolver is the distributed (Tpetra, gathered) front end.
 #include <complex>
 #include <memory>
+#include <string>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -57,5 +58,9 @@ private:
 
 extern template class SparseCholesky<double>;
 extern template class SparseCholesky<std::complex<double>>;
+
+/// What CHOLMOD's out-of-memory status means for a user (a SolverError's text): its
+/// partial factor otherwise reads as a matrix that is not positive definite.
+std::string cholmodOutOfMemory(long long equations);
 
 }  // namespace cyclone::solvers

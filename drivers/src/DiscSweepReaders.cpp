@@ -1,0 +1,50 @@
+// disc_response's keys for the curve (family, range, stability, the continuation), read
+// onto the disc's sweep options.
+#include <string>
+#include <vector>
+
+#include "cyclone/core/Error.hpp"
+#include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/scenes/SceneSection.hpp"
+#include "SceneStages.hpp"
+
+namespace cyclone::scenes {
+
+// disc_response's keys for the curve: family, frequency_range_hz, stability and the
+// continuation section (the disc's own defaults, discContinuationOptions, then the
+// scene's keys; an engine the scene names is used alone, by default the other one
+// retraces a curve the first leaves incomplete).
+disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
+                                        const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints) {
+  disc::DiscSweepOptions sweep;
+  sweep.family = d.getInt("family", 1);
+  // Against the models' modes before they are built (99 was refused after them; issue 49).
+  if (sweep.family < 1 || sweep.family > plan.modelSpec.modes)
+    throw InputError(d.where("family"), std::to_string(sweep.family) + ": must lie in 1.." +
+                                            std::to_string(plan.modelSpec.modes) +
+                                            " (the natural frequencies computed per nodal diameter, reduced_model/modes)");
+  const auto range = d.getDoubleList("frequency_range_hz", {});
+  if (!range.empty() && (range.size() != 2 || !(range[0] > 0) || !(range[1] > range[0])))
+    throw InputError(d.where("frequency_range_hz"), "needs two increasing positive frequencies [from, to] in Hz");
+  if (!range.empty()) sweep.fromHz = range[0], sweep.toHz = range[1];
+  sweep.mustCoverHz = plan.peakStress.atHz;
+  if (!range.empty() && sweep.mustCoverHz > 0 && !(sweep.mustCoverHz >= range[0] && sweep.mustCoverHz <= range[1]))
+    throw InputError(d.where("peak_stress/at_hz"), std::to_string(sweep.mustCoverHz) +
+                                                       " Hz lies outside disc_response/frequency_range_hz");
+  sweep.stability = readStability(d);
+  sweep.harmonicsCheckTo = plan.harmonicsCheckTo;
+  sweep.harmonicsTolerance = plan.harmonicsTolerance;
+  auto cs = d.section("continuation");
+  using Engine = continuation::ContinuationOptions::Engine;
+  sweep.continuation = disc::discContinuationOptions(
+      cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca : Engine::PredictorCorrector);
+  if (cs.has("engine")) sweep.fallback.reset();
+  readContinuationSteps(cs, sweep.continuation, "predictor_corrector");
+  sweep.continuation.tolerance = readContinuationTolerance(cs, sweep.continuation.tolerance);
+  cs.rejectUnknownKeys();
+  sweep.continuation.checkpoints = checkpoints;
+  if (sweep.fallback) sweep.fallback->checkpoints = checkpoints;
+  return sweep;
+}
+
+}  // namespace cyclone::scenes
