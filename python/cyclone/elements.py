@@ -6,12 +6,21 @@ through W; its coordinates are listed in its docstring."""
 from dataclasses import dataclass
 
 from . import _core
+from .errors import InputError
 
 
 class Element:
-    """Base of the elements: `dimension` coordinates, the law made by `_law()`."""
+    """Base of the elements: `dimension` coordinates, the law made by `_law()`. The law is
+    made once on construction, so a parameter out of range stops the script there, with
+    the element's class as the key (the library names its own class, e.g. JenkinsElement)."""
 
     dimension = 1
+
+    def __post_init__(self):
+        try:
+            self._law()
+        except InputError as error:
+            raise InputError(type(self).__name__, error.problem) from None
 
     def _law(self):
         raise NotImplementedError

@@ -75,9 +75,9 @@ class HarmonicBalance:
             W = arrays.matrix(W, "W", n, d)
         else:
             key = "dofs" if dofs is not None else "between"
-            plus, minus = (dofs, ()) if dofs is not None else self._pair(between)
+            plus, minus = (dofs, []) if dofs is not None else self._pair(between)
             plus = self._dof_list(plus, key, d)
-            minus = self._dof_list(minus, key, d) if len(minus) else []
+            minus = [] if dofs is not None else self._dof_list(minus, key, d)
             W = np.zeros((n, d))
             for j, dof in enumerate(plus):
                 W[dof, j] += 1.0
