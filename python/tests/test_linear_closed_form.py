@@ -49,3 +49,13 @@ def test_a_two_dof_chain_given_by_scipy_sparse_matrices():
         np.testing.assert_allclose(curve.amplitude[i, :, 1], abs(X), rtol=1e-9)
         np.testing.assert_allclose(curve.max_abs[i], abs(X), rtol=1e-9)
     np.testing.assert_allclose(curve.mean(0), 0.0, atol=1e-14)
+
+
+def test_a_force_scale_curve_grows_in_proportion():
+    w = 1.7
+    curve = single_dof().forced_response(0.5, 4.0, parameter="force_scale", omega=w, output_dofs=[0])
+    assert curve.end is cyclone.BranchEnd.RANGE_END
+    np.testing.assert_allclose(curve.omega, w, rtol=0)
+    closed = curve.parameter * F / np.hypot(k - m * w**2, c * w)
+    np.testing.assert_allclose(curve.amplitude_of(0, 1), closed, rtol=1e-9)
+    assert curve.parameter[0] == 0.5 and abs(curve.parameter[-1] - 4.0) < 1e-12
