@@ -8,17 +8,19 @@ nonlinear elements, traced over the frequency or the force, results as numpy arr
     curve = duffing.forced_response(0.5, 2.0)
     curve.omega, curve.max_abs[:, 0], curve.peak, curve.end
 
-The compiled part is cyclone._core (not meant for direct use). The library's progress
+The bladed disc's chain (the built-in sector, reduced models, the friction forced
+response and its headline): cyclone.disc. The compiled part is cyclone._core (not meant for direct use). The library's progress
 lines go to the logger "cyclone"; its errors arrive as cyclone.InputError (a ValueError
 with the key it names) and cyclone.SolverError (a RuntimeError).
 """
 
+from . import disc
 from .elements import CubicSpring, Element, Friction2D, Friction3D, Jenkins, QuadraticDamper, UnilateralSpring
 from .errors import InputError, SolverError
 from .response import BranchEnd, ForcedResponse, Peak
 from .system import HarmonicBalance
 
 __all__ = [
-    "BranchEnd", "CubicSpring", "Element", "ForcedResponse", "Friction2D", "Friction3D", "HarmonicBalance",
+    "BranchEnd", "CubicSpring", "disc", "Element", "ForcedResponse", "Friction2D", "Friction3D", "HarmonicBalance",
     "InputError", "Jenkins", "Peak", "QuadraticDamper", "SolverError", "UnilateralSpring",
 ]

@@ -16,5 +16,7 @@ void bindElements(pybind11::module_& m);
 void bindMatrixSystem(pybind11::module_& m);
 /// The forced response traced over the frequency or the force scale, as arrays.
 void bindForcedResponse(pybind11::module_& m);
+/// The bladed disc's chain: the sector's mesh, reduced models, friction forced response.
+void bindDisc(pybind11::module_& m);
 
 }  // namespace cyclone::python

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindElements(m);
   cyclone::python::bindMatrixSystem(m);
   cyclone::python::bindForcedResponse(m);
+  cyclone::python::bindDisc(m);
 }

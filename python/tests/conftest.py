@@ -10,6 +10,10 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "disc: the disc chain against the program (ctest python_disc, label scene)")
+
+
 @pytest.fixture(scope="session")
 def cyclone_program():
     program = pathlib.Path(os.environ.get("CYCLONE_PROGRAM", ROOT / "build" / "drivers" / "cyclone"))
