@@ -11,6 +11,8 @@ def dense(value, name):
     """A float64 ndarray of value: scipy.sparse matrices made dense, any order or stride."""
     if hasattr(value, "toarray") and hasattr(value, "nnz"):  # scipy.sparse, without importing scipy
         value = value.toarray()
+    if np.iscomplexobj(value):
+        raise InputError(name, "is complex: the library takes real matrices (a complex one's imaginary part would be dropped)")
     try:
         array = np.array(value, dtype=np.float64)  # a copy: later changes to the caller's array do not leak in
     except (TypeError, ValueError) as error:

@@ -50,6 +50,8 @@ def test_the_callers_arrays_are_copied():
     ("M", np.ones(4), K, None),
     ("C", np.eye(2), K, np.array([[0.1, np.nan], [0.0, 0.1]])),
     ("M", np.array([[1.0, 0.0], [0.0, np.inf]]), K, None),
+    ("C", np.eye(2), K, np.eye(2) * (0.1 + 0.1j)),
+    ("K", np.eye(2), [["a", "b"], ["c", "d"]], None),
 ])
 def test_a_wrong_shape_or_a_nan_names_the_argument(argument, M, K_, C):
     with pytest.raises(cyclone.InputError) as error:
