@@ -15,6 +15,7 @@ with the key it names) and cyclone.SolverError (a RuntimeError).
 """
 
 from . import disc
+from .damping import modal_damping
 from .elements import CubicSpring, Element, Friction2D, Friction3D, Jenkins, QuadraticDamper, UnilateralSpring
 from .errors import InputError, SolverError
 from .response import BranchEnd, ForcedResponse, Peak
@@ -22,5 +23,5 @@ from .system import HarmonicBalance
 
 __all__ = [
     "BranchEnd", "CubicSpring", "disc", "Element", "ForcedResponse", "Friction2D", "Friction3D", "HarmonicBalance",
-    "InputError", "Jenkins", "Peak", "QuadraticDamper", "SolverError", "UnilateralSpring",
+    "InputError", "Jenkins", "modal_damping", "Peak", "QuadraticDamper", "SolverError", "UnilateralSpring",
 ]

@@ -32,17 +32,51 @@ class HarmonicBalance:
     M, K, C: numpy arrays or scipy.sparse matrices (used dense); C None is no damping.
     """
 
-    def __init__(self, M, K, C=None, harmonics=7, samples=None):
+    def __init__(self, M, K, C=None, harmonics=7, samples=None, sectors=1, engine_order=0, M_next=None, C_next=None,
+                 K_next=None):
         self.M = arrays.square_matrix(M, "M")
         n = self.M.shape[0]
         self.K = arrays.square_matrix(K, "K", n)
         self.C = np.zeros((n, n)) if C is None else arrays.square_matrix(C, "C", n)
         self.harmonics = _harmonic_list(harmonics)
+        self._cyclic(sectors, engine_order, M_next, C_next, K_next)
+        self._check_physics()
         self._samples = None if samples is None else int(samples)
-        self._elements = []  # (element, W)
+        self._elements = []  # (element, W, W_next)
         self._excitation = []  # (dof, harmonic, cos, sin)
         self._static = []  # (dof, value)
         self._built = None  # the compiled system, made again after any change
+
+    def _cyclic(self, sectors, engine_order, M_next, C_next, K_next):
+        """One sector of a ring of `sectors` under a travelling wave of `engine_order`: sector
+        j's equation holds A x_j + A_next x_{j+1} + A_next^T x_{j-1} (A: M, C, K); only sector 0
+        is solved, harmonic h on nodal diameter h EO mod N (HarmonicBalanceSystem.hpp)."""
+        if not isinstance(sectors, (int, np.integer)) or sectors < 1:
+            raise InputError("sectors", f"{sectors!r}: must be an int >= 1 (1: not cyclic)")
+        self.sectors, self.engine_order = int(sectors), int(engine_order)
+        n, nxt = self.num_dofs, {}
+        for name, value in (("M_next", M_next), ("C_next", C_next), ("K_next", K_next)):
+            if value is not None and self.sectors == 1:
+                raise InputError(name, "couples a sector to the next one: give sectors >= 2 for a cyclic system")
+            nxt[name] = np.zeros((n, n)) if value is None else arrays.square_matrix(value, name, n)
+        if self.sectors == 1 and engine_order:
+            raise InputError("engine_order", "is for cyclic systems (sectors >= 2)")
+        self.M_next, self.C_next, self.K_next = nxt["M_next"], nxt["C_next"], nxt["K_next"]
+
+    def _check_physics(self):
+        """What a scene refuses (ForcedResponseScene.cpp): M and K not symmetric, a mass matrix
+        not positive definite, damping whose symmetric part generates energy; a cyclic sector's
+        own M or C only without next-sector coupling of the kind."""
+        for name, A in (("M", self.M), ("K", self.K)):
+            if np.linalg.norm(A - A.T) > 1e-12 * np.linalg.norm(A):
+                raise InputError(name, "must be symmetric")
+        if not self.M_next.any() and np.linalg.eigvalsh(self.M).min() <= 0:
+            raise InputError("M", "must be positive definite (a mass matrix: every DOF carries mass)")
+        if not self.C_next.any():
+            symmetric = 0.5 * (self.C + self.C.T)
+            lowest = np.linalg.eigvalsh(symmetric).min()
+            if lowest < -1e-12 * np.linalg.norm(symmetric):
+                raise InputError("C", f"generates energy: its symmetric part has the eigenvalue {lowest} < 0")
 
     @property
     def num_dofs(self):
@@ -60,12 +94,13 @@ class HarmonicBalance:
     def num_unknowns(self):
         return self.num_dofs * self.num_coefficients
 
-    def add_element(self, element, dofs=None, between=None, W=None):
+    def add_element(self, element, dofs=None, between=None, W=None, W_next=None):
         """Attaches `element` where it acts, by one of:
         dofs: one DOF per element coordinate, against ground (w_j = x[dofs[j]]);
         between: (dofs_a, dofs_b), w_j = x[dofs_a[j]] - x[dofs_b[j]] (a scalar element: (a, b));
-        W: the n x dimension matrix of w = W^T x (a scalar element: a direction of n entries).
-        Returns self (calls chain)."""
+        W: the n x dimension matrix of w = W^T x (a scalar element: a direction of n entries);
+        and, for a cyclic system, W_next: w += W_next^T x_next, the next sector's motion (an
+        element across the sector boundary). Returns self (calls chain)."""
         if not isinstance(element, Element):
             raise InputError("element", f"must be one of cyclone's elements (cyclone.Jenkins, ...), got {element!r}")
         if sum(arg is not None for arg in (dofs, between, W)) != 1:
@@ -83,10 +118,16 @@ class HarmonicBalance:
                 W[dof, j] += 1.0
             for j, dof in enumerate(minus):
                 W[dof, j] -= 1.0
+        if W_next is not None:
+            if self.sectors == 1:
+                raise InputError("W_next", "joins a sector to the next one: the system must be cyclic (sectors >= 2)")
+            W_next = arrays.matrix(W_next, "W_next", n, d)
+        else:
+            W_next = np.zeros((n, 0))
         for j in range(d):
-            if not W[:, j].any():
+            if not W[:, j].any() and not (W_next.size and W_next[:, j].any()):
                 raise InputError("W", f"coordinate {j} of the element is zero on every DOF: it would never act")
-        self._elements.append((element, W))
+        self._elements.append((element, W, W_next))
         self._built = None
         return self
 
@@ -131,8 +172,10 @@ class HarmonicBalance:
     def _core(self):
         if self._built is None:
             system = _core.MatrixSystem(self.M, self.C, self.K, self.harmonics, self._default_samples())
-            for element, W in self._elements:
-                system.add_element(element._law(), W)
+            if self.sectors > 1:
+                system.set_cyclic(self.sectors, self.engine_order, self.M_next, self.C_next, self.K_next)
+            for element, W, W_next in self._elements:
+                system.add_element(element._law(), W, W_next)
             for dof, h, c, s in self._excitation:
                 system.add_excitation(dof, h, c, s)
             for dof, value in self._static:
@@ -147,7 +190,7 @@ class HarmonicBalance:
             return self._samples
         H = max(self.harmonics)
         samples = max(64, 4 * H + 1)
-        for element, _ in self._elements:
+        for element, _, _ in self._elements:
             recommended = element._law().recommended_samples
             if recommended > 0:
                 samples = max(samples, recommended, _core.nonsmooth_samples(self.harmonics))

@@ -14,6 +14,7 @@
 #include "Bindings.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
+#include "cyclone/hbm/ModalDamping.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 
 namespace py = pybind11;
@@ -58,11 +59,17 @@ void bindMatrixSystem(py::module_& m) {
            }),
            py::arg("M"), py::arg("C"), py::arg("K"), py::arg("harmonics"), py::arg("samples"))
       .def(
-          "add_element",
-          [](HarmonicBalanceSystem& s, std::shared_ptr<hbm::NonlinearElement> law, Eigen::MatrixXd W) {
-            s.addElement(std::move(law), std::move(W));
+          "set_cyclic",
+          [](HarmonicBalanceSystem& s, int sectors, int engineOrder, Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext,
+             Eigen::MatrixXd Knext) {
+            s.setCyclic(hbm::CyclicCoupling{sectors, engineOrder, std::move(Mnext), std::move(Cnext), std::move(Knext)});
           },
-          py::arg("law"), py::arg("W"))
+          py::arg("sectors"), py::arg("engine_order"), py::arg("M_next"), py::arg("C_next"), py::arg("K_next"))
+      .def(
+          "add_element",
+          [](HarmonicBalanceSystem& s, std::shared_ptr<hbm::NonlinearElement> law, Eigen::MatrixXd W,
+             Eigen::MatrixXd Wnext) { s.addElement(std::move(law), std::move(W), std::move(Wnext)); },
+          py::arg("law"), py::arg("W"), py::arg("W_next"))
       .def("add_excitation", &HarmonicBalanceSystem::addExcitation, py::arg("dof"), py::arg("harmonic"),
            py::arg("cos"), py::arg("sin"))
       .def("add_static_load", &HarmonicBalanceSystem::addStaticLoad, py::arg("dof"), py::arg("value"))
@@ -83,11 +90,13 @@ void bindMatrixSystem(py::module_& m) {
             return hbm::peakMagnitude(s.aft().harmonics(), Eigen::VectorXd(x.segment(dof * nc, nc)));
           },
           py::arg("x"), py::arg("dof"))
+      .def("nodal_diameter", &HarmonicBalanceSystem::nodalDiameter, py::arg("harmonic"))
       .def_property_readonly("num_dofs", &HarmonicBalanceSystem::numDofs)
       .def_property_readonly("num_coefficients", &HarmonicBalanceSystem::numCoefficients)
       .def_property_readonly("num_unknowns", &HarmonicBalanceSystem::numUnknowns)
       .def_property_readonly("harmonics", [](const HarmonicBalanceSystem& s) { return s.aft().harmonics().harmonics(); })
       .def_property_readonly("samples", [](const HarmonicBalanceSystem& s) { return s.aft().numSamples(); });
+  m.def("modal_damping", &hbm::modalDamping, py::arg("M"), py::arg("K"), py::arg("ratio"));
   m.def(
       "nonsmooth_samples", [](std::vector<int> harmonics) { return hbm::HarmonicSet(std::move(harmonics)).nonsmoothSamples(); },
       py::arg("harmonics"), "samples for friction and gaps that grow with the harmonics (HarmonicSet::nonsmoothSamples)");

@@ -106,3 +106,23 @@ def test_the_typed_end_of_a_trace_out_of_points():
     assert curve.end is cyclone.BranchEnd.POINT_BUDGET and not curve.finished
     assert len(curve) == 5
     assert {end.value for end in cyclone.BranchEnd} == set(cyclone._core.branch_end_names)
+
+
+@pytest.mark.parametrize("argument, kwargs", [
+    ("K", dict(M=np.eye(2), K=np.array([[3.0, -1.0], [-0.5, 1.0]]))),  # not symmetric
+    ("M", dict(M=np.diag([1.0, 0.0]), K=K)),  # a DOF without mass
+    ("C", dict(M=np.eye(2), K=K, C=np.diag([0.1, -0.2]))),  # generates energy
+    ("engine_order", dict(M=np.eye(2), K=K, engine_order=3)),  # not cyclic
+    ("K_next", dict(M=np.eye(2), K=K, K_next=np.eye(2))),  # not cyclic
+    ("sectors", dict(M=np.eye(2), K=K, sectors=0)),
+])
+def test_what_a_scene_refuses_is_refused_naming_the_argument(argument, kwargs):
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.HarmonicBalance(**kwargs)
+    assert error.value.key == argument
+
+
+def test_an_element_across_the_sector_boundary_needs_a_cyclic_system():
+    with pytest.raises(cyclone.InputError) as error:
+        chain(np.eye(2), K, None).add_element(cyclone.CubicSpring(k3=1.0), dofs=[0], W_next=[1.0, 0.0])
+    assert error.value.key == "W_next"
