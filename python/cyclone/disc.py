@@ -1,15 +1,16 @@
 """The bladed disc's chain from Python, as the disc scenes run it (docs/scenes.md,
-`analysis: [reduced_model, disc_response]`), with the scenes' defaults: the built-in
-shrouded sector (or a mesh file), the reduced models per nodal diameter at the contact
+`analysis: [modal, reduced_model, disc_response]`), with the scenes' defaults: the built-in
+shrouded sector (or a mesh file), its modes over speeds, the reduced models per nodal diameter at the contact
 and excited nodes (cached in HDF5), and the friction-damped forced response with its
 headline peak.
 
     sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
+    modes = cyclone.disc.modal_sweep(sector, speeds_rpm=[0.0, 10000.0], modes_per_nd=3)
     nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
     models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds, cache_directory="reduced_models")
     response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
                                             amplitude=20.0, harmonics_check_to=2)
-    response.headline, response.curve.omega, response.curve.max_abs
+    modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
 
 Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
 
@@ -75,6 +76,49 @@ class Material:
     nu: float = 0.34
     rho: float = 4.507e-9
     name: str = "titanium"
+
+
+class ModalSweep:
+    """The sector's natural frequencies per speed and nodal diameter (a Campbell diagram's
+    data): rpm (speeds), nodal_diameters, and frequencies_hz(k): speeds x modes (Hz,
+    ascending; each member of a travelling-wave pair listed, as frequencies.csv)."""
+
+    def __init__(self, raw):
+        self.rpm = np.array([rpm for rpm, _ in raw])
+        self._by_speed = [{k: np.array(f) for k, f in frequencies.items()} for _, frequencies in raw]
+        self.nodal_diameters = sorted(self._by_speed[0])
+
+    def frequencies_hz(self, nodal_diameter):
+        if nodal_diameter not in self._by_speed[0]:
+            raise InputError("nodal_diameter", f"{nodal_diameter} was not computed ({self.nodal_diameters})")
+        return np.array([speed[nodal_diameter] for speed in self._by_speed])
+
+    def __repr__(self):
+        return f"<ModalSweep: {len(self.rpm)} speeds, ND {self.nodal_diameters}>"
+
+
+def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material=Material(), sectors=None,
+                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0):
+    """The cyclic modes of the sector at each speed on its centrifugal prestress, as a modal
+    scene (docs/scenes.md: modal and cyclic keys): configuration fixed_shroud pairs the disc's
+    and the shroud's side faces, cantilever the disc's only; nodal_diameters None: all of
+    0..N/2; threads 0: the cores this process may use."""
+    if configuration not in ("fixed_shroud", "cantilever"):
+        raise InputError("configuration", f"{configuration!r}: must be 'fixed_shroud' or 'cantilever'")
+    spec = _core.ModalSweepSpec()
+    spec.sectors = int(sectors if sectors is not None else mesh.sectors or 0)
+    if spec.sectors < 2:
+        raise InputError("sectors", "is required (>= 2) for a mesh read from a file")
+    spec.left_sets = ["disc_left"] + (["shroud_left"] if configuration == "fixed_shroud" else [])
+    spec.right_sets = ["disc_right"] + (["shroud_right"] if configuration == "fixed_shroud" else [])
+    spec.fixed_node_sets = list(fixed_node_sets)
+    spec.material, spec.E, spec.nu, spec.rho = material.name, material.E, material.nu, material.rho
+    spec.speeds_rpm = [arrays.finite_number(rpm, "speeds_rpm") for rpm in np.atleast_1d(speeds_rpm)]
+    if any(b <= a for a, b in zip(spec.speeds_rpm, spec.speeds_rpm[1:])) or min(spec.speeds_rpm) < 0:
+        raise InputError("speeds_rpm", "speeds must be non-negative and increase")
+    spec.nodal_diameters = [] if nodal_diameters is None else [int(k) for k in nodal_diameters]
+    spec.modes_per_nd, spec.prestress, spec.threads = int(modes_per_nd), prestress, int(threads)
+    return ModalSweep(_core.modal_sweep(mesh._core, spec))
 
 
 class ReducedModels:

@@ -2,8 +2,7 @@
 // DiscStages.cpp): the built-in shrouded sector or a mesh file, the reduced models per
 // nodal diameter (cached in HDF5), and the friction-damped forced response with its
 // headline. The specs are the library's structs with the scenes' defaults; the Python
-// layer (python/cyclone/disc.py) fills them by keyword. MPI and Kokkos (the library's
-// Environment) start with the first call that needs them and end when Python exits.
+// layer (python/cyclone/disc.py) fills them by keyword.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -15,10 +14,11 @@
 
 #include "Bindings.hpp"
 #include "CurveArrays.hpp"
+#include "Names.hpp"
+#include "ProgramEnvironment.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
-#include "cyclone/fe/Environment.hpp"
 #include "cyclone/mesh/MeshReader.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 
@@ -27,31 +27,6 @@ namespace py = pybind11;
 namespace cyclone::python {
 
 namespace {
-
-std::unique_ptr<Environment>& environmentHolder() {
-  static std::unique_ptr<Environment> environment;
-  return environment;
-}
-
-// The program's Environment, made once (MPI_Init may run once per process).
-Environment& environment() {
-  auto& holder = environmentHolder();
-  if (!holder) {
-    static int argc = 1;
-    static char name[] = "python";
-    static char* args[] = {name, nullptr};
-    static char** argv = args;
-    holder = std::make_unique<Environment>(argc, argv);
-  }
-  return *holder;
-}
-
-cyclic::PrestressKind prestressKind(const std::string& name) {
-  if (name == "nonlinear") return cyclic::PrestressKind::Nonlinear;
-  if (name == "linear") return cyclic::PrestressKind::Linear;
-  if (name == "none") return cyclic::PrestressKind::None;
-  throw InputError("prestress", "'" + name + "': must be nonlinear, linear or none");
-}
 
 py::dict headlineOf(const disc::DiscHeadline& h) {
   py::dict d;
@@ -125,7 +100,7 @@ void bindReducedModels(py::module_& m) {
       .def_readwrite("right_sets", &S::rightSets)
       .def_readwrite("retained_node_sets", &S::retainedNodeSets)
       .def_readwrite("rpm", &S::rpm)
-      .def("set_prestress", [](S& s, const std::string& name) { s.prestress = prestressKind(name); })
+      .def("set_prestress", [](S& s, const std::string& name) { s.prestress = prestressFromName(name); })
       .def_property(
           "kind", [](const S& s) { return disc::reducedModelKindName(s.kind); },
           [](S& s, const std::string& name) { s.kind = disc::reducedModelKindFromName(name, "kind"); })
@@ -150,7 +125,7 @@ void bindReducedModels(py::module_& m) {
       "disc_reduced_models",
       [](const mesh::Mesh& mesh, const S& spec, const std::vector<int>& nodalDiameters, const std::string& cache) {
         spec.material.validate("material");
-        auto comm = environment().comm();
+        auto comm = environmentComm();
         py::gil_scoped_release release;
         return std::make_shared<R>(disc::buildDiscReducedModels(mesh, spec, nodalDiameters, cache, comm));
       },
@@ -219,9 +194,6 @@ void bindDisc(py::module_& m) {
   bindMesh(m);
   bindReducedModels(m);
   bindDiscResponse(m);
-  // MPI and Kokkos end before the interpreter does (after the scripts' objects, which
-  // hold no distributed data: the models are dense).
-  py::module_::import("atexit").attr("register")(py::cpp_function([] { environmentHolder().reset(); }));
 }
 
 }  // namespace cyclone::python

@@ -12,6 +12,7 @@
 
 #include "Bindings.hpp"
 #include "CurveArrays.hpp"
+#include "Names.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/HarmonicRefinement.hpp"
 #include "cyclone/response/ForcedResponse.hpp"
@@ -71,14 +72,6 @@ ForcedResponseSetup setupOf(const hbm::HarmonicBalanceSystem& system, const Trac
 }
 
 }  // namespace
-
-ForcedResponseSetup::Stability stabilityFromName(const std::string& name) {
-  using Stability = ForcedResponseSetup::Stability;
-  if (name == "auto") return Stability::Auto;
-  if (name == "always") return Stability::Always;
-  if (name == "never") return Stability::Never;
-  throw InputError("stability", "'" + name + "': must be auto, always or never");
-}
 
 void bindForcedResponse(py::module_& m) {
   py::class_<TraceOptions>(m, "TraceOptions", "The trace's settings (cyclone.response fills them)")

@@ -9,5 +9,7 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindElements(m);
   cyclone::python::bindMatrixSystem(m);
   cyclone::python::bindForcedResponse(m);
+  cyclone::python::bindEnvironment(m);
+  cyclone::python::bindModalSweep(m);
   cyclone::python::bindDisc(m);
 }

@@ -11,7 +11,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def pytest_configure(config):
-    config.addinivalue_line("markers", "disc: the disc chain against the program (ctest python_disc, label scene)")
+    config.addinivalue_line("markers", "disc: the disc chain (modes, forced response) against the program (ctest python_disc, label scene)")
 
 
 @pytest.fixture(scope="session")

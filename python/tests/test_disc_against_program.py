@@ -6,22 +6,15 @@ program's three files (their names are digests of every input), and traces the s
 curve: every point's frequency and max |x(t)| to 1e-10, and the headline peak of
 harmonics 0..2 as the program's (its CSV's 10 digits). Label scene: about 20 s."""
 
-import csv
-import subprocess
-
 import numpy as np
 import pytest
 
 import cyclone
+import program
 
 SCENE = """cyclone:
   analysis: [disc_response]
-  mesh:
-    source: shrouded_sector
-    shrouded_sector: {mesh_size: 12.0}
-  material: {E: 1.16e5, nu: 0.34, rho: 4.507e-9}
-  constraints: {fixed_node_sets: [bore]}
-  loads: {speed_rpm: 10000.0}
+""" + program.SECTOR + """  loads: {speed_rpm: 10000.0}
   reduced_model: {check_frequencies: 0}
   disc_response:
     engine_order: 3
@@ -32,19 +25,10 @@ SCENE = """cyclone:
 """
 
 
-def read_csv(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {key: np.array([row[key] for row in rows]) for key in rows[0]}
-
-
 @pytest.mark.disc
 def test_the_disc_response_equals_the_programs(cyclone_program, tmp_path):
-    (tmp_path / "disc.yaml").write_text(SCENE)
-    out = tmp_path / "out"
-    subprocess.run([str(cyclone_program), "run", str(tmp_path / "disc.yaml"), "--output", str(out)], check=True,
-                   capture_output=True, env={"OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
-    expected, levels = read_csv(out / "disc_frc.csv"), read_csv(out / "disc_frc_harmonics.csv")
+    out = program.run(cyclone_program, SCENE, tmp_path / "out")
+    expected, levels = program.read_csv(out / "disc_frc.csv"), program.read_csv(out / "disc_frc_harmonics.csv")
 
     sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
     nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])

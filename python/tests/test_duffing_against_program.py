@@ -4,20 +4,10 @@ samples, W from 0.5 to 2) run by the program, and the same system built by hand 
 give the same curve point for point to 1e-10 (the program's frc.csv has 12 significant
 digits)."""
 
-import csv
-import subprocess
-
 import numpy as np
 
 import cyclone
-
-
-def program_curve(program, scene, out):
-    subprocess.run([str(program), "run", str(scene), "--output", str(out)], check=True, capture_output=True,
-                   env={"OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
-    with open(out / "frc.csv") as f:
-        rows = list(csv.DictReader(f))
-    return {key: np.array([row[key] for row in rows]) for key in rows[0]}
+import program
 
 
 def python_curve():
@@ -28,7 +18,7 @@ def python_curve():
 
 
 def test_the_duffing_curve_equals_the_programs(cyclone_program, scene_dir, tmp_path):
-    expected = program_curve(cyclone_program, scene_dir / "duffing.yaml", tmp_path)
+    expected = program.read_csv(program.run(cyclone_program, scene_dir / "duffing.yaml", tmp_path / "out") / "frc.csv")
     curve = python_curve()
     assert curve.end is cyclone.BranchEnd.RANGE_END
     assert len(curve) == len(expected["omega_rad_s"]) > 20
