@@ -83,7 +83,8 @@ class ModalSweep:
     data): rpm (speeds), nodal_diameters, and frequencies_hz(k): speeds x modes (Hz,
     ascending; each member of a travelling-wave pair listed, as frequencies.csv)."""
 
-    def __init__(self, raw):
+    def __init__(self, raw, library_seconds):
+        self.library_seconds = library_seconds  # the library's calls alone (docs/studies/python_overhead.md)
         self.rpm = np.array([rpm for rpm, _ in raw])
         self._by_speed = [{k: np.array(f) for k, f in frequencies.items()} for _, frequencies in raw]
         self.nodal_diameters = sorted(self._by_speed[0])
@@ -118,7 +119,7 @@ def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material
         raise InputError("speeds_rpm", "speeds must be non-negative and increase")
     spec.nodal_diameters = [] if nodal_diameters is None else [int(k) for k in nodal_diameters]
     spec.modes_per_nd, spec.prestress, spec.threads = int(modes_per_nd), prestress, int(threads)
-    return ModalSweep(_core.modal_sweep(mesh._core, spec))
+    return ModalSweep(*_core.modal_sweep(mesh._core, spec))
 
 
 class ReducedModels:
@@ -189,6 +190,7 @@ class DiscResponse:
     from_hz: float
     to_hz: float
     warnings: list
+    library_seconds: float  # the library's call alone (the binding's overhead: docs/studies/python_overhead.md)
 
 
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
@@ -219,4 +221,5 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
     return DiscResponse(
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
         headline=Headline(Convergence(h["convergence"]), h["value"], h["hz"], h["max_harmonic"], h["change"], h["text"]),
-        estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]))
+        estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]),
+        library_seconds=raw["library_seconds"])

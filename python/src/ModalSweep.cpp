@@ -12,6 +12,7 @@
 #include "Bindings.hpp"
 #include "Names.hpp"
 #include "ProgramEnvironment.hpp"
+#include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicSector.hpp"
 #include "cyclone/cyclic/ModalSweep.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
@@ -34,8 +35,9 @@ struct SweepSpec {
   int threads = 0;  // 0: the cores this process may use, as the scenes
 };
 
-// Per speed {rpm, {nodal diameter: frequencies in Hz, ascending, each member of a pair}}.
-py::list modalSweep(const mesh::Mesh& mesh, const SweepSpec& s) {
+// Per speed {rpm, {nodal diameter: frequencies in Hz, ascending, each member of a pair}},
+// and the seconds the library's calls took.
+py::tuple modalSweep(const mesh::Mesh& mesh, const SweepSpec& s) {
   const mesh::RotationAxis axis;  // z through the origin, as the scenes' default
   cyclic::ModalSweepProblem sweep;
   auto& problem = sweep.modes;
@@ -52,18 +54,20 @@ py::list modalSweep(const mesh::Mesh& mesh, const SweepSpec& s) {
   sweep.axis = axis;
   auto comm = environmentComm();
   std::vector<cyclic::SpeedModes> speeds;
+  Timer library;  // the calls as C++ makes them: what the Python layer adds is the rest
   {
     py::gil_scoped_release release;
     const auto sector = cyclic::makeCyclicSector(mesh, s.sectors, axis, s.leftSets, s.rightSets);
     speeds = cyclic::solveModalSweep(mesh, sector, sweep, comm);
   }
+  const double librarySeconds = library.seconds();
   py::list out;
   for (const auto& speed : speeds) {
     std::map<int, std::vector<double>> byDiameter;
     for (const auto& k : speed.nodalDiameters) byDiameter[k.nodalDiameter] = k.frequenciesHz;
     out.append(py::make_tuple(speed.rpm, byDiameter));
   }
-  return out;
+  return py::make_tuple(out, librarySeconds);
 }
 
 }  // namespace
