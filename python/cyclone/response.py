@@ -125,6 +125,11 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
     "predictor_corrector" or "loca" alone; tolerance: Newton's, relative to the forces
     (1e-14..1e-4; default 1e-10); steps: initial_step, min_step, max_step, max_points, turn_angle."""
     options = _core.TraceOptions()
+    # As a scene (ForcedResponseScene.cpp): a curve of nothing vibrating, or of a static
+    # load swept in frequency whose "peak" is the range's start, is refused.
+    if not any(h >= 1 for _, h, _, _ in system._excitation):
+        raise InputError("excitation", "has no force at a harmonic >= 1: nothing vibrates (add_excitation; a "
+                                       "constant load is add_static_load)")
     if parameter not in ("omega", "force_scale"):
         raise InputError("parameter", f"{parameter!r}: must be 'omega' or 'force_scale'")
     options.parameter = parameter
@@ -157,6 +162,15 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
             raise InputError("tolerance", f"{tolerance}: must lie in 1e-14..1e-4, the residual relative to the forces")
         options.tolerance = tolerance
     _set_steps(options, steps, engine)
+    if parameter == "force_scale":
+        # The residual is relative to the forces at scale 1, so a point at scale s is solved
+        # to tolerance / s of its own forces: near 0 the solution 0 passes.
+        smallest = 1e4 * (tolerance if tolerance is not None else 1e-10)
+        for key, value in (("start", options.start), ("end", options.end)):
+            if value != 0 and abs(value) < smallest:
+                raise InputError(key, f"a force scale of {value:g} is solved to the tolerance over it of its own "
+                                      f"forces (the residual is relative to the forces at scale 1): start at "
+                                      f"{smallest:g} or above, or at 0")
     return options
 
 

@@ -82,6 +82,13 @@ def test_arguments_of_the_calls_are_named():
     with pytest.raises(cyclone.InputError) as error:
         system.forced_response(0.5, 1.0, tolerance=1e-2)
     assert error.value.key == "tolerance"
+    with pytest.raises(cyclone.InputError) as error:
+        system.forced_response(1e-10, 1.0, parameter="force_scale", omega=1.0)
+    assert error.value.key == "start"
+    static = cyclone.HarmonicBalance(np.eye(2), K, harmonics=[0, 1]).add_excitation(dof=0, harmonic=0, cos=1.0)
+    with pytest.raises(cyclone.InputError) as error:
+        static.forced_response(0.5, 1.0)
+    assert error.value.key == "excitation"
 
 
 def test_the_librarys_input_error_carries_its_key():
