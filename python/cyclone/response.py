@@ -116,8 +116,10 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
     """The trace's settings, each checked (InputError naming the argument), as a scene's
     continuation and output keys (docs/scenes.md):
 
-    parameter: "omega" (start, end in rad/s) or "force_scale" (the excitation's scale s at
-    the fixed frequency `omega`); force_scale: s of a frequency curve; output_dofs: the DOFs
+    parameter: "omega" (start, end in rad/s); or at the fixed frequency `omega`: "force_scale"
+    (the excitation's scale s), "damping_scale" (C times s), "<element name>/<parameter>" (of
+    every element of that name: kt, kn, stiffness, mu, preload of a friction contact; k, gap;
+    kt, slip_force; k3; c2); force_scale: s of a curve in another parameter; output_dofs: the DOFs
     whose max |x(t)| is reported, the first one's peak located on the curve; stability:
     "auto" (Hill's method where affordable), "always", "never" (or True/False);
     harmonics_check: True (the peak again with H + 1), False (none) or the highest H to
@@ -130,20 +132,24 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
     if not any(h >= 1 for _, h, _, _ in system._excitation):
         raise InputError("excitation", "has no force at a harmonic >= 1: nothing vibrates (add_excitation; a "
                                        "constant load is add_static_load)")
-    if parameter not in ("omega", "force_scale"):
-        raise InputError("parameter", f"{parameter!r}: must be 'omega' or 'force_scale'")
+    if not isinstance(parameter, str) or (parameter not in ("omega", "force_scale", "damping_scale")
+                                          and "/" not in parameter):
+        raise InputError("parameter", f"{parameter!r}: must be 'omega', 'force_scale', 'damping_scale' or "
+                                      "'<element name>/<parameter>' (e.g. 'contact/preload')")
     options.parameter = parameter
+    options.element_names = system.element_names
     options.start, options.end = arrays.finite_number(start, "start"), arrays.finite_number(end, "end")
     if options.start == options.end:
         raise InputError("end", f"equals start ({options.start}): a range needs two different ends")
     if parameter == "omega":
         if omega is not None:
-            raise InputError("omega", "is the fixed frequency of a force_scale curve; a frequency curve runs from start to end")
+            raise InputError("omega", "is the fixed frequency of a curve in another parameter; a frequency curve runs "
+                                      "from start to end")
         if not (options.start > 0 and options.end > 0):
             raise InputError("start" if options.start <= 0 else "end", "the frequency range must be positive (rad/s)")
     else:
         if omega is None or not arrays.finite_number(omega, "omega") > 0:
-            raise InputError("omega", "a force_scale curve needs its fixed frequency, positive (rad/s)")
+            raise InputError("omega", f"a {parameter} curve needs its fixed frequency, positive (rad/s)")
         options.omega = float(omega)
     options.force_scale = arrays.finite_number(force_scale, "force_scale")
     output_dofs = [output_dofs] if isinstance(output_dofs, (int, np.integer)) else list(output_dofs)

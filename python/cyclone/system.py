@@ -43,6 +43,7 @@ class HarmonicBalance:
         self._check_physics()
         self._samples = None if samples is None else int(samples)
         self._elements = []  # (element, W, W_next)
+        self.element_names = []
         self._excitation = []  # (dof, harmonic, cos, sin)
         self._static = []  # (dof, value)
         self._built = None  # the compiled system, made again after any change
@@ -94,13 +95,15 @@ class HarmonicBalance:
     def num_unknowns(self):
         return self.num_dofs * self.num_coefficients
 
-    def add_element(self, element, dofs=None, between=None, W=None, W_next=None):
+    def add_element(self, element, dofs=None, between=None, W=None, W_next=None, name=None):
         """Attaches `element` where it acts, by one of:
         dofs: one DOF per element coordinate, against ground (w_j = x[dofs[j]]);
         between: (dofs_a, dofs_b), w_j = x[dofs_a[j]] - x[dofs_b[j]] (a scalar element: (a, b));
         W: the n x dimension matrix of w = W^T x (a scalar element: a direction of n entries);
         and, for a cyclic system, W_next: w += W_next^T x_next, the next sector's motion (an
-        element across the sector boundary). Returns self (calls chain)."""
+        element across the sector boundary). `name` (default "element<i>") is what a trace in one
+        of its parameters names: forced_response(parameter="<name>/mu", ...); several elements
+        may share one. Returns self (calls chain)."""
         if not isinstance(element, Element):
             raise InputError("element", f"must be one of cyclone's elements (cyclone.Jenkins, ...), got {element!r}")
         if sum(arg is not None for arg in (dofs, between, W)) != 1:
@@ -128,6 +131,7 @@ class HarmonicBalance:
             if not W[:, j].any() and not (W_next.size and W_next[:, j].any()):
                 raise InputError("W", f"coordinate {j} of the element is zero on every DOF: it would never act")
         self._elements.append((element, W, W_next))
+        self.element_names.append(str(name) if name is not None else f"element{len(self._elements) - 1}")
         self._built = None
         return self
 
@@ -163,7 +167,8 @@ class HarmonicBalance:
 
     def forced_response(self, start, end, **options):
         """The forced response traced from `start` to `end` of the parameter (the frequency
-        in rad/s unless parameter="force_scale"); the options are cyclone.response.trace_options'.
+        in rad/s; or the force scale, the damping scale, an element's parameter at the fixed
+        frequency `omega`); the options are cyclone.response.trace_options'.
         Returns a ForcedResponse."""
         settings = trace_options(self, start, end, **options)
         return ForcedResponse(_core.forced_response(self._core(), settings), self.harmonics, self.num_dofs,

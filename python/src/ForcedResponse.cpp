@@ -26,7 +26,8 @@ namespace {
 using response::ForcedResponseSetup;
 
 struct TraceOptions {
-  std::string parameter = "omega";  // omega | force_scale
+  std::string parameter = "omega";  // omega | force_scale | damping_scale | <element name>/<its parameter>
+  std::vector<std::string> elementNames;  // the system's elements', in order
   double start = 0, end = 1;
   double omega = 0;       // the fixed frequency of a force-scale curve
   double forceScale = 1;  // the excitation's scale of a frequency curve
@@ -42,12 +43,24 @@ struct TraceOptions {
 ForcedResponseSetup setupOf(const hbm::HarmonicBalanceSystem& system, const TraceOptions& o) {
   ForcedResponseSetup setup;
   setup.system = hbm::withHarmonics(system, system.aft().harmonics(), system.aft().numSamples());
-  if (o.parameter == "omega")
+  setup.elementNames = o.elementNames;
+  if (o.parameter != "omega") setup.omega = o.omega;
+  if (o.parameter == "omega") {
     setup.parameter = ForcedResponseSetup::Parameter::Omega;
-  else if (o.parameter == "force_scale")
-    setup.parameter = ForcedResponseSetup::Parameter::ForceScale, setup.omega = o.omega;
-  else
-    throw InputError("parameter", "'" + o.parameter + "': must be omega or force_scale");
+  } else if (o.parameter == "force_scale") {
+    setup.parameter = ForcedResponseSetup::Parameter::ForceScale;
+  } else if (o.parameter == "damping_scale") {
+    setup.parameter = ForcedResponseSetup::Parameter::DampingScale;
+  } else if (const auto slash = o.parameter.find('/'); slash != std::string::npos) {
+    try {  // every element of that name, the law's parameter checked at the range's start
+      response::selectElementParameter(setup, o.parameter.substr(0, slash), o.parameter.substr(slash + 1), o.start);
+    } catch (const InputError& e) {
+      throw InputError("parameter", e.problem());
+    }
+  } else {
+    throw InputError("parameter", "'" + o.parameter + "': must be omega, force_scale, damping_scale or "
+                                  "<element name>/<parameter> (e.g. contact/preload)");
+  }
   setup.excitationScale = o.forceScale;
   auto& opt = setup.continuation;
   if (o.engine.empty()) {
@@ -77,6 +90,7 @@ void bindForcedResponse(py::module_& m) {
   py::class_<TraceOptions>(m, "TraceOptions", "The trace's settings (cyclone.response fills them)")
       .def(py::init<>())
       .def_readwrite("parameter", &TraceOptions::parameter)
+      .def_readwrite("element_names", &TraceOptions::elementNames)
       .def_readwrite("start", &TraceOptions::start)
       .def_readwrite("end", &TraceOptions::end)
       .def_readwrite("omega", &TraceOptions::omega)

@@ -44,11 +44,11 @@ def test_jenkins_points_solve_the_describing_function():
     assert worst < 1e-4
 
 
-def tmdsimpy_friction_2dof(scale):
-    kx, kn, cx, cn = 12.0, 21.0, 2 * 0.05 * np.sqrt(12.0), 2.0
+def tmdsimpy_friction_2dof(scale, cx=2 * 0.05 * np.sqrt(12.0)):
+    kx, kn, cn = 12.0, 21.0, 2.0
     system = cyclone.HarmonicBalance(M=np.eye(2), K=np.diag([kx, kn]), C=np.diag([cx, cn]), harmonics=8,
                                      samples=128)
-    system.add_element(cyclone.Friction2D(kt=5.0, kn=21.0, mu=0.85), dofs=[0, 1])  # [tangential, normal]
+    system.add_element(cyclone.Friction2D(kt=5.0, kn=21.0, mu=0.85), dofs=[0, 1], name="contact")  # [t, n]
     system.add_static_load(dof=1, value=100.0)
     system.add_excitation(dof=0, harmonic=1, cos=1.0)
     system.add_excitation(dof=1, harmonic=1, cos=0.1)
