@@ -19,9 +19,12 @@ def _harmonic_list(harmonics):
             raise InputError("harmonics", f"{harmonics}: needs at least harmonic 1 (an int H means 0..H)")
         return list(range(int(harmonics) + 1))
     try:
-        return [int(h) for h in harmonics]
+        listed = [int(h) for h in harmonics]
     except (TypeError, ValueError):
         raise InputError("harmonics", f"must be an int H (0..H) or a list of harmonics, got {harmonics!r}") from None
+    if not listed or min(listed) < 0 or len(set(listed)) != len(listed):
+        raise InputError("harmonics", f"{listed}: a list of distinct harmonics >= 0, not empty")
+    return listed
 
 
 class HarmonicBalance:
@@ -41,6 +44,8 @@ class HarmonicBalance:
         self.harmonics = _harmonic_list(harmonics)
         self._cyclic(sectors, engine_order, M_next, C_next, K_next)
         self._check_physics()
+        for matrix in (self.M, self.K, self.C, self.M_next, self.C_next, self.K_next):
+            matrix.flags.writeable = False  # the system is built from them: a change would not reach it
         self._samples = None if samples is None else int(samples)
         self._elements = []  # (element, W, W_next)
         self.element_names = []

@@ -36,12 +36,21 @@ def test_c_order_fortran_order_and_a_strided_slice_give_the_same_curve():
         np.testing.assert_array_equal(curve.x, reference.x)
 
 
-def test_the_callers_arrays_are_copied():
+def test_the_callers_arrays_are_copied_and_the_systems_read_only():
     M, C, K2 = np.diag([1.0, 0.5]), 0.02 * K, K.copy()
     system = chain(M, K2, C)
     x = system.linearized_solution(1.0)
     K2[0, 0] = 100.0  # changed after the system took it
     np.testing.assert_array_equal(system.linearized_solution(1.0), x)
+    with pytest.raises(ValueError):
+        system.K[0, 0] = 100.0  # would not reach the system built from it
+
+
+@pytest.mark.parametrize("harmonics", [[], [1, -1], [0, 1, 1], 0, "abc"])
+def test_a_wrong_harmonic_set_names_harmonics(harmonics):
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.HarmonicBalance(np.eye(2), K, harmonics=harmonics)
+    assert error.value.key == "harmonics"
 
 
 @pytest.mark.parametrize("argument, M, K_, C", [
