@@ -153,12 +153,31 @@ class HarmonicBalance:
         self._built = None
         return self
 
-    def residual(self, x, omega, force_scale=1.0, jacobian=True):
+    def residual(self, x, omega, force_scale=1.0, jacobian=True, frequency_derivative=False):
         """R(x; omega) = Z(omega) x + F_nl(x) - force_scale F_ex - F_static, and dR/dx
-        (num_unknowns square; None when jacobian is False), unscaled, as numpy arrays."""
+        (num_unknowns square; None when jacobian is False), unscaled, as numpy arrays; with
+        frequency_derivative also dR/domega (tmdsimpy's hbm_res: R, dR/dx, dR/dw)."""
         x = arrays.vector(x, "x", self.num_unknowns)
-        return self._core().residual(x, arrays.finite_number(omega, "omega"),
-                                     arrays.finite_number(force_scale, "force_scale"), bool(jacobian))
+        omega = arrays.finite_number(omega, "omega")
+        force_scale = arrays.finite_number(force_scale, "force_scale")
+        R, J = self._core().residual(x, omega, force_scale, bool(jacobian))
+        if not frequency_derivative:
+            return R, J
+        return R, J, self._frequency_derivative(x, omega, force_scale)
+
+    def _frequency_derivative(self, x, omega, force_scale):
+        """dR/domega, exact to rounding: the linear part K x + omega D C x + omega^2 D^2 M x is a
+        quadratic in omega, whose central difference is its derivative whatever the step, and a
+        rate-independent element's force (friction, gaps, springs) does not change with omega at
+        given coefficients. So not for velocity-dependent elements (their force does)."""
+        damper = next((element for element, _, _ in self._elements if element._law().uses_velocity), None)
+        if damper is not None:
+            raise InputError("frequency_derivative", f"{type(damper).__name__}'s force depends on the velocity, so "
+                                                     "on the frequency: dR/domega is not available with it")
+        step = 1e-2 * max(abs(omega), 1.0)
+        plus, _ = self._core().residual(x, omega + step, force_scale, False)
+        minus, _ = self._core().residual(x, omega - step, force_scale, False)
+        return (plus - minus) / (2 * step)
 
     def linearized_solution(self, omega, force_scale=1.0):
         """The response linearised about rest (stuck contacts and closed gaps keep their

@@ -34,7 +34,9 @@ void bindElements(py::module_& m) {
       .def_property_readonly("dimension", &hbm::NonlinearElement::dimension,
                              "coordinates the element acts on (columns of W)")
       .def_property_readonly("recommended_samples", &hbm::NonlinearElement::recommendedSamples,
-                             "time samples per period its law needs at least (0: no need)");
+                             "time samples per period its law needs at least (0: no need)")
+      .def_property_readonly("uses_velocity", &hbm::NonlinearElement::usesVelocity,
+                             "its force depends on the velocity (so on the frequency at given coefficients)");
   m.def("cubic_spring", [](double k3) { return scalar(std::make_shared<hbm::CubicSpring>(k3)); }, py::arg("k3"));
   m.def(
       "unilateral_spring",
