@@ -10,6 +10,7 @@
 #include "cyclone/hbm/CubicSpring.hpp"
 #include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
+#include "cyclone/hbm/ModalDamping.hpp"
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
@@ -110,14 +111,11 @@ MatrixSystemInput readMatrixSystem(SceneSection& scene) {
     C += ab[0] * M + ab[1] * K;
   }
   if (sys.has("modal_damping_ratio")) {
-    const double zeta = sys.getDouble("modal_damping_ratio", 0.0);
-    if (!(zeta >= 0)) throw InputError(sys.where("modal_damping_ratio"), "must be >= 0");
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(K, M);
-    if (modes.info() != Eigen::Success || modes.eigenvalues().minCoeff() < 0)
-      throw InputError(sys.where("modal_damping_ratio"), "needs K positive semi-definite and M positive definite");
-    const Eigen::MatrixXd MPhi = M * modes.eigenvectors();
-    const Eigen::VectorXd c = 2 * zeta * modes.eigenvalues().cwiseMax(0).cwiseSqrt();
-    C += MPhi * c.asDiagonal() * MPhi.transpose();
+    try {
+      C += hbm::modalDamping(M, K, sys.getDouble("modal_damping_ratio", 0.0));
+    } catch (const InputError& e) {
+      throw InputError(sys.where("modal_damping_ratio"), e.problem());
+    }
   }
   in.dofNames = sys.getStringList("dof_names", {});
   if (!in.dofNames.empty() && int(in.dofNames.size()) != n)

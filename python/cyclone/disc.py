@@ -1,0 +1,225 @@
+"""The bladed disc's chain from Python, as the disc scenes run it (docs/scenes.md,
+`analysis: [modal, reduced_model, disc_response]`), with the scenes' defaults: the built-in
+shrouded sector (or a mesh file), its modes over speeds, the reduced models per nodal diameter at the contact
+and excited nodes (cached in HDF5), and the friction-damped forced response with its
+headline peak.
+
+    sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
+    modes = cyclone.disc.modal_sweep(sector, speeds_rpm=[0.0, 10000.0], modes_per_nd=3)
+    nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
+    models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds, cache_directory="reduced_models")
+    response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
+                                            amplitude=20.0, harmonics_check_to=2)
+    modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
+
+Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
+
+import enum
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core, arrays
+from .errors import InputError
+from .response import ForcedResponse
+
+
+class Mesh:
+    """A sector's mesh: coordinates (nodes x 3, mm), node_sets (name: node indices from 0),
+    and the number of sectors of its disc (None for a file's: give it to reduced_models)."""
+
+    def __init__(self, core, sectors):
+        self._core = core
+        self.sectors = sectors
+
+    @property
+    def num_nodes(self):
+        return self._core.num_nodes
+
+    @property
+    def num_elements(self):
+        return self._core.num_elements
+
+    @property
+    def coordinates(self):
+        return self._core.coordinates
+
+    @property
+    def node_sets(self):
+        return {name: np.array(nodes) for name, nodes in self._core.node_sets.items()}
+
+    def __repr__(self):
+        return f"<Mesh: {self.num_nodes} nodes, {self.num_elements} elements ({self._core.source})>"
+
+
+def shrouded_sector(**parameters):
+    """The built-in shrouded sector (gmsh): keyword arguments as the scenes'
+    mesh/shrouded_sector keys (sectors 24, mesh_size 6.0, element_order 2, ...)."""
+    p = _core.ShroudedSectorParameters()
+    for key, value in parameters.items():
+        if not hasattr(p, key):
+            raise InputError(key, "is not a parameter of the shrouded sector")
+        setattr(p, key, value)
+    return Mesh(_core.shrouded_sector(p), p.sectors)
+
+
+def read_mesh(path, sectors):
+    """A sector's mesh from a file (Exodus II, CalculiX/Abaqus .inp, Gmsh .msh) of a disc of `sectors`."""
+    return Mesh(_core.read_mesh(str(path)), int(sectors))
+
+
+@dataclass(frozen=True)
+class Material:
+    """Isotropic elastic (MPa, t/mm^3); titanium by default, as the scenes'."""
+
+    E: float = 1.16e5
+    nu: float = 0.34
+    rho: float = 4.507e-9
+    name: str = "titanium"
+
+
+class ModalSweep:
+    """The sector's natural frequencies per speed and nodal diameter (a Campbell diagram's
+    data): rpm (speeds), nodal_diameters, and frequencies_hz(k): speeds x modes (Hz,
+    ascending; each member of a travelling-wave pair listed, as frequencies.csv)."""
+
+    def __init__(self, raw, library_seconds):
+        self.library_seconds = library_seconds  # the library's calls alone (docs/studies/python_overhead.md)
+        self.rpm = np.array([rpm for rpm, _ in raw])
+        self._by_speed = [{k: np.array(f) for k, f in frequencies.items()} for _, frequencies in raw]
+        self.nodal_diameters = sorted(self._by_speed[0])
+
+    def frequencies_hz(self, nodal_diameter):
+        if nodal_diameter not in self._by_speed[0]:
+            raise InputError("nodal_diameter", f"{nodal_diameter} was not computed ({self.nodal_diameters})")
+        return np.array([speed[nodal_diameter] for speed in self._by_speed])
+
+    def __repr__(self):
+        return f"<ModalSweep: {len(self.rpm)} speeds, ND {self.nodal_diameters}>"
+
+
+def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material=Material(), sectors=None,
+                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0):
+    """The cyclic modes of the sector at each speed on its centrifugal prestress, as a modal
+    scene (docs/scenes.md: modal and cyclic keys): configuration fixed_shroud pairs the disc's
+    and the shroud's side faces, cantilever the disc's only; nodal_diameters None: all of
+    0..N/2; threads 0: the cores this process may use."""
+    if configuration not in ("fixed_shroud", "cantilever"):
+        raise InputError("configuration", f"{configuration!r}: must be 'fixed_shroud' or 'cantilever'")
+    spec = _core.ModalSweepSpec()
+    spec.sectors = int(sectors if sectors is not None else mesh.sectors or 0)
+    if spec.sectors < 2:
+        raise InputError("sectors", "is required (>= 2) for a mesh read from a file")
+    spec.left_sets = ["disc_left"] + (["shroud_left"] if configuration == "fixed_shroud" else [])
+    spec.right_sets = ["disc_right"] + (["shroud_right"] if configuration == "fixed_shroud" else [])
+    spec.fixed_node_sets = list(fixed_node_sets)
+    spec.material, spec.E, spec.nu, spec.rho = material.name, material.E, material.nu, material.rho
+    spec.speeds_rpm = [arrays.finite_number(rpm, "speeds_rpm") for rpm in np.atleast_1d(speeds_rpm)]
+    if any(b <= a for a, b in zip(spec.speeds_rpm, spec.speeds_rpm[1:])) or min(spec.speeds_rpm) < 0:
+        raise InputError("speeds_rpm", "speeds must be non-negative and increase")
+    spec.nodal_diameters = [] if nodal_diameters is None else [int(k) for k in nodal_diameters]
+    spec.modes_per_nd, spec.prestress, spec.threads = int(modes_per_nd), prestress, int(threads)
+    return ModalSweep(*_core.modal_sweep(mesh._core, spec))
+
+
+class ReducedModels:
+    """One reduced model per nodal diameter; natural_hz[k]: the cantilevered sector's
+    distinct natural frequencies at nodal diameter k (Hz); reused/built: from the cache or not."""
+
+    def __init__(self, core):
+        self._core = core
+        self.nodal_diameters = core.nodal_diameters
+        self.natural_hz = {k: np.array(v) for k, v in core.natural_hz.items()}
+        self.files = dict(core.files)
+        self.reused, self.built, self.seconds = core.reused, core.built, core.seconds
+
+    def __repr__(self):
+        return f"<ReducedModels: ND {self.nodal_diameters}, {self.built} built, {self.reused} reused>"
+
+
+def nodal_diameters_for(sectors, engine_order, harmonics):
+    """The nodal diameters harmonics h of the engine order live on (h EO mod N, folded)."""
+    return _core.nodal_diameters_for(int(sectors), int(engine_order), [int(h) for h in harmonics])
+
+
+def reduced_models(mesh, rpm, nodal_diameters, cache_directory="", material=Material(), sectors=None, modes=20,
+                   loss_factor=0.006, kind="hybrid", prestress="nonlinear", omega0=0.0, fixed_node_sets=("bore",),
+                   retained_node_sets=("shroud_contact_left", "shroud_contact_right", "mid_blade")):
+    """The models of `nodal_diameters` on the prestress at `rpm`, read from `cache_directory`
+    where a model of the same inputs is there ("": no cache). The scenes' reduced_model keys."""
+    spec = _core.DiscModelSpec()
+    spec.material = (material.name, material.E, material.nu, material.rho)
+    spec.sectors = int(sectors if sectors is not None else mesh.sectors or 0)
+    if spec.sectors < 2:
+        raise InputError("sectors", "is required (>= 2) for a mesh read from a file")
+    spec.rpm = arrays.finite_number(rpm, "rpm")
+    spec.modes, spec.loss_factor, spec.omega0 = int(modes), float(loss_factor), float(omega0)
+    spec.kind = kind
+    spec.set_prestress(prestress)
+    spec.fixed_node_sets, spec.retained_node_sets = list(fixed_node_sets), list(retained_node_sets)
+    return ReducedModels(_core.disc_reduced_models(mesh._core, spec, [int(k) for k in nodal_diameters],
+                                                   str(cache_directory)))
+
+
+class Convergence(enum.Enum):
+    """The headline peak (disc::DiscHeadline::Convergence): converged to 1 % in the harmonics, or an estimate."""
+
+    NOT_FOUND = "not found"
+    ESTIMATE = "estimate"
+    CONVERGED = "converged"
+
+
+@dataclass(frozen=True)
+class Headline:
+    """The peak a disc run reports: the harmonics check's highest level found (max |x(t)|
+    of the response node's first DOF, mm, at hz), its change from the level below."""
+
+    convergence: Convergence
+    value: float
+    hz: float
+    max_harmonic: int
+    change: float
+    text: str
+
+
+@dataclass(frozen=True)
+class DiscResponse:
+    curve: ForcedResponse
+    headline: Headline
+    estimate: dict  # nodal_diameter, free_hz, stuck_hz, stuck_amplitude (None when not made)
+    from_hz: float
+    to_hz: float
+    warnings: list
+    library_seconds: float  # the library's call alone (the binding's overhead: docs/studies/python_overhead.md)
+
+
+def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
+                    mu=0.4, law="per_area", patches=0, amplitude=1.0, direction=(0.0, 0.0, 1.0),
+                    excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
+                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0):
+    """The friction-damped response of the disc under engine order `engine_order`, the scenes'
+    disc_response keys: the shroud contacts' law (kn, kt per unit area and the interface's
+    preload, per_area; or per pair), the excitation (N per node on harmonic 1), the range
+    (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1)."""
+    spec = _core.DiscResponseSpec()
+    spec.engine_order = int(engine_order)
+    spec.harmonics = [int(h) for h in harmonics]
+    spec.samples = int(samples)
+    spec.response_node_sets = list(response_node_sets)
+    spec.set_contact(dict(law=law, kn=arrays.finite_number(kn, "kn"), kt=arrays.finite_number(kt, "kt"),
+                          mu=arrays.finite_number(mu, "mu"), preload=arrays.finite_number(preload, "preload"),
+                          patches=int(patches)))
+    spec.set_excitation(dict(node_set=excitation_node_set, direction=arrays.vector(direction, "direction", 3),
+                             amplitude=arrays.finite_number(amplitude, "amplitude")))
+    from_hz, to_hz = (0.0, 0.0) if frequency_range_hz is None else (
+        arrays.finite_number(frequency_range_hz[0], "frequency_range_hz"),
+        arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))
+    stability = {True: "always", False: "never"}.get(stability, stability)
+    raw = _core.disc_forced_response(mesh._core, models._core, spec, from_hz, to_hz, int(family), stability,
+                                     int(harmonics_check_to))
+    h = raw["headline"]
+    return DiscResponse(
+        curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
+        headline=Headline(Convergence(h["convergence"]), h["value"], h["hz"], h["max_harmonic"], h["change"], h["text"]),
+        estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]),
+        library_seconds=raw["library_seconds"])

@@ -1,0 +1,26 @@
+#pragma once
+// The parts of the compiled module cyclone._core, one file each; Module.cpp calls them in
+// order. The public API is the pure-Python package over them (python/cyclone/).
+#include <pybind11/pybind11.h>
+
+namespace cyclone::python {
+
+/// InputError and SolverError raised as cyclone.InputError (a ValueError carrying the key)
+/// and cyclone.SolverError (a RuntimeError).
+void bindErrors(pybind11::module_& m);
+/// The library's progress lines to Python's logging (logger "cyclone").
+void bindLogToPython(pybind11::module_& m);
+/// The nonlinear elements' laws (cubic spring, gap, quadratic damper, Jenkins, friction contact).
+void bindElements(pybind11::module_& m);
+/// A harmonic balance system of matrices and elements, and its residual and Jacobian.
+void bindMatrixSystem(pybind11::module_& m);
+/// The forced response traced over the frequency or the force scale, as arrays.
+void bindForcedResponse(pybind11::module_& m);
+/// MPI and Kokkos ended at the interpreter's exit (ProgramEnvironment.hpp starts them).
+void bindEnvironment(pybind11::module_& m);
+/// The cyclic modes of a sector over speeds (Campbell data).
+void bindModalSweep(pybind11::module_& m);
+/// The bladed disc's chain: the sector's mesh, reduced models, friction forced response.
+void bindDisc(pybind11::module_& m);
+
+}  // namespace cyclone::python

@@ -1,0 +1,55 @@
+"""The disc chain from Python against the cyclone program on the same disc: the built-in
+sector at mesh size 12, 10 000 rpm, engine order 3, harmonics 0..1 checked with 2, a
+20 kN preload over the shroud face, 20 N at mid-blade. The program runs the scene and
+writes its reduced models; Python builds the same models' spec, so it reuses the
+program's three files (their names are digests of every input), and traces the same
+curve: every point's frequency and max |x(t)| to 1e-10, and the headline peak of
+harmonics 0..2 as the program's (its CSV's 10 digits). Label scene: about 20 s."""
+
+import numpy as np
+import pytest
+
+import cyclone
+import program
+
+SCENE = """cyclone:
+  analysis: [disc_response]
+""" + program.SECTOR + """  loads: {speed_rpm: 10000.0}
+  reduced_model: {check_frequencies: 0}
+  disc_response:
+    engine_order: 3
+    harmonics: [0, 1]
+    harmonics_check_to: 2
+    contact: {preload: 20000.0}
+    excitation: {amplitude: 20.0}
+"""
+
+
+@pytest.mark.disc
+def test_the_disc_response_equals_the_programs(cyclone_program, tmp_path):
+    out = program.run(cyclone_program, SCENE, tmp_path / "out")
+    expected, levels = program.read_csv(out / "disc_frc.csv"), program.read_csv(out / "disc_frc_harmonics.csv")
+
+    sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
+    nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
+    models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds,
+                                         cache_directory=out / "reduced_models")
+    assert (models.reused, models.built) == (3, 0)  # the same inputs, so the program's files
+    response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
+                                            amplitude=20.0, harmonics_check_to=2)
+    curve = response.curve
+    assert curve.end is cyclone.BranchEnd.RANGE_END
+    assert len(curve) == len(expected["omega_rad_s"]) > 20
+    np.testing.assert_allclose(curve.omega, expected["omega_rad_s"].astype(float), rtol=1e-10)
+    maxima = [key for key in expected if key.endswith("_max")]
+    assert len(maxima) == curve.max_abs.shape[1] == 3  # mid-blade x, y, z
+    for k, key in enumerate(maxima):
+        np.testing.assert_allclose(curve.max_abs[:, k], expected[key].astype(float), rtol=1e-10)
+    np.testing.assert_array_equal(curve.stable, expected["stable"].astype(int))
+    top = levels["max_harmonic"].astype(int).argmax()
+    assert response.headline.max_harmonic == 2
+    assert response.headline.convergence is cyclone.disc.Convergence.ESTIMATE  # 3 % from H 1 to 2: above 1 %
+    assert abs(response.headline.value / float(levels["peak_max_abs_dof0"][top]) - 1) < 1e-9
+    assert abs(response.headline.hz / float(levels["freq_hz"][top]) - 1) < 1e-9
+    # The peak lies between the shroud's free and stuck resonances (the estimate's).
+    assert response.estimate["free_hz"] < response.headline.hz < response.estimate["stuck_hz"] * 1.01
