@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <filesystem>
 
 #include <Teuchos_Comm.hpp>
 
@@ -257,6 +258,23 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
              (name == "speed" ? "; the reduced models built again at each speed (no interpolation between speeds)"
                               : "")});
   }
+}
+
+// A study value that reproduces the reference scene: disc_frc's files under the study's name.
+void copyReferenceCurve(const std::string& outDir, const std::string& tag, const std::string& what,
+                        linalg::CommPtr comm, SceneSummary& summary) {
+  if (comm->getRank() == 0)
+    for (const std::string ext : {".csv", ".h5", ".svg"}) {
+      if (!std::filesystem::exists(outDir + "/disc_frc" + ext)) continue;
+      AtomicFile copy(outDir + "/" + tag + ext);
+      std::filesystem::copy_file(outDir + "/disc_frc" + ext, copy.tempPath(),
+                                 std::filesystem::copy_options::overwrite_existing);
+      copy.commit();
+    }
+  for (const std::string ext : {".h5", ".csv", ".svg"}) summary.written.push_back(outDir + "/" + tag + ext);
+  const std::string line = tag + ": " + what + " is the reference scene: disc_frc's curve, not traced again";
+  summary.computed.push_back(line);
+  log::info(line);
 }
 
 }  // namespace cyclone::scenes

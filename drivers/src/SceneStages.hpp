@@ -259,6 +259,11 @@ std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh,
 inline constexpr const char* kStudyNames[] = {"preload", "mu", "contact_stiffness", "force",
                                               "loss_factor", "harmonics", "modes", "clearance"};
 
+/// A study value that reproduces the reference scene: disc_frc's files under the study's
+/// name `tag` (DiscPeakStudies.cpp).
+void copyReferenceCurve(const std::string& outDir, const std::string& tag, const std::string& what,
+                        linalg::CommPtr comm, SceneSummary& summary);
+
 /// Contacts, loops, the period and the sector's stresses at one point: the converged peak
 /// (or peak_stress/at_hz for the stresses); DiscPeakStress.cpp.
 void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,

@@ -182,6 +182,23 @@ TEST(Scenes, AMotionBeyondSmallDisplacementsIsSaid) {
   EXPECT_NE(summary.computed[1].find("beyond the small displacements"), std::string::npos) << summary.computed[1];
 }
 
+// Contacts far stiffer than the sector at their pairs (kn = 1e8 N/mm^3 on the default
+// disc): half a minute of start attempts, then "no point of the curve was computed" with a
+// page of solver attempts and no word of the cause (issue 49 probe). Refused once the
+// models say how stiff the sector is there, naming the key.
+TEST(Scenes, ContactsFarStifferThanTheSectorAreRefused) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_stiff_contacts");
+  std::string scene = discResponseScene();
+  scene.replace(scene.find("      preload: 5.0\n"), 0, "      kn: 1.0e9\n      kt: 1.0e9\n");
+  Timer timer;
+  const auto msg = failure(scene, dir);
+  EXPECT_NE(msg.find("disc_response/contact/kn: the shroud contacts' normal stiffness is up to"), std::string::npos)
+      << msg;
+  EXPECT_LT(timer.seconds(), 20.0);
+  EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
+}
+
 // (Also: bad peak studies are named before any work.)
 TEST(Scenes, DiscResponseEngineOrderFoldingIsExplained) {
   log::setQuiet(true);

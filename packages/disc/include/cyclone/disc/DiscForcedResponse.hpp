@@ -87,6 +87,12 @@ struct DiscForcedResponse {
   DiscHeadline headline;
   std::vector<std::string> warnings;  ///< e.g. the largest response at the end of the sweep
   double sectorSize = 0;  ///< the mesh's bounding box's diagonal (mm)
+  /// The contacts' normal stiffness over the sector's own at their pairs, the largest
+  /// (kn times the structure's compliance along the contact's normal, the engine order's
+  /// phase, at half the free resonance): far above 1, the contacts are rigid and only make
+  /// the balance stiff (kn = 1e8 N/mm^3 on the default disc found no first point, and the
+  /// failure did not say why). 0 where the system has no receptance model.
+  double contactStiffnessRatio = 0;
   /// The headline's peak beyond 1 % of the sector's size: the reduced models are linear
   /// elasticity about the prestressed state, small displacements (an excitation of 1e5 N
   /// gave a peak of 550 mm on a 60 mm blade).
@@ -97,6 +103,10 @@ struct DiscForcedResponse {
 /// keeps no natural frequency at or above `toHz` (the curve's range's top): its resonances
 /// above the modes kept would be missing from the response.
 void checkModesCoverRange(const DiscReducedModels& models, const DiscResponseSpec& spec, double toHz);
+
+/// The largest DiscForcedResponse::contactStiffnessRatio solveDiscForcedResponse traces
+/// (an InputError naming disc_response/contact/kn above it).
+constexpr double kRigidContactRatio = 1e6;
 
 /// The frequency curve of the disc `spec` describes over `models` (InputError for an
 /// engine order its sectors cannot carry, a family out of range, or no resonance of the
