@@ -111,7 +111,8 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
 DiscResponseSpec readResponseSpec(SceneSection& d) {
   DiscResponseSpec spec;
   spec.engineOrder = d.getInt("engine_order", 0);
-  if (!d.has("engine_order")) throw InputError(d.where("engine_order"), "is required (the excitation's engine order)");
+  if (!d.has("engine_order"))
+    throw InputError(d.where("engine_order"), d.requiredText("engine_order") + " (the excitation's engine order)");
   spec.harmonics = readHarmonicList(d, 3);
   spec.samples = d.getInt("samples", 0);
   {
@@ -167,8 +168,9 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   }
   // The force is physics a forced response needs: not a silent 1 N (issue 49).
   if (!d.has("excitation"))
-    throw InputError(d.where("excitation"), "is required: the force on each blade (node_set, direction, amplitude "
-                                            "in the scene's force unit)");
+    throw InputError(d.where("excitation"), d.requiredText("excitation") +
+                                                ": the force on each blade (node_set, direction, amplitude in the "
+                                                "scene's force unit)");
   auto e = d.section("excitation");
   spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
   spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));

@@ -2,6 +2,7 @@
 
 #include <Teuchos_Array.hpp>
 
+#include <cctype>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -51,8 +52,23 @@ double SceneSection::getDouble(const std::string& key, double fallback) {
   throw InputError(where(key), "expected a number, got '" + list_.getEntry(key).getAny().typeName() + "'");
 }
 
+std::string SceneSection::requiredText(const std::string& key) const {
+  auto plain = [](const std::string& k) {
+    std::string out;
+    for (char c : k)
+      if (!std::isspace(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  for (auto it = list_.begin(); it != list_.end(); ++it) {
+    const std::string& name = list_.name(it);
+    if (name != key && plain(name) == plain(key))
+      return "is required (the section has '" + name + "', which differs from it in spaces or capitals)";
+  }
+  return "is required";
+}
+
 double SceneSection::requireDouble(const std::string& key) {
-  if (!has(key)) throw InputError(where(key), "is required");
+  if (!has(key)) throw InputError(where(key), requiredText(key));
   return getDouble(key, 0.0);
 }
 

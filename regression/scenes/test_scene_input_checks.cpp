@@ -409,6 +409,9 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "parameter 'mesh_size' must be at most"},
       {"    excitation:\n      node_set: mid_blade\n      direction: [0.0, 0.0, 1.0]\n      amplitude: 20.0\n", "",
        "cyclone/disc_response/excitation", "is required"},
+      // a quoted key with a trailing space: "is required" alone (issue 49 probe)
+      {"    engine_order: 3\n", "    'engine_order ': 3\n", "cyclone/disc_response/engine_order",
+       "is required (the section has 'engine_order ', which differs from it in spaces or capitals)"},
   };
   for (const auto& c : values) {
     Timer timer;

@@ -45,6 +45,10 @@ public:
   void rejectKeysOtherThan(const std::set<std::string>& known) const;
   /// "file: parameter 'path/key'" for messages.
   std::string where(const std::string& key) const;
+  /// "is required" for a missing key, naming a key of the section that differs from it
+  /// only in spaces or capitals ('engine_order ' quoted with a trailing space was met by
+  /// "engine_order is required" alone).
+  std::string requiredText(const std::string& key) const;
   /// "file: section 'path'" for messages about the section as a whole.
   std::string location() const;
 
