@@ -275,6 +275,15 @@ TEST(GmshReader, AsciiCountsAreCheckedAgainstTheFileSize) {
                    {"element_block.msh", "an element block's number of elements", "damaged"});
   expectInputError([&] { readGmsh(damaged("entities.msh", "$Entities", 0, 3)); },
                    {"entities.msh", "the number of volumes", "damaged"});
+  // A section's end line missing ($EndNodes: "the gmsh model has no 3D elements", issue 49
+  // probe) or a file cut after a section's start.
+  std::string noEnd = text;
+  noEnd.erase(noEnd.find("$EndNodes\n"), 10);
+  expectInputError([&] { readGmsh(dir.write("no_end_nodes.msh", noEnd)); },
+                   {"no_end_nodes.msh", "the section $Nodes opened on line", "is not closed by $EndNodes before "
+                    "$Elements", "damaged"});
+  expectInputError([&] { readGmsh(dir.write("cut.msh", text.substr(0, text.find("$Elements\n") + 10))); },
+                   {"cut.msh", "the section $Elements opened on line", "before the file's end", "damaged"});
 }
 
 // An element naming a node tag the file never defines made gmsh 4.8 crash (SIGSEGV in

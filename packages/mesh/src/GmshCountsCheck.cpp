@@ -190,9 +190,26 @@ void checkAsciiCounts(const std::string& path, double version) {
     for (std::uint64_t i = 0; i < n && std::getline(in, line); ++i) ++lineNumber;
   };
   const bool four = version >= 4;
+  // Each section closed by its own $End line before the next one opens (a missing
+  // $EndNodes read as "the gmsh model has no 3D elements"; issue 49 probe).
+  std::string open;
+  std::uintmax_t openedOn = 0;
+  auto unclosed = [&](const std::string& where) {
+    throw InputError(path, "ASCII Gmsh file: the section $" + open + " opened on line " + std::to_string(openedOn) +
+                               " is not closed by $End" + open + " " + where + ": the file is damaged");
+  };
   while (std::getline(in, line)) {
     ++lineNumber;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!line.empty() && line[0] == '$') {
+      if (line.rfind("$End", 0) == 0) {
+        if (line.substr(4) != open) unclosed("(line " + std::to_string(lineNumber) + " says " + line + ")");
+        open.clear();
+      } else {
+        if (!open.empty()) unclosed("before " + line + " on line " + std::to_string(lineNumber));
+        open = line.substr(1), openedOn = lineNumber;
+      }
+    }
     if (line == "$Entities" && four) {
       counts({{"the number of points", 8}, {"the number of curves", 8}, {"the number of surfaces", 8},
               {"the number of volumes", 8}});
@@ -216,6 +233,7 @@ void checkAsciiCounts(const std::string& path, double version) {
       counts({{"the number of elements", 4}});
     }
   }
+  if (!open.empty()) unclosed("before the file's end");
 }
 
 }  // namespace
