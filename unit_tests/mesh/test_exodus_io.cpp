@@ -251,6 +251,27 @@ TEST(ExodusIO, DamagedHeaderCountsAreRefusedBeforeNetcdfAllocates) {
                    {"damaged.exo", "damaged netCDF header", "an attribute's number of values 2147483647"});
 }
 
+// One flipped byte renaming node set 2's dimension (num_nod_ns2 -> num_nodIns2) reached the
+// Exodus library, whose message named its own call and "no entries defined in file id
+// 65536" (issue 49 probe): the set is named now.
+TEST(ExodusIO, ARenamedEntityDimensionNamesTheEntity) {
+  TempDirectory dir;
+  const std::string whole = dir.file("whole.exo");
+  writeExodus(whole, cubeWithTet());
+  std::string bytes;
+  {
+    std::ifstream in(whole, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto at = bytes.find("num_nod_ns2");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 7] = 'I';
+  const std::string damaged = dir.write("renamed.exo", bytes);
+  expectInputError([&] { readExodus(damaged); },
+                   {"renamed.exo", "damaged netCDF header", "Exodus node set 2 of 2 (num_node_sets) has no dimension "
+                                                            "num_nod_ns2"});
+}
+
 TEST(ExodusIO, ReaderChecksGeometry) {
   TempDirectory dir;
   Mesh mesh = cubeWithTet();

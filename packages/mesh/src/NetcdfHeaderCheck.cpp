@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "cyclone/core/Error.hpp"
 
@@ -30,6 +32,13 @@ public:
     pos_ += bytes;
   }
   // A count of items of at least `bytesEach` bytes each.
+  std::string text(std::uint64_t bytes, const char* what) {
+    if (bytes > left()) skip(bytes, what);  // fails, naming it
+    std::string t(std::size_t(bytes), '\0');
+    in_.read(t.data(), std::streamsize(bytes));
+    pos_ += bytes;
+    return t;
+  }
   std::uint64_t count(int bytes, const char* what, std::uint64_t bytesEach) {
     const auto n = integer(bytes, what);
     if (bytesEach > 0 && n > left() / bytesEach)
@@ -50,6 +59,34 @@ private:
 std::uint64_t padded(std::uint64_t n) { return (n + 3) / 4 * 4; }
 
 void name(HeaderReader& r) { r.skip(padded(r.count(4, "a name's length", 1)), "a name"); }
+
+std::string nameText(HeaderReader& r) {
+  const auto n = r.count(4, "a name's length", 1);
+  std::string t = r.text(n, "a name");
+  r.skip(padded(n) - n, "a name's padding");
+  return t;
+}
+
+// Exodus' per-entity dimensions: num_node_sets = N names num_nod_ns1..N, and so on. One
+// renamed by a damaged byte ("num_nodIns2") reached the Exodus library, whose message named
+// its own call and "no entries defined" (issue 49 probe), not the set.
+void checkExodusDimensions(HeaderReader& r, const std::map<std::string, std::uint64_t>& dims) {
+  const struct {
+    const char* count;
+    const char* each;
+    const char* what;
+  } entities[] = {{"num_node_sets", "num_nod_ns", "node set"},
+                  {"num_side_sets", "num_side_ss", "side set"},
+                  {"num_el_blk", "num_el_in_blk", "element block"}};
+  for (const auto& e : entities) {
+    const auto n = dims.find(e.count);
+    if (n == dims.end()) continue;
+    for (std::uint64_t i = 1; i <= n->second && i <= 100000; ++i)
+      if (!dims.count(e.each + std::to_string(i)))
+        r.fail(std::string("Exodus ") + e.what + " " + std::to_string(i) + " of " + std::to_string(n->second) +
+               " (" + e.count + ") has no dimension " + e.each + std::to_string(i));
+  }
+}
 
 std::uint64_t typeSize(HeaderReader& r, std::uint64_t type) {
   switch (type) {
@@ -90,10 +127,12 @@ void checkNetcdfHeader(const std::string& path) {
   if ((magic >> 8) != 0x434446 || (version != 1 && version != 2)) return;  // not classic netCDF
   r.integer(4, "the number of records");
   const auto dims = list(r, 10, "the dimension list", 12);
+  std::map<std::string, std::uint64_t> lengths;
   for (std::uint64_t i = 0; i < dims; ++i) {
-    name(r);
-    r.integer(4, "a dimension's length");
+    const std::string dimension = nameText(r);
+    lengths[dimension] = r.integer(4, "a dimension's length");
   }
+  checkExodusDimensions(r, lengths);
   attributes(r);
   const auto vars = list(r, 11, "the variable list", 24);
   for (std::uint64_t i = 0; i < vars; ++i) {
