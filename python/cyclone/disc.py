@@ -11,16 +11,18 @@ headline peak.
     response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
                                             amplitude=20.0, harmonics_check_to=2)
     modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
+    peaks = cyclone.disc.follow_peak(response, "preload", (10000.0, 40000.0), values=8)
 
 Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
 
 import enum
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _core, arrays
 from .errors import InputError
+from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.disc's API)
 from .response import ForcedResponse
 
 
@@ -126,8 +128,9 @@ class ReducedModels:
     """One reduced model per nodal diameter; natural_hz[k]: the cantilevered sector's
     distinct natural frequencies at nodal diameter k (Hz); reused/built: from the cache or not."""
 
-    def __init__(self, core):
+    def __init__(self, core, spec, cache):
         self._core = core
+        self._spec, self._cache = spec, cache  # what the peak's studies build again (over the speed)
         self.nodal_diameters = core.nodal_diameters
         self.natural_hz = {k: np.array(v) for k, v in core.natural_hz.items()}
         self.files = dict(core.files)
@@ -158,7 +161,7 @@ def reduced_models(mesh, rpm, nodal_diameters, cache_directory="", material=Mate
     spec.set_prestress(prestress)
     spec.fixed_node_sets, spec.retained_node_sets = list(fixed_node_sets), list(retained_node_sets)
     return ReducedModels(_core.disc_reduced_models(mesh._core, spec, [int(k) for k in nodal_diameters],
-                                                   str(cache_directory)))
+                                                   str(cache_directory)), spec, str(cache_directory))
 
 
 class Convergence(enum.Enum):
@@ -191,6 +194,8 @@ class DiscResponse:
     to_hz: float
     warnings: list
     library_seconds: float  # the library's call alone (the binding's overhead: docs/studies/python_overhead.md)
+    _reference: object = field(default=None, repr=False)  # the curve as the library keeps it (follow_peak starts from it)
+    _models: object = field(default=None, repr=False)
 
 
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
@@ -222,4 +227,4 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
         headline=Headline(Convergence(h["convergence"]), h["value"], h["hz"], h["max_harmonic"], h["change"], h["text"]),
         estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]),
-        library_seconds=raw["library_seconds"])
+        library_seconds=raw["library_seconds"], _reference=raw["reference"], _models=models)
