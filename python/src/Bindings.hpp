@@ -26,5 +26,7 @@ void bindModalSweep(pybind11::module_& m);
 void bindDisc(pybind11::module_& m);
 /// The disc's peak followed over a parameter from a response's curve.
 void bindDiscPeakFollowing(pybind11::module_& m);
+/// The sector's stresses and fatigue margin at the disc's peak.
+void bindDiscPeakStress(pybind11::module_& m);
 
 }  // namespace cyclone::python

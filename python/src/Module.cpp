@@ -14,4 +14,5 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindModalSweep(m);
   cyclone::python::bindDisc(m);
   cyclone::python::bindDiscPeakFollowing(m);
+  cyclone::python::bindDiscPeakStress(m);
 }

@@ -6,7 +6,8 @@ builds the same models' spec, so it reuses the program's three files (their name
 digests of every input), and traces the same curve: every point's frequency and
 max |x(t)| to 1e-10, and the headline peak of harmonics 0..2 as the program's (its CSV's
 10 digits); then follows the same peak: every value's peak and frequency as the program's
-peak_preload.csv (10 digits). Label scene: about 18 s."""
+peak_preload.csv (10 digits); and the stresses and fatigue margin at the peak, every node as
+the program's disc_peak_stress.csv (8 digits). Label scene: about 20 s."""
 
 import numpy as np
 import pytest
@@ -16,7 +17,7 @@ import program
 
 SCENE = """cyclone:
   analysis: [disc_response]
-""" + program.SECTOR + """  loads: {speed_rpm: 10000.0}
+""" + program.SECTOR.replace("rho: 4.507e-9}", "rho: 4.507e-9, fatigue: {data: Ti-6Al-4V}}") + """  loads: {speed_rpm: 10000.0}
   reduced_model: {check_frequencies: 0}
   disc_response:
     engine_order: 3
@@ -26,6 +27,7 @@ SCENE = """cyclone:
     excitation: {amplitude: 20.0}
     peak_studies:
       preload: {range: [10000.0, 40000.0], values: 4}
+    peak_stress: {animation_steps: 8}
 """
 
 
@@ -87,3 +89,39 @@ def test_the_peak_over_the_preload_equals_the_programs(program_out, python_respo
     # At the response's own preload the followed peak is the traced curve's (located on its path).
     at_reference = int(np.flatnonzero(peaks.parameter == 20000.0)[0])
     assert abs(peaks.peak[at_reference] / python_response.curve.peak.value - 1) < 1e-3
+
+
+@pytest.mark.disc
+def test_the_stresses_and_margin_at_the_peak_equal_the_programs(program_out, python_response):
+    expected = program.read_csv(program_out / "disc_peak_stress.csv")
+    stress = cyclone.disc.peak_stress(python_response, fatigue="Ti-6Al-4V")
+    # The CSV lists every node worst first (a stable sort by the safety factor).
+    order = np.argsort(stress.safety_factor, kind="stable")
+    np.testing.assert_array_equal(stress.node_ids[order], expected["node"].astype(int))
+    assert stress.critical == order[0] and stress.critical_node == int(expected["node"][0])
+    # Its 8 significant digits; a column's values near zero against the column's largest.
+    for column, values in [("x", stress.coordinates[:, 0]), ("y", stress.coordinates[:, 1]),
+                           ("z", stress.coordinates[:, 2]), ("mean_vm_signed", stress.mean_von_mises),
+                           ("alternating_vm", stress.alternating_von_mises),
+                           ("alternating_principal", stress.alternating_principal),
+                           ("max_vm", stress.max_von_mises), ("safety_factor", stress.safety_factor)]:
+        reference = expected[column].astype(float)
+        np.testing.assert_allclose(values[order], reference, rtol=1e-7, atol=1e-7 * abs(reference).max(),
+                                   err_msg=column)
+    # The margin is the modified Goodman-Haigh diagram's with Ti-6Al-4V's data sheet values
+    # (S_u 950, S_y 880, S_e 510 MPa), the mean held: at every node the allowable alternating
+    # stress S_e (1 - max(s_m, 0) / S_u), at most S_y - |s_m|, over the alternating stress.
+    assert (stress.material["ultimate_strength"], stress.material["yield_strength"],
+            stress.material["endurance_limit"]) == (950.0, 880.0, 510.0)
+    sm, sa = stress.mean_von_mises, stress.alternating_von_mises
+    allowed = np.maximum(np.minimum(510.0 * (1 - np.maximum(sm, 0) / 950.0), 880.0 - abs(sm)), 0)
+    moving = sa > 0  # a node without alternating stress has an infinite factor
+    assert moving.mean() > 0.9
+    np.testing.assert_allclose(stress.safety_factor[moving], allowed[moving] / sa[moving], rtol=1e-12)
+    # Strengths the Goodman line cannot have are refused naming the key, before any solve.
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.peak_stress(python_response, fatigue={"ultimate_strength": 500.0, "endurance_limit": 600.0})
+    assert error.value.key == "fatigue/endurance_limit"
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.peak_stress(python_response, fatigue={"ultimate": 500.0})
+    assert error.value.key == "fatigue"
