@@ -82,32 +82,66 @@ class Material:
     name: str = "titanium"
 
 
+@dataclass(frozen=True)
+class CampbellBranch:
+    """One family of one nodal diameter tracked over the speeds by MAC (campbell.csv's rows
+    of one nd and family): family from 1 in the order at the first speed; worst_mac the
+    lowest MAC along the tracking (low: the branch veered)."""
+
+    nd: int
+    family: int
+    rpm: np.ndarray
+    hz: np.ndarray
+    worst_mac: float
+
+
 class ModalSweep:
     """The sector's natural frequencies per speed and nodal diameter (a Campbell diagram's
     data): rpm (speeds), nodal_diameters, and frequencies_hz(k): speeds x modes (Hz,
-    ascending; each member of a travelling-wave pair listed, as frequencies.csv)."""
+    ascending; each member of a travelling-wave pair listed, as frequencies.csv);
+    shapes(k) (with modal_sweep(shapes=True)): speeds x modes x nodes x 3, complex (the real
+    part copy a, the imaginary part copy b; real for ND 0 and N/2), as modes_<rpm>rpm.exo;
+    over two or more speeds branches (CampbellBranch, campbell.csv) and resonances: the
+    engine orders' crossings {eo, nd, family, rpm, hz: arrays} (resonances.csv)."""
 
-    def __init__(self, raw, library_seconds):
+    def __init__(self, raw, campbell, library_seconds):
         self.library_seconds = library_seconds  # the library's calls alone (docs/studies/python_overhead.md)
-        self.rpm = np.array([rpm for rpm, _ in raw])
-        self._by_speed = [{k: np.array(f) for k, f in frequencies.items()} for _, frequencies in raw]
+        self.rpm = np.array([speed[0] for speed in raw])
+        self._by_speed = [{k: np.array(f) for k, f in speed[1].items()} for speed in raw]
+        self._shapes = [dict(speed[2]) for speed in raw]
         self.nodal_diameters = sorted(self._by_speed[0])
+        branches, resonances = campbell
+        self.branches = [CampbellBranch(b["nd"], b["family"], b["rpm"], b["hz"], b["worst_mac"]) for b in branches]
+        self.resonances = {key: np.array([r[key] for r in resonances], dtype=int if key in ("eo", "nd", "family")
+                                         else float) for key in ("eo", "nd", "family", "rpm", "hz")}
 
     def frequencies_hz(self, nodal_diameter):
+        self._check(nodal_diameter)
+        return np.array([speed[nodal_diameter] for speed in self._by_speed])
+
+    def shapes(self, nodal_diameter):
+        self._check(nodal_diameter)
+        if not self._shapes[0]:
+            raise InputError("shapes", "were not kept: modal_sweep(..., shapes=True)")
+        return np.array([speed[nodal_diameter] for speed in self._shapes])
+
+    def _check(self, nodal_diameter):
         if nodal_diameter not in self._by_speed[0]:
             raise InputError("nodal_diameter", f"{nodal_diameter} was not computed ({self.nodal_diameters})")
-        return np.array([speed[nodal_diameter] for speed in self._by_speed])
 
     def __repr__(self):
         return f"<ModalSweep: {len(self.rpm)} speeds, ND {self.nodal_diameters}>"
 
 
 def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material=Material(), sectors=None,
-                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0):
+                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0, shapes=False,
+                engine_orders=None):
     """The cyclic modes of the sector at each speed on its centrifugal prestress, as a modal
     scene (docs/scenes.md: modal and cyclic keys): configuration fixed_shroud pairs the disc's
     and the shroud's side faces, cantilever the disc's only; nodal_diameters None: all of
-    0..N/2; threads 0: the cores this process may use."""
+    0..N/2; threads 0: the cores this process may use; shapes: keep the mode shapes as arrays
+    (modes x nodes x 3 per speed and nodal diameter: large for a fine mesh); engine_orders:
+    the resonances' (None: 1..N, as a scene's diagrams)."""
     if configuration not in ("fixed_shroud", "cantilever"):
         raise InputError("configuration", f"{configuration!r}: must be 'fixed_shroud' or 'cantilever'")
     spec = _core.ModalSweepSpec()
@@ -123,6 +157,11 @@ def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material
         raise InputError("speeds_rpm", "speeds must be non-negative and increase")
     spec.nodal_diameters = [] if nodal_diameters is None else [int(k) for k in nodal_diameters]
     spec.modes_per_nd, spec.prestress, spec.threads = int(modes_per_nd), prestress, int(threads)
+    spec.shapes = bool(shapes)
+    if engine_orders is not None:
+        spec.engine_orders = [int(eo) for eo in engine_orders]
+        if min(spec.engine_orders, default=0) < 1:
+            raise InputError("engine_orders", "must be positive integers")
     return ModalSweep(*_core.modal_sweep(mesh._core, spec))
 
 
