@@ -57,17 +57,13 @@ py::array_t<std::complex<double>> shapesOf(const cyclic::ModeShapes& shapes) {
   return out;
 }
 
-// The Campbell diagram's branches and the engine orders' crossings with them.
-py::tuple campbellOf(const std::vector<cyclic::SpeedModes>& speeds, int sectors, std::vector<int> engineOrders) {
+// The Campbell diagram's branches and the engine orders' crossings with them, as arrays.
+py::tuple campbellOf(const std::vector<post::Branch>& tracked, const std::vector<post::Resonance>& crossings) {
   py::list branches, resonances;
-  if (speeds.size() < 2) return py::make_tuple(branches, resonances);
-  if (engineOrders.empty())
-    for (int eo = 1; eo <= sectors; ++eo) engineOrders.push_back(eo);
-  const auto tracked = post::trackFamilies(speeds);
   for (const auto& b : tracked)
     branches.append(py::dict(py::arg("nd") = b.nd, py::arg("family") = b.family, py::arg("rpm") = py::array(py::cast(b.rpm)),
                              py::arg("hz") = py::array(py::cast(b.freqHz)), py::arg("worst_mac") = b.worstMac));
-  for (const auto& r : post::findResonances(tracked, sectors, engineOrders))
+  for (const auto& r : crossings)
     resonances.append(py::dict(py::arg("eo") = r.engineOrder, py::arg("nd") = r.nd, py::arg("family") = r.family,
                                py::arg("rpm") = r.rpm, py::arg("hz") = r.freqHz));
   return py::make_tuple(branches, resonances);
@@ -93,11 +89,22 @@ py::tuple modalSweep(const mesh::Mesh& mesh, const SweepSpec& s) {
   sweep.axis = axis;
   auto comm = environmentComm();
   std::vector<cyclic::SpeedModes> speeds;
-  Timer library;  // the calls as C++ makes them: what the Python layer adds is the rest
+  std::vector<post::Branch> tracked;
+  std::vector<post::Resonance> crossings;
+  // The calls as C++ makes them, the Campbell tracking with them as the modal scene's: what
+  // the Python layer adds is the rest.
+  Timer library;
   {
     py::gil_scoped_release release;
     const auto sector = cyclic::makeCyclicSector(mesh, s.sectors, axis, s.leftSets, s.rightSets);
     speeds = cyclic::solveModalSweep(mesh, sector, sweep, comm);
+    if (speeds.size() > 1) {  // a Campbell diagram needs a range of speeds
+      std::vector<int> orders = s.engineOrders;
+      if (orders.empty())
+        for (int eo = 1; eo <= s.sectors; ++eo) orders.push_back(eo);
+      tracked = post::trackFamilies(speeds);
+      crossings = post::findResonances(tracked, s.sectors, orders);
+    }
   }
   const double librarySeconds = library.seconds();
   py::list out;
@@ -110,7 +117,7 @@ py::tuple modalSweep(const mesh::Mesh& mesh, const SweepSpec& s) {
     }
     out.append(py::make_tuple(speed.rpm, byDiameter, shapes));
   }
-  return py::make_tuple(out, campbellOf(speeds, s.sectors, s.engineOrders), librarySeconds);
+  return py::make_tuple(out, campbellOf(tracked, crossings), librarySeconds);
 }
 
 }  // namespace
