@@ -11,16 +11,20 @@ headline peak.
     response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
                                             amplitude=20.0, harmonics_check_to=2)
     modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
+    peaks = cyclone.disc.follow_peak(response, "preload", (10000.0, 40000.0), values=8)
+    stress = cyclone.disc.peak_stress(response, fatigue="Ti-6Al-4V")
 
 Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
 
 import enum
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _core, arrays
 from .errors import InputError
+from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.disc's API)
+from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
 from .response import ForcedResponse
 
 
@@ -78,32 +82,66 @@ class Material:
     name: str = "titanium"
 
 
+@dataclass(frozen=True)
+class CampbellBranch:
+    """One family of one nodal diameter tracked over the speeds by MAC (campbell.csv's rows
+    of one nd and family): family from 1 in the order at the first speed; worst_mac the
+    lowest MAC along the tracking (low: the branch veered)."""
+
+    nd: int
+    family: int
+    rpm: np.ndarray
+    hz: np.ndarray
+    worst_mac: float
+
+
 class ModalSweep:
     """The sector's natural frequencies per speed and nodal diameter (a Campbell diagram's
     data): rpm (speeds), nodal_diameters, and frequencies_hz(k): speeds x modes (Hz,
-    ascending; each member of a travelling-wave pair listed, as frequencies.csv)."""
+    ascending; each member of a travelling-wave pair listed, as frequencies.csv);
+    shapes(k) (with modal_sweep(shapes=True)): speeds x modes x nodes x 3, complex (the real
+    part copy a, the imaginary part copy b; real for ND 0 and N/2), as modes_<rpm>rpm.exo;
+    over two or more speeds branches (CampbellBranch, campbell.csv) and resonances: the
+    engine orders' crossings {eo, nd, family, rpm, hz: arrays} (resonances.csv)."""
 
-    def __init__(self, raw, library_seconds):
+    def __init__(self, raw, campbell, library_seconds):
         self.library_seconds = library_seconds  # the library's calls alone (docs/studies/python_overhead.md)
-        self.rpm = np.array([rpm for rpm, _ in raw])
-        self._by_speed = [{k: np.array(f) for k, f in frequencies.items()} for _, frequencies in raw]
+        self.rpm = np.array([speed[0] for speed in raw])
+        self._by_speed = [{k: np.array(f) for k, f in speed[1].items()} for speed in raw]
+        self._shapes = [dict(speed[2]) for speed in raw]
         self.nodal_diameters = sorted(self._by_speed[0])
+        branches, resonances = campbell
+        self.branches = [CampbellBranch(b["nd"], b["family"], b["rpm"], b["hz"], b["worst_mac"]) for b in branches]
+        self.resonances = {key: np.array([r[key] for r in resonances], dtype=int if key in ("eo", "nd", "family")
+                                         else float) for key in ("eo", "nd", "family", "rpm", "hz")}
 
     def frequencies_hz(self, nodal_diameter):
+        self._check(nodal_diameter)
+        return np.array([speed[nodal_diameter] for speed in self._by_speed])
+
+    def shapes(self, nodal_diameter):
+        self._check(nodal_diameter)
+        if not self._shapes[0]:
+            raise InputError("shapes", "were not kept: modal_sweep(..., shapes=True)")
+        return np.array([speed[nodal_diameter] for speed in self._shapes])
+
+    def _check(self, nodal_diameter):
         if nodal_diameter not in self._by_speed[0]:
             raise InputError("nodal_diameter", f"{nodal_diameter} was not computed ({self.nodal_diameters})")
-        return np.array([speed[nodal_diameter] for speed in self._by_speed])
 
     def __repr__(self):
         return f"<ModalSweep: {len(self.rpm)} speeds, ND {self.nodal_diameters}>"
 
 
 def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material=Material(), sectors=None,
-                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0):
+                fixed_node_sets=("bore",), configuration="fixed_shroud", prestress="linear", threads=0, shapes=False,
+                engine_orders=None):
     """The cyclic modes of the sector at each speed on its centrifugal prestress, as a modal
     scene (docs/scenes.md: modal and cyclic keys): configuration fixed_shroud pairs the disc's
     and the shroud's side faces, cantilever the disc's only; nodal_diameters None: all of
-    0..N/2; threads 0: the cores this process may use."""
+    0..N/2; threads 0: the cores this process may use; shapes: keep the mode shapes as arrays
+    (modes x nodes x 3 per speed and nodal diameter: large for a fine mesh); engine_orders:
+    the resonances' (None: 1..N, as a scene's diagrams)."""
     if configuration not in ("fixed_shroud", "cantilever"):
         raise InputError("configuration", f"{configuration!r}: must be 'fixed_shroud' or 'cantilever'")
     spec = _core.ModalSweepSpec()
@@ -119,6 +157,11 @@ def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material
         raise InputError("speeds_rpm", "speeds must be non-negative and increase")
     spec.nodal_diameters = [] if nodal_diameters is None else [int(k) for k in nodal_diameters]
     spec.modes_per_nd, spec.prestress, spec.threads = int(modes_per_nd), prestress, int(threads)
+    spec.shapes = bool(shapes)
+    if engine_orders is not None:
+        spec.engine_orders = [int(eo) for eo in engine_orders]
+        if min(spec.engine_orders, default=0) < 1:
+            raise InputError("engine_orders", "must be positive integers")
     return ModalSweep(*_core.modal_sweep(mesh._core, spec))
 
 
@@ -126,8 +169,9 @@ class ReducedModels:
     """One reduced model per nodal diameter; natural_hz[k]: the cantilevered sector's
     distinct natural frequencies at nodal diameter k (Hz); reused/built: from the cache or not."""
 
-    def __init__(self, core):
+    def __init__(self, core, spec, cache):
         self._core = core
+        self._spec, self._cache = spec, cache  # what the peak's studies build again (over the speed)
         self.nodal_diameters = core.nodal_diameters
         self.natural_hz = {k: np.array(v) for k, v in core.natural_hz.items()}
         self.files = dict(core.files)
@@ -158,7 +202,7 @@ def reduced_models(mesh, rpm, nodal_diameters, cache_directory="", material=Mate
     spec.set_prestress(prestress)
     spec.fixed_node_sets, spec.retained_node_sets = list(fixed_node_sets), list(retained_node_sets)
     return ReducedModels(_core.disc_reduced_models(mesh._core, spec, [int(k) for k in nodal_diameters],
-                                                   str(cache_directory)))
+                                                   str(cache_directory)), spec, str(cache_directory))
 
 
 class Convergence(enum.Enum):
@@ -191,6 +235,8 @@ class DiscResponse:
     to_hz: float
     warnings: list
     library_seconds: float  # the library's call alone (the binding's overhead: docs/studies/python_overhead.md)
+    _reference: object = field(default=None, repr=False)  # the curve as the library keeps it (follow_peak starts from it)
+    _models: object = field(default=None, repr=False)
 
 
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
@@ -222,4 +268,4 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
         headline=Headline(Convergence(h["convergence"]), h["value"], h["hz"], h["max_harmonic"], h["change"], h["text"]),
         estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]),
-        library_seconds=raw["library_seconds"])
+        library_seconds=raw["library_seconds"], _reference=raw["reference"], _models=models)

@@ -9,6 +9,7 @@ import numpy as np
 from . import _core, arrays
 from .elements import Element
 from .errors import InputError
+from .peaks import FollowedPeaks
 from .response import ForcedResponse, trace_options
 
 
@@ -197,6 +198,39 @@ class HarmonicBalance:
         settings = trace_options(self, start, end, **options)
         return ForcedResponse(_core.forced_response(self._core(), settings), self.harmonics, self.num_dofs,
                               settings.output_dofs)
+
+    def follow_peak(self, parameter, values, band, locate_optimum=True, **options):
+        """The resonance peak followed over `values` of `parameter` ("force_scale",
+        "damping_scale" or "<element name>/<parameter>", as forced_response's), a peak
+        search per value instead of a frequency curve per value: at values[0] the largest
+        peak of a sweep of `band` = (from, to) in rad/s, then each value's from the one
+        before; where the followed peak vanishes, the band's largest (marked jump).
+        values: strictly monotone, at least 2. locate_optimum: the smallest peak located
+        between its grid neighbours (golden section; not over the force scale, whose peak
+        grows with it). options: forced_response's force_scale, output_dofs (the first one's
+        max |x(t)| is the peak), engine and tolerance (the band's sweep and the searches)
+        and steps (the sweep's). Returns a FollowedPeaks; its end says how it ended."""
+        if parameter == "omega":
+            raise InputError("parameter", "the peak is followed over a parameter other than the frequency "
+                                          "(force_scale, damping_scale or '<element name>/<parameter>')")
+        values = np.atleast_1d(arrays.dense(values, "values"))
+        steps = np.diff(values)
+        if values.ndim != 1 or len(values) < 2 or not (np.all(steps > 0) or np.all(steps < 0)):
+            raise InputError("values", "must be at least 2 values, strictly increasing or decreasing")
+        try:
+            low, high = (arrays.finite_number(b, "band") for b in band)
+        except (TypeError, ValueError):
+            raise InputError("band", f"must be (from, to) in rad/s, got {band!r}") from None
+        if not 0 < low < high:
+            raise InputError("band", f"({low}, {high}): must be (from, to) with 0 < from < to (rad/s)")
+        for key in ("omega", "stability", "harmonics_check"):
+            if key in options:
+                raise InputError(key, "is not an option of the peak following (the frequency is the band's)")
+        settings = trace_options(self, values[0], values[-1], parameter=parameter, omega=np.sqrt(low * high),
+                                 stability="never", harmonics_check=False, **options)
+        raw = _core.follow_peak(self._core(), settings, [float(v) for v in values], low, high,
+                                bool(locate_optimum) and parameter != "force_scale")
+        return FollowedPeaks(raw, self.num_dofs, self.num_coefficients)
 
     def _core(self):
         if self._built is None:

@@ -16,11 +16,17 @@ void bindElements(pybind11::module_& m);
 void bindMatrixSystem(pybind11::module_& m);
 /// The forced response traced over the frequency or the force scale, as arrays.
 void bindForcedResponse(pybind11::module_& m);
+/// A matrix system's resonance peak followed over a parameter, as arrays.
+void bindPeakFollowing(pybind11::module_& m);
 /// MPI and Kokkos ended at the interpreter's exit (ProgramEnvironment.hpp starts them).
 void bindEnvironment(pybind11::module_& m);
 /// The cyclic modes of a sector over speeds (Campbell data).
 void bindModalSweep(pybind11::module_& m);
 /// The bladed disc's chain: the sector's mesh, reduced models, friction forced response.
 void bindDisc(pybind11::module_& m);
+/// The disc's peak followed over a parameter from a response's curve.
+void bindDiscPeakFollowing(pybind11::module_& m);
+/// The sector's stresses and fatigue margin at the disc's peak.
+void bindDiscPeakStress(pybind11::module_& m);
 
 }  // namespace cyclone::python

@@ -1,7 +1,8 @@
 // The bladed disc's chain as the disc scenes run it (drivers/src/DiscSceneReaders.cpp,
 // DiscStages.cpp): the built-in shrouded sector or a mesh file, the reduced models per
 // nodal diameter (cached in HDF5), and the friction-damped forced response with its
-// headline. The specs are the library's structs with the scenes' defaults; the Python
+// headline (its curve kept, DiscReference.hpp, for the peak following and the stresses).
+// The specs are the library's structs with the scenes' defaults; the Python
 // layer (python/cyclone/disc.py) fills them by keyword.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -14,6 +15,7 @@
 
 #include "Bindings.hpp"
 #include "CurveArrays.hpp"
+#include "DiscReference.hpp"
 #include "Names.hpp"
 #include "ProgramEnvironment.hpp"
 #include "cyclone/core/Error.hpp"
@@ -136,6 +138,8 @@ void bindReducedModels(py::module_& m) {
 }
 
 void bindDiscResponse(py::module_& m) {
+  py::class_<DiscReference, std::shared_ptr<DiscReference>>(m, "DiscReference",
+                                                            "A disc response's curve, kept for the peak's studies");
   using S = disc::DiscResponseSpec;
   py::class_<S>(m, "DiscResponseSpec")
       .def(py::init<>())
@@ -162,8 +166,8 @@ void bindDiscResponse(py::module_& m) {
           });
   m.def(
       "disc_forced_response",
-      [](const mesh::Mesh& mesh, const disc::DiscReducedModels& models, const S& spec, double fromHz, double toHz,
-         int family, const std::string& stability, int harmonicsCheckTo) {
+      [](std::shared_ptr<mesh::Mesh> mesh, std::shared_ptr<disc::DiscReducedModels> models, const S& spec,
+         double fromHz, double toHz, int family, const std::string& stability, int harmonicsCheckTo) {
         disc::DiscSweepOptions sweep;  // the scenes' defaults: the disc's continuation, LOCA retracing
         sweep.fromHz = fromHz, sweep.toHz = toHz, sweep.family = family;
         sweep.stability = stabilityFromName(stability);
@@ -172,7 +176,7 @@ void bindDiscResponse(py::module_& m) {
         Timer library;  // the call as C++ makes it: what the Python layer adds is the rest
         {
           py::gil_scoped_release release;
-          r = disc::solveDiscForcedResponse(mesh, models, spec, sweep);
+          r = disc::solveDiscForcedResponse(*mesh, *models, spec, sweep);
         }
         const double librarySeconds = library.seconds();
         py::dict d;
@@ -186,6 +190,8 @@ void bindDiscResponse(py::module_& m) {
         d["harmonics"] = r.setup.system->aft().harmonics().harmonics();
         d["num_dofs"] = r.setup.system->numDofs();
         d["library_seconds"] = librarySeconds;
+        // Kept for the calls that start from this curve (the peak following, the stresses at the peak).
+        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r)});
         return d;
       },
       py::arg("mesh"), py::arg("models"), py::arg("spec"), py::arg("from_hz"), py::arg("to_hz"), py::arg("family"),

@@ -9,7 +9,10 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindElements(m);
   cyclone::python::bindMatrixSystem(m);
   cyclone::python::bindForcedResponse(m);
+  cyclone::python::bindPeakFollowing(m);
   cyclone::python::bindEnvironment(m);
   cyclone::python::bindModalSweep(m);
   cyclone::python::bindDisc(m);
+  cyclone::python::bindDiscPeakFollowing(m);
+  cyclone::python::bindDiscPeakStress(m);
 }

@@ -142,3 +142,13 @@ def test_an_element_across_the_sector_boundary_needs_a_cyclic_system():
     with pytest.raises(cyclone.InputError) as error:
         chain(np.eye(2), K, None).add_element(cyclone.CubicSpring(k3=1.0), dofs=[0], W_next=[1.0, 0.0])
     assert error.value.key == "W_next"
+
+
+@pytest.mark.parametrize("call", [lambda r: cyclone.disc.follow_peak(r, "preload", (1.0, 2.0)),
+                                  lambda r: cyclone.disc.peak_stress(r)])
+def test_the_discs_peak_studies_need_a_disc_response(call):
+    # A matrix system's curve is not a disc response: named, not an AttributeError deep inside.
+    curve = chain(np.eye(2), K, 0.02 * K).forced_response(0.3, 2.5, harmonics_check=False)
+    with pytest.raises(cyclone.InputError) as error:
+        call(curve)
+    assert error.value.key == "response"

@@ -1,10 +1,13 @@
 """The disc chain from Python against the cyclone program on the same disc: the built-in
 sector at mesh size 12, 10 000 rpm, engine order 3, harmonics 0..1 checked with 2, a
-20 kN preload over the shroud face, 20 N at mid-blade. The program runs the scene and
-writes its reduced models; Python builds the same models' spec, so it reuses the
-program's three files (their names are digests of every input), and traces the same
-curve: every point's frequency and max |x(t)| to 1e-10, and the headline peak of
-harmonics 0..2 as the program's (its CSV's 10 digits). Label scene: about 20 s."""
+20 kN preload over the shroud face, 20 N at mid-blade, the peak followed over the preload
+from 10 to 40 kN. The program runs the scene once and writes its reduced models; Python
+builds the same models' spec, so it reuses the program's three files (their names are
+digests of every input), and traces the same curve: every point's frequency and
+max |x(t)| to 1e-10, and the headline peak of harmonics 0..2 as the program's (its CSV's
+10 digits); then follows the same peak: every value's peak and frequency as the program's
+peak_preload.csv (10 digits); and the stresses and fatigue margin at the peak, every node as
+the program's disc_peak_stress.csv (8 digits). Label scene: about 20 s."""
 
 import numpy as np
 import pytest
@@ -14,7 +17,7 @@ import program
 
 SCENE = """cyclone:
   analysis: [disc_response]
-""" + program.SECTOR + """  loads: {speed_rpm: 10000.0}
+""" + program.SECTOR.replace("rho: 4.507e-9}", "rho: 4.507e-9, fatigue: {data: Ti-6Al-4V}}") + """  loads: {speed_rpm: 10000.0}
   reduced_model: {check_frequencies: 0}
   disc_response:
     engine_order: 3
@@ -22,21 +25,33 @@ SCENE = """cyclone:
     harmonics_check_to: 2
     contact: {preload: 20000.0}
     excitation: {amplitude: 20.0}
+    peak_studies:
+      preload: {range: [10000.0, 40000.0], values: 4}
+    peak_stress: {animation_steps: 8}
 """
 
 
-@pytest.mark.disc
-def test_the_disc_response_equals_the_programs(cyclone_program, tmp_path):
-    out = program.run(cyclone_program, SCENE, tmp_path / "out")
-    expected, levels = program.read_csv(out / "disc_frc.csv"), program.read_csv(out / "disc_frc_harmonics.csv")
+@pytest.fixture(scope="module")
+def program_out(cyclone_program, tmp_path_factory):
+    return program.run(cyclone_program, SCENE, tmp_path_factory.mktemp("disc") / "out")
 
+
+@pytest.fixture(scope="module")
+def python_response(program_out):
     sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
     nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
     models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds,
-                                         cache_directory=out / "reduced_models")
+                                         cache_directory=program_out / "reduced_models")
     assert (models.reused, models.built) == (3, 0)  # the same inputs, so the program's files
-    response = cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
-                                            amplitude=20.0, harmonics_check_to=2)
+    return cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
+                                        amplitude=20.0, harmonics_check_to=2)
+
+
+@pytest.mark.disc
+def test_the_disc_response_equals_the_programs(program_out, python_response):
+    expected = program.read_csv(program_out / "disc_frc.csv")
+    levels = program.read_csv(program_out / "disc_frc_harmonics.csv")
+    response = python_response
     curve = response.curve
     assert curve.end is cyclone.BranchEnd.RANGE_END
     assert len(curve) == len(expected["omega_rad_s"]) > 20
@@ -53,3 +68,60 @@ def test_the_disc_response_equals_the_programs(cyclone_program, tmp_path):
     assert abs(response.headline.hz / float(levels["freq_hz"][top]) - 1) < 1e-9
     # The peak lies between the shroud's free and stuck resonances (the estimate's).
     assert response.estimate["free_hz"] < response.headline.hz < response.estimate["stuck_hz"] * 1.01
+
+
+@pytest.mark.disc
+def test_the_peak_over_the_preload_equals_the_programs(program_out, python_response):
+    expected = program.read_csv(program_out / "peak_preload.csv")
+    peaks = cyclone.disc.follow_peak(python_response, "preload", (10000.0, 40000.0), values=4)
+    assert peaks.end is cyclone.PeakFollowingEnd.RANGE_END
+    assert peaks.reference_value == 20000.0
+    assert len(peaks) == len(expected["preload"]) >= 5  # 4 values in log and the response's 20 kN
+    number = lambda key: expected[key].astype(float)  # noqa: E731
+    # The CSV's 10 significant digits.
+    np.testing.assert_allclose(peaks.parameter, number("preload"), rtol=1e-9)
+    np.testing.assert_allclose(peaks.hz, number("peak_hz"), rtol=1e-9)
+    np.testing.assert_allclose(peaks.peak, number("peak_max_abs"), rtol=1e-9)
+    np.testing.assert_array_equal(peaks.jump.astype(int), expected["jump"].astype(int))
+    assert peaks.optimum == int(np.flatnonzero(expected["optimum"].astype(int))[0])
+    beyond = np.array([float(v) if v else -1.0 for v in expected["force_beyond_h"]])
+    np.testing.assert_allclose(peaks.force_beyond, beyond, rtol=1e-9)
+    # At the response's own preload the followed peak is the traced curve's (located on its path).
+    at_reference = int(np.flatnonzero(peaks.parameter == 20000.0)[0])
+    assert abs(peaks.peak[at_reference] / python_response.curve.peak.value - 1) < 1e-3
+
+
+@pytest.mark.disc
+def test_the_stresses_and_margin_at_the_peak_equal_the_programs(program_out, python_response):
+    expected = program.read_csv(program_out / "disc_peak_stress.csv")
+    stress = cyclone.disc.peak_stress(python_response, fatigue="Ti-6Al-4V")
+    # The CSV lists every node worst first (a stable sort by the safety factor).
+    order = np.argsort(stress.safety_factor, kind="stable")
+    np.testing.assert_array_equal(stress.node_ids[order], expected["node"].astype(int))
+    assert stress.critical == order[0] and stress.critical_node == int(expected["node"][0])
+    # Its 8 significant digits; a column's values near zero against the column's largest.
+    for column, values in [("x", stress.coordinates[:, 0]), ("y", stress.coordinates[:, 1]),
+                           ("z", stress.coordinates[:, 2]), ("mean_vm_signed", stress.mean_von_mises),
+                           ("alternating_vm", stress.alternating_von_mises),
+                           ("alternating_principal", stress.alternating_principal),
+                           ("max_vm", stress.max_von_mises), ("safety_factor", stress.safety_factor)]:
+        reference = expected[column].astype(float)
+        np.testing.assert_allclose(values[order], reference, rtol=1e-7, atol=1e-7 * abs(reference).max(),
+                                   err_msg=column)
+    # The margin is the modified Goodman-Haigh diagram's with Ti-6Al-4V's data sheet values
+    # (S_u 950, S_y 880, S_e 510 MPa), the mean held: at every node the allowable alternating
+    # stress S_e (1 - max(s_m, 0) / S_u), at most S_y - |s_m|, over the alternating stress.
+    assert (stress.material["ultimate_strength"], stress.material["yield_strength"],
+            stress.material["endurance_limit"]) == (950.0, 880.0, 510.0)
+    sm, sa = stress.mean_von_mises, stress.alternating_von_mises
+    allowed = np.maximum(np.minimum(510.0 * (1 - np.maximum(sm, 0) / 950.0), 880.0 - abs(sm)), 0)
+    moving = sa > 0  # a node without alternating stress has an infinite factor
+    assert moving.mean() > 0.9
+    np.testing.assert_allclose(stress.safety_factor[moving], allowed[moving] / sa[moving], rtol=1e-12)
+    # Strengths the Goodman line cannot have are refused naming the key, before any solve.
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.peak_stress(python_response, fatigue={"ultimate_strength": 500.0, "endurance_limit": 600.0})
+    assert error.value.key == "fatigue/endurance_limit"
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.peak_stress(python_response, fatigue={"ultimate": 500.0})
+    assert error.value.key == "fatigue"
