@@ -212,7 +212,10 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   // estimate (no stuck peak on its scan) is reported, not fatal.
   try {
     std::ostringstream text;
-    out.estimate = estimateDiscResonance(mesh, models, spec, options.family);
+    // The curve's own system where it has a preload (a second one only to close the
+    // contacts of one without).
+    out.estimate = spec.contact.preload > 0 ? estimateResonance(out.setup, models, options.family)
+                                            : estimateDiscResonance(mesh, models, spec, options.family);
     text << "family " << options.family << " at " << out.estimate->freeHz << " Hz with the shroud free, "
          << out.estimate->stuckHz << " Hz with the contacts stuck"
          << (spec.contact.preload > 0 ? "" : " (closed: no preload holds them so at rest)");
