@@ -4,6 +4,7 @@
 //   build/regression/hammering_curve [H (5)] [preload N (20)] [force N (20)] [from Hz (1380)]
 //                                    [to Hz (1520)] [max points (3000)] [samples (0: the rule)]
 //                                    [cache dir (disc_benchmark_models)] [points file ("")]
+//                                    [Newton tolerance (0: the disc's default)]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   const int samples = argc > 7 ? std::atoi(argv[7]) : 0;
   const std::string cache = argc > 8 ? argv[8] : "disc_benchmark_models";
   const std::string pointsFile = argc > 9 ? argv[9] : "";
+  const double tolerance = argc > 10 ? std::atof(argv[10]) : 0.0;
 
   mesh::ShroudedSectorParameters p;
   const auto mesh = mesh::generateShroudedSector(p);
@@ -41,6 +43,7 @@ int main(int argc, char** argv) {
   setup.continuation = disc::discContinuationOptions();
   setup.continuation.from = 1.0, setup.continuation.to = toHz / fromHz;
   setup.continuation.maxSteps = maxPoints;
+  if (tolerance > 0) setup.continuation.tolerance = tolerance;
   Timer timer;
   const auto start = response::findStartingPoint(setup);
   const auto problem = response::continuationProblem(setup);

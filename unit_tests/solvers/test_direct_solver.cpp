@@ -249,6 +249,25 @@ TEST(DirectSolver, UnconstrainedStiffnessIsReportedNotPositiveDefinite) {
   EXPECT_THROW(solvers::DirectSolver solver(*K), SolverError);
 }
 
+// The same free body as the travelling-wave pairs' real form (the Hermitian form of a
+// free sector's two-copy nodal diameter has its rigid-body modes): refused as the real
+// form is, not factored with a pivot of the rounding's size (the modal solver's
+// automatic shift then stayed at 0 and its vectors did not span the eigenvalues).
+TEST(DirectSolver, UnconstrainedTravellingWavePairsAreReportedNotPositiveDefinite) {
+  auto mesh = test_support::makeBoxMesh(1.0, 1.0, 2.0, 4, 4, 8, mesh::ElementType::Hex8);
+  fe::DofMap dofs(mesh.numNodes());
+  dofs.finalize();
+  fe::Assembler assembler(mesh, dofs, Teuchos::rcp(new Teuchos::SerialComm<int>));
+  const Eigen::MatrixXd Kd = toDense(*assembler.stiffness(fe::IsotropicElastic{}));
+  const auto comm = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  Eigen::MatrixXd Kr;
+  const auto K = rotatedPairedRealForm(Kd, comm, Kr);
+  EXPECT_THROW(solvers::DirectSolver real(*K), SolverError);
+  EXPECT_THROW(solvers::DirectSolver wave(*K, nullptr, 0.0, solvers::DirectSolver::Definiteness::Positive,
+                                          solvers::DirectSolver::Structure::TravellingWavePairs),
+               SolverError);
+}
+
 TEST(IterativeSolver, AgreesWithDirectSolve) {
   Cantilever c;
   auto K = c.assembler->stiffness(c.steel);

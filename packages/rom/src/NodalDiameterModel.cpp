@@ -315,9 +315,12 @@ StaticCompliance NodalDiameterModel::staticCompliance(double omega0, const Retai
     note << "sigma = omega0^2 = " << out.shift << " (rad/s)^2";
   }
   const bool definite = out.shift < modes.eigenvalues.front();
+  const bool paired = I.structure == solvers::ComplexDirectSolver::Structure::TravellingWavePairs;
   const solvers::DirectSolver solver(*I.op.K, I.op.M.get(), out.shift,
                                      definite ? solvers::DirectSolver::Definiteness::Positive
-                                              : solvers::DirectSolver::Definiteness::Indefinite);
+                                              : solvers::DirectSolver::Definiteness::Indefinite,
+                                     paired ? solvers::DirectSolver::Structure::TravellingWavePairs
+                                            : solvers::DirectSolver::Structure::General);
   out.matrix =
       I.retainedResponse(I.size(), [&](const linalg::MultiVector& B, linalg::MultiVector& X) { solver.solve(B, X); });
   out.matrix = 0.5 * (out.matrix + out.matrix.transpose()).eval();

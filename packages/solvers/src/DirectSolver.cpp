@@ -168,6 +168,14 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
         I.stats.nonzerosFactor = I.paired->factorNonzeros();
         I.stats.flops = I.paired->factorFlops();
         I.rcond = I.paired->reciprocalCondition();
+        // A singular H (a free sector's two-copy nodal diameter holds rigid-body modes)
+        // can factor with a last pivot of the rounding's size where the real form's
+        // factor fails: refused below 1e-14 of the largest pivot (a held sector's
+        // smallest is about 1e-4 of it on the default disc, and falls like the element
+        // size squared), so a caller's search for a shift is not misled.
+        if (I.rcond < 1e-14) failure = "CHOLMOD: the matrix (" + std::to_string(n) +
+                                       " equations) is singular to its rounding (pivots down to " +
+                                       std::to_string(I.rcond) + " of the largest): a free body";
       } catch (const SolverError& e) {
         failure = e.what();
       }

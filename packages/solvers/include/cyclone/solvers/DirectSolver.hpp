@@ -26,10 +26,11 @@ public:
   /// as H (CHOLMOD's complex supernodal LL^H, SparseCholesky): a factor of about half
   /// the memory and a quarter of the work of the real form's, whose 2 x 2 blocks fill
   /// four times the entries (a two-copy nodal diameter of the seed's 334k-DOF sector
-  /// passed 18 GB with the real form). Indefinite ones keep the real LDL^T. Not yet the
-  /// reduced models' and the modal solver's default: there a free sector's singular K
-  /// factored as H where the real form's factor was refused, and the automatic shift
-  /// failed (docs/studies/thesis_scale_chain.md).
+  /// passed 18 GB with the real form). Indefinite ones keep the real LDL^T. The reduced
+  /// models' modes and static correction use it (ModalOptions::structure); a singular H
+  /// (a free sector's rigid-body modes) is refused below a reciprocal condition of 1e-14,
+  /// where its factor could otherwise pass on a pivot of the rounding's size
+  /// (docs/studies/thesis_scale_chain.md).
   enum class Structure { General, TravellingWavePairs };
 
   /// Factors A - sigma*B (B may be null). Throws SolverError if not positive definite
