@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -48,17 +49,64 @@ struct NodalDiameterModel::Impl {
   // G^T solve(G) over columns first .. first + count - 1 of G, a block of columns at a time
   // (`solve(B, X)` fills X for the loads B): the memory of kBlock columns, not all.
   static constexpr Eigen::Index kBlock = 128;
+  //
+  // In a travelling-wave pair the real form's matrix [[P, -Q], [Q, P]] commutes with the
+  // pair's rotation J (x_a, x_b) -> (-x_b, x_a): where copy 1's unit loads are copy 0's
+  // rotated (copyOneRotation = +-1), their responses are copy 0's rotated, and only copy
+  // 0's columns are solved (half the static correction's solves on a two-copy nodal
+  // diameter: most of its model's time at the seed's mesh size).
+  int copyOneRotation = 0;
   template <class Solve>
   Eigen::MatrixXd retainedResponse(Eigen::Index count, const Solve& solve) const {
     Eigen::MatrixXd out(size(), count);
-    for (Eigen::Index first = 0; first < count; first += kBlock) {
-      const Eigen::Index n = std::min(kBlock, count - first);
+    const Eigen::Index nd = dofs.size();
+    const bool rotate = copyOneRotation != 0 && count == size() && op.copies == 2;
+    for (Eigen::Index first = 0; first < (rotate ? nd : count); first += kBlock) {
+      const Eigen::Index n = std::min(kBlock, (rotate ? nd : count) - first);
       const linalg::MultiVector B = loads(first, n);
       linalg::MultiVector X(map, std::size_t(n));
       solve(B, X);
       out.middleCols(first, n) = retained(X);
+      if (!rotate) continue;
+      rotatePairs(X, copyOneRotation);
+      out.middleCols(nd + first, n) = retained(X);
     }
     return out;
+  }
+  // X <- s J X, J (x_a, x_b) -> (-x_b, x_a) on every pair (2m, 2m + 1) of equations (one
+  // process: both of a pair are local).
+  static void rotatePairs(linalg::MultiVector& X, int s) {
+    for (std::size_t j = 0; j < X.getNumVectors(); ++j) {
+      auto x = X.getDataNonConst(j);
+      for (decltype(x.size()) i = 0; i + 1 < x.size(); i += 2) {
+        const double a = x[i], b = x[i + 1];
+        x[i] = -s * b, x[i + 1] = s * a;
+      }
+    }
+  }
+  // +1 or -1 where every copy-1 unit load is +-J of the same DOF's copy-0 one, on one
+  // process whose equations pair from 0; 0 otherwise (every column is then solved).
+  int findCopyOneRotation() const {
+    if (op.copies != 2 || map->getComm()->getSize() != 1 || map->getMinAllGlobalIndex() != 0 || !map->isContiguous() ||
+        map->getGlobalNumElements() % 2 != 0)
+      return 0;
+    const std::size_t nd = std::size_t(dofs.size());
+    for (int s : {1, -1}) {
+      bool all = true;
+      for (std::size_t k = 0; k < nd && all; ++k) {
+        std::map<long long, double> rotated, given;
+        for (const auto& [equation, value] : unitLoads[k]) {
+          const bool first = equation % 2 == 0;
+          rotated[first ? equation + 1 : equation - 1] += first ? s * value : -s * value;
+        }
+        for (const auto& [equation, value] : unitLoads[nd + k]) given[equation] += value;
+        if (rotated.size() != given.size()) all = false;
+        for (auto a = rotated.begin(), b = given.begin(); all && a != rotated.end(); ++a, ++b)
+          all = a->first == b->first && std::abs(a->second - b->second) <= 1e-14 * std::abs(a->second);
+      }
+      if (all) return s;
+    }
+    return 0;
   }
 
   // G^T X: every column of X seen at the retained DOFs (along each DOF's unit vector).
@@ -105,6 +153,7 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
           if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
             I.unitLoads[std::size_t(c * nd + k)].emplace_back(term.equation, axis[d] * term.coefficient);
     }
+  if (I.structure == solvers::ComplexDirectSolver::Structure::TravellingWavePairs) I.copyOneRotation = I.findCopyOneRotation();
   if (!problem.loads.empty()) {
     I.F = Teuchos::rcp(new linalg::MultiVector(map, problem.loads.size()));
     for (std::size_t p = 0; p < problem.loads.size(); ++p) {
@@ -272,6 +321,18 @@ RetainedModes NodalDiameterModel::modes(int distinct, double shift) const {
   RetainedModes out;
   out.copies = I.op.copies;
   out.eigenvalues = result.eigenvalues;
+  // A two-copy nodal diameter's modes come in travelling-wave pairs of one eigenvalue;
+  // the solver's two Ritz values of a pair differ by its accuracy (up to 3e-10 of it on
+  // the built-in sector), and the realization of the pair as one travelling wave
+  // (SectorReceptance) takes their mean: both take it, so the model's compliance and its
+  // modal realization are one model.
+  if (out.copies == 2)
+    for (std::size_t j = 0; j + 1 < out.eigenvalues.size(); ++j) {
+      const double a = out.eigenvalues[j], b = out.eigenvalues[j + 1];
+      const bool alone = (j == 0 || std::abs(a - out.eigenvalues[j - 1]) > 1e-8 * std::abs(a)) &&
+                         (j + 2 >= out.eigenvalues.size() || std::abs(out.eigenvalues[j + 2] - b) > 1e-8 * std::abs(b));
+      if (alone && std::abs(b - a) <= 1e-8 * std::abs(a)) out.eigenvalues[j] = out.eigenvalues[j + 1] = 0.5 * (a + b), ++j;
+    }
   out.shapes = I.retained(*result.modes);
   if (!I.F.is_null()) out.loads = transposeProduct(*result.modes, *I.F);
   out.seconds = timer.seconds();
