@@ -268,6 +268,24 @@ TEST(DirectSolver, UnconstrainedTravellingWavePairsAreReportedNotPositiveDefinit
                SolverError);
 }
 
+// A Hermitian form whose smallest pivot is of the rounding's size (a rigid-body mode
+// left by rounding) is refused by the paired path's condition bound (1e-14), which CHOLMOD
+// alone passes; a well-conditioned one is factored.
+TEST(DirectSolver, TravellingWavePairsSingularToRoundingAreRefused) {
+  const auto comm = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  Eigen::MatrixXd P = Eigen::MatrixXd::Identity(6, 6), Pr;
+  P(5, 5) = 1e-17;
+  const auto nearlySingular = rotatedPairedRealForm(P, comm, Pr);
+  EXPECT_THROW(solvers::DirectSolver wave(*nearlySingular, nullptr, 0.0, solvers::DirectSolver::Definiteness::Positive,
+                                          solvers::DirectSolver::Structure::TravellingWavePairs),
+               SolverError);
+  P(5, 5) = 1e-6;
+  const auto conditioned = rotatedPairedRealForm(P, comm, Pr);
+  const solvers::DirectSolver wave(*conditioned, nullptr, 0.0, solvers::DirectSolver::Definiteness::Positive,
+                                   solvers::DirectSolver::Structure::TravellingWavePairs);
+  EXPECT_NEAR(wave.reciprocalCondition(), 1e-6, 1e-12);
+}
+
 TEST(IterativeSolver, AgreesWithDirectSolve) {
   Cantilever c;
   auto K = c.assembler->stiffness(c.steel);
