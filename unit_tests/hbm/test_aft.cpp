@@ -97,6 +97,27 @@ TEST(Aft, CoefficientsFromTimeIsTheProjection) {
   }
 }
 
+
+// Columns projected at once (a Jacobian's sensitivity columns, written into a block of a
+// larger matrix): each equals the dense projection of that column, and nothing outside
+// the block is touched.
+TEST(Aft, ColumnsProjectedIntoABlockAreTheDenseProjection) {
+  unsigned seed = 40;
+  for (const Case& c : cases()) {
+    const Aft aft(c.set, c.samples);
+    const int nc = aft.numCoefficients(), k = 5;
+    Eigen::MatrixXd samples(c.samples, k);
+    for (int j = 0; j < k; ++j) samples.col(j) = randomCoefficients(c.samples, seed++);
+    Eigen::MatrixXd target = Eigen::MatrixXd::Constant(3 * nc, k + 2, 7.0);
+    aft.toFrequencyColumns(samples, target.block(nc, 1, nc, k));
+    EXPECT_LT((target.block(nc, 1, nc, k) - aft.coefficientsFromTime() * samples).cwiseAbs().maxCoeff(), 1e-13);
+    target.block(nc, 1, nc, k).setConstant(7.0);
+    EXPECT_EQ(target, Eigen::MatrixXd::Constant(3 * nc, k + 2, 7.0)) << "N = " << c.samples;
+  }
+  const Aft aft(HarmonicSet::upTo(3), 16);
+  Eigen::MatrixXd wrong(aft.numCoefficients(), 2);
+  EXPECT_THROW(aft.toFrequencyColumns(Eigen::MatrixXd::Zero(15, 2), wrong), cyclone::Error);
+}
 TEST(Aft, DerivativeMatrixMatchesAnalyticDerivative) {
   unsigned seed = 30;
   for (const Case& c : cases()) {

@@ -118,6 +118,16 @@ void Aft::toFrequency(const double* samples, double* coefficients) const {
   }
 }
 
+void Aft::toFrequencyColumns(const Eigen::Ref<const Eigen::MatrixXd>& samples,
+                             Eigen::Ref<Eigen::MatrixXd> coefficients) const {
+  if (samples.rows() != n_ || coefficients.rows() != numCoefficients() || coefficients.cols() != samples.cols())
+    throw Error("Aft::toFrequencyColumns: " + std::to_string(samples.rows()) + " x " + std::to_string(samples.cols()) +
+                " samples onto " + std::to_string(coefficients.rows()) + " x " + std::to_string(coefficients.cols()) +
+                " coefficients (expected " + std::to_string(n_) + " and " + std::to_string(numCoefficients()) + " rows)");
+  // Columns of a Ref are contiguous (inner stride 1): each is one transform's input and output.
+  for (Eigen::Index j = 0; j < samples.cols(); ++j) toFrequency(samples.col(j).data(), coefficients.col(j).data());
+}
+
 Eigen::VectorXd Aft::toTime(const Eigen::VectorXd& coefficients) const {
   if (coefficients.size() != numCoefficients())
     throw InputError("Aft::toTime", "expected " + std::to_string(numCoefficients()) + " coefficients, got " +

@@ -34,6 +34,14 @@ public:
   /// projection; the exact inverse of toTime for band-limited signals).
   void toFrequency(const double* samples, double* coefficients) const;
 
+  /// coefficients = P samples for k sampled signals at once (samples N x k, coefficients
+  /// nc x k; any outer strides): one FFT per column, N log N where the dense product
+  /// costs N nc. The contacts' coefficient Jacobians are such projections of their
+  /// sampled force sensitivities, one column per coefficient of the motion: at tens of
+  /// harmonics the dense product was most of a Jacobian's time. No allocation.
+  void toFrequencyColumns(const Eigen::Ref<const Eigen::MatrixXd>& samples,
+                          Eigen::Ref<Eigen::MatrixXd> coefficients) const;
+
   /// Allocating conveniences.
   Eigen::VectorXd toTime(const Eigen::VectorXd& coefficients) const;
   Eigen::VectorXd toFrequency(const Eigen::VectorXd& samples) const;
