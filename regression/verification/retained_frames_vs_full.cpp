@@ -16,6 +16,7 @@
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -260,5 +261,74 @@ TEST(RetainedFrames, BadFramesAndDirectionsAreNamed) {
     ADD_FAILURE() << "a node retained with two frames was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "retained/contact_again") << e.what();
+  }
+}
+
+// Retained means: the contact nodes as two weighted means (a left-face pair and a
+// right-face pair, as a contact patch's mean motion of each side), the mid-blade node as
+// itself. The reference is again the xyz model's compliance turned by the test: the
+// mean's column of T holds its weights at its nodes' rows. Against it the full FE model
+// at the means (its loads spread by the weights), its static compliance (on this two-copy
+// nodal diameter, copy 1's loads solved as copy 0's rotated) and the hybrid model; Guyan
+// refuses a mean (a boundary DOF is one unknown).
+TEST(RetainedFrames, MeansOfNodesAreTheWeightedCompliance) {
+  const auto& ref = reference();
+  const auto& s = ref.sector;
+  const auto comm = Tpetra::getDefaultComm();
+  const auto& contact = s.mesh.nodeSet("rom_contact");  // left, left, right, right
+  ASSERT_EQ(contact.size(), 4u);
+  std::vector<rom::RetainedMean> means{{"left pair", {contact[0], contact[1]}, {0.25, 0.75}},
+                                       {"right pair", {contact[2], contact[3]}, {0.6, 0.4}}};
+  auto problem = s.problem;
+  problem.retainedNodeSets = {"mid_blade"};
+  problem.retainedMeans = means;
+  const rom::NodalDiameterModel meaned(s.mesh, s.sector, problem, comm);
+  ASSERT_EQ(meaned.copies(), 2);
+  ASSERT_EQ(meaned.size(), 2 * (3 + 2 * 3));
+
+  // T from the sets and weights: the xyz model retains rom_contact's nodes then mid_blade's.
+  const auto& nodes = ref.xyz->retainedNodes();
+  const auto nn = Eigen::Index(nodes.size());
+  const auto row = [&](mesh::Index node, int d, int c) {
+    const auto i = Eigen::Index(std::find(nodes.begin(), nodes.end(), node) - nodes.begin());
+    EXPECT_LT(i, nn);
+    return (c * nn + i) * 3 + d;
+  };
+  const Eigen::Index perCopy = meaned.size() / 2;
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(ref.xyz->size(), meaned.size());
+  for (int c = 0; c < 2; ++c) {
+    Eigen::Index col = c * perCopy;
+    for (int d = 0; d < 3; ++d) T(row(s.mesh.nodeSet("mid_blade").front(), d, c), col++) = 1;
+    for (const auto& m : means)
+      for (int d = 0; d < 3; ++d, ++col)
+        for (std::size_t i = 0; i < m.nodes.size(); ++i) T(row(m.nodes[i], d, c), col) = m.weights[i];
+  }
+
+  Timer timer;
+  double full = relativeError(meaned.zeroFrequencyCompliance(), T.transpose() * ref.xyz->zeroFrequencyCompliance() * T);
+  for (std::size_t i : {std::size_t(0), std::size_t(2), std::size_t(6)})
+    full = std::max(full, relativeError(meaned.compliance(ref.band[i]), T.transpose() * ref.compliance[i] * T));
+  const auto modes = meaned.modes(20);
+  const rom::HybridFrfModel hybrid(modes, meaned.staticCompliance(0.0, modes), kEta);
+  const auto truncation = rom::HybridFrfModel::modalTruncation(modes, kEta);
+  const double hybridError = worstError(hybrid, ref, T), truncationError = worstError(truncation, ref, T);
+  const double hybridZero = relativeError(hybrid.zeroFrequencyCompliance(), T.transpose() * ref.xyz->zeroFrequencyCompliance() * T);
+  std::printf("retained means (%ld DOFs): full FE against T^T A_xyz T %.3e; hybrid 20 modes %.3e (at zero frequency "
+              "%.3e), truncation %.3e (%.1f s)\n",
+              long(meaned.size()), full, hybridError, hybridZero, truncationError, timer.seconds());
+  EXPECT_LT(full, 1e-9);
+  EXPECT_LT(hybridZero, 1e-10);
+  EXPECT_LT(hybridError, 1e-3);
+  EXPECT_GT(truncationError, 10 * hybridError);
+  EXPECT_THROW(rom::reduceOntoRetainedDofs(meaned, 0), InputError);
+
+  // A mean's weights are checked, naming it.
+  auto bad = problem;
+  bad.retainedMeans[1].weights = {0.5, -0.5};
+  try {
+    rom::NodalDiameterModel(s.mesh, s.sector, bad, comm);
+    ADD_FAILURE() << "a negative weight was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("retained/means/right pair"), std::string::npos) << e.what();
   }
 }

@@ -86,3 +86,36 @@ TEST(RomRetainedDofs, BadInputIsNamed) {
   EXPECT_EQ(whereOf(mesh, {"tip", "root"}, {{"root", with({0})}}), "retained/root");
   EXPECT_THROW(rom::retainedDofs(mesh, {"missing"}, {}), InputError);
 }
+
+// Means come after the sets' nodes, in x, y, z; a DOF reads its nodes by their weights.
+TEST(RomRetainedDofs, MeansFollowTheNodesAndReadTheirWeights) {
+  const mesh::Mesh mesh = fourNodes();
+  const auto dofs = rom::retainedDofs(mesh, {"contact"}, {}, {{"patch", {0, 3}, {0.25, 0.75}}});
+  ASSERT_EQ(dofs.size(), 6);
+  EXPECT_EQ(dofs.mean(2), nullptr);
+  ASSERT_NE(dofs.mean(3), nullptr);
+  EXPECT_EQ(dofs.mean(3)->name, "patch");
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_EQ(dofs.dofs[std::size_t(3 + d)], std::make_pair(1, d));
+    EXPECT_EQ(dofs.axis(3 + d), Eigen::Vector3d::Unit(d));
+  }
+  std::vector<Eigen::Vector3d> u(4, Eigen::Vector3d::Zero());
+  u[0] = {4, 8, 12}, u[2] = {1, 2, 3}, u[3] = {-4, 0, 4};
+  EXPECT_DOUBLE_EQ(dofs.read(1, u), 2.0);                       // node 2's y
+  EXPECT_DOUBLE_EQ(dofs.read(5, u), 0.25 * 12 + 0.75 * 4);      // the mean's z
+  EXPECT_EQ(rom::retainedDofs(mesh, {}, {}, {{"alone", {1}, {1.0}}}).size(), 3);  // means without sets
+  const auto where = [&](rom::RetainedMean m) {
+    try {
+      rom::retainedDofs(mesh, {"contact"}, {}, {m});
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(where({"p", {}, {}}), "retained/means/p");
+  EXPECT_EQ(where({"p", {0, 1}, {1.0}}), "retained/means/p");
+  EXPECT_EQ(where({"p", {0, 0}, {1.0, 1.0}}), "retained/means/p");
+  EXPECT_EQ(where({"p", {0, 9}, {1.0, 1.0}}), "retained/means/p");
+  EXPECT_EQ(where({"p", {0, 1}, {1.0, NAN}}), "retained/means/p");
+  EXPECT_EQ(where({"", {0}, {0.0}}), "retained/means/0");
+}

@@ -67,7 +67,7 @@ SectorVibration recoverSectorVibration(const mesh::Mesh& mesh, const cyclic::Cyc
     const auto& dofs = model->retainedDofs();
     Eigen::VectorXcd x(dofs.size());
     for (Eigen::Index i = 0; i < dofs.size(); ++i)
-      x(i) = dofs.axis(i).cast<std::complex<double>>().dot(u[std::size_t(dofs.nodes[std::size_t(dofs.dofs[std::size_t(i)].first)])]);
+      x(i) = dofs.read(i, u);
     const auto& assembler = *model->operators().assembler;
     const auto re = fe::recoverStresses(assembler, problem.material, part(u, false));
     const auto im = fe::recoverStresses(assembler, problem.material, part(u, true));

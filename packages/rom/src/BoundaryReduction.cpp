@@ -49,6 +49,11 @@ Partition partition(const NodalDiameterModel& model, const linalg::Map& fullMap)
   const auto& T = model.operators().assembler->transform();
   const auto& mesh = model.operators().assembler->mesh();
   const auto& retained = model.retainedDofs();
+  // A boundary coordinate is one unknown; a mean of several nodes is none.
+  if (!retained.means.empty())
+    throw InputError("retained", "a Guyan or Craig-Bampton boundary keeps nodes' DOFs; the mean '" +
+                                     retained.means.front().name +
+                                     "' of several nodes is not one (a hybrid or truncation model retains means)");
   Partition p;
   const auto n = std::size_t(T.numEquations());
   p.boundaryOf.assign(n, -1);

@@ -117,8 +117,13 @@ struct NodalDiameterModel::Impl {
       for (int c = 0; c < op.copies; ++c) {
         const auto field = op.assembler->nodalField(X, int(j), c);
         for (Eigen::Index k = 0; k < nd; ++k) {
-          const auto& u = field[dofs.nodes[std::size_t(dofs.dofs[std::size_t(k)].first)]];
-          out(c * nd + k, Eigen::Index(j)) = dofs.axis(k).dot(Eigen::Vector3d(u[0], u[1], u[2]));
+          double sum = 0;
+          const Eigen::Vector3d axis = dofs.axis(k);
+          dofs.forEachNode(k, [&](mesh::Index node, double w) {
+            const auto& u = field[std::size_t(node)];
+            sum += w * axis.dot(Eigen::Vector3d(u[0], u[1], u[2]));
+          });
+          out(c * nd + k, Eigen::Index(j)) = sum;
         }
       }
     return out;
@@ -131,7 +136,7 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
   auto& I = *impl_;
   problem.material.validate("material");
   if (!(problem.lossFactor >= 0)) throw InputError("loss_factor", "must be >= 0");
-  I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections);
+  I.dofs = rom::retainedDofs(mesh, problem.retainedNodeSets, problem.retainedDirections, problem.retainedMeans);
   Timer timer;
   I.op = cyclic::assembleNodalDiameterOperators(mesh, sector, problem.nodalDiameter, problem.material, problem.fixedNodeSets,
                                            problem.prestress.get(), comm);
@@ -146,12 +151,14 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
   const auto nd = I.dofs.size();
   for (int c = 0; c < I.op.copies; ++c)
     for (Eigen::Index k = 0; k < nd; ++k) {
-      const mesh::Index node = I.dofs.nodes[std::size_t(I.dofs.dofs[std::size_t(k)].first)];
       const Eigen::Vector3d axis = I.dofs.axis(k);
-      for (int d = 0; d < 3; ++d)
-        for (const auto& term : T.terms(node, d, c))
-          if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
-            I.unitLoads[std::size_t(c * nd + k)].emplace_back(term.equation, axis[d] * term.coefficient);
+      auto& load = I.unitLoads[std::size_t(c * nd + k)];
+      I.dofs.forEachNode(k, [&](mesh::Index node, double w) {
+        for (int d = 0; d < 3; ++d)
+          for (const auto& term : T.terms(node, d, c))
+            if (axis[d] != 0 && map->isNodeGlobalElement(term.equation))
+              load.emplace_back(term.equation, w * axis[d] * term.coefficient);
+      });
     }
   if (I.structure == solvers::ComplexDirectSolver::Structure::TravellingWavePairs) I.copyOneRotation = I.findCopyOneRotation();
   if (!problem.loads.empty()) {
@@ -177,8 +184,9 @@ NodalDiameterModel::NodalDiameterModel(const mesh::Mesh& mesh, const cyclic::Cyc
   }
   std::ostringstream msg;
   msg << "nodal diameter model k = " << problem.nodalDiameter << ": " << T.numEquations() << " equations, " << I.size()
-      << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes, " << I.op.copies
-      << " copies), assembled in " << timer.seconds() << " s";
+      << " retained DOFs (" << nd << " per copy on " << I.dofs.nodes.size() << " nodes";
+  if (!I.dofs.means.empty()) msg << " and " << I.dofs.means.size() << " means";
+  msg << ", " << I.op.copies << " copies), assembled in " << timer.seconds() << " s";
   log::info(msg.str());
 }
 

@@ -1,6 +1,7 @@
 #include "cyclone/rom/RetainedDofs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -31,8 +32,9 @@ void check(const std::string& set, const RetainedDirections& d) {
 }  // namespace
 
 RetainedDofSet retainedDofs(const mesh::Mesh& mesh, const std::vector<std::string>& sets,
-                            const std::map<std::string, RetainedDirections>& directions) {
-  if (sets.empty()) throw InputError("retained", "no retained node sets given");
+                            const std::map<std::string, RetainedDirections>& directions,
+                            std::vector<RetainedMean> means) {
+  if (sets.empty() && means.empty()) throw InputError("retained", "no retained node sets or means given");
   for (const auto& [name, d] : directions) {
     if (std::find(sets.begin(), sets.end(), name) == sets.end())
       throw InputError("retained/" + name, "directions given for a node set that is not retained");
@@ -62,6 +64,26 @@ RetainedDofSet retainedDofs(const mesh::Mesh& mesh, const std::vector<std::strin
   }
   for (std::size_t i = 0; i < out.nodes.size(); ++i)
     for (int dir : chosen[i]->directions) out.dofs.emplace_back(int(i), dir);
+  for (std::size_t m = 0; m < means.size(); ++m) {
+    const RetainedMean& mean = means[m];
+    const std::string where = "retained/means/" + (mean.name.empty() ? std::to_string(m) : mean.name);
+    if (mean.nodes.empty()) throw InputError(where, "has no nodes");
+    if (mean.weights.size() != mean.nodes.size())
+      throw InputError(where, std::to_string(mean.weights.size()) + " weights for " + std::to_string(mean.nodes.size()) +
+                                  " nodes");
+    for (std::size_t i = 0; i < mean.nodes.size(); ++i) {
+      if (mean.nodes[i] < 0 || mean.nodes[i] >= mesh.numNodes())
+        throw InputError(where, "node index " + std::to_string(mean.nodes[i]) + " is not in the mesh");
+      if (std::count(mean.nodes.begin(), mean.nodes.end(), mean.nodes[i]) > 1)
+        throw InputError(where, "node " + std::to_string(mesh.nodeIds.at(std::size_t(mean.nodes[i]))) + " appears twice");
+      if (!(std::isfinite(mean.weights[i]) && mean.weights[i] > 0))
+        throw InputError(where, "every weight must be positive and finite (node " +
+                                    std::to_string(mesh.nodeIds.at(std::size_t(mean.nodes[i]))) + ")");
+    }
+    const int point = int(out.nodes.size() + m);
+    for (int dir = 0; dir < 3; ++dir) out.dofs.emplace_back(point, dir);
+  }
+  out.means = std::move(means);
   return out;
 }
 

@@ -37,6 +37,7 @@ struct NodalDiameterModelProblem {
   std::vector<std::string> fixedNodeSets;       ///< e.g. {"bore"}; all 3 components held
   std::vector<std::string> retainedNodeSets;    ///< merged in order, duplicates dropped
   std::map<std::string, RetainedDirections> retainedDirections;  ///< by set; a set not here: x, y, z
+  std::vector<RetainedMean> retainedMeans;      ///< weighted sums of nodes, retained after the sets' nodes
   std::vector<LoadPattern> loads;               ///< the excitation part: loads that need not act at retained DOFs
   std::shared_ptr<const cyclic::PrestressState> prestress;  ///< tangent K + K_sigma - K_Omega; null: K
   double lossFactor = 0;                        ///< eta of the structural damping (1 + i eta) K
