@@ -4,23 +4,27 @@
 # one BLAS thread, with the peak memory sampled every 5 s; the run is stopped where it
 # passes LIMIT_GB (default 18 of this machine's 24). For
 # docs/studies/thesis_scale_chain.md. Usage, from the repository after ./scripts/run-tests:
-#   sh docs/studies/thesis_scale_chain.sh [output directory] [patches]
+#   sh docs/studies/thesis_scale_chain.sh [output directory] [patches] [contact_dofs]
+# (contact_dofs: nodes, the default, or patch_means: the models retain each patch's mean
+# motions instead of every face node)
 set -e
 cyclone=${CYCLONE:-build/drivers/cyclone}
 out=${1:-thesis_scale_chain}
 patches=${2:-27}
+contact_dofs=${3:-nodes}
 limit_kb=$(( ${LIMIT_GB:-18} * 1048576 ))
 mkdir -p "$out"
 "$cyclone" print-demo-scene > "$out/demo.yaml"
-python3 - "$out" "$patches" <<'PY'
+python3 - "$out" "$patches" "$contact_dofs" <<'PY'
 import sys, yaml
-out, patches = sys.argv[1], int(sys.argv[2])
+out, patches, contact_dofs = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 scene = yaml.safe_load(open(out + "/demo.yaml"))
 c = scene["cyclone"]
 c["analysis"] = ["static", "disc_response"]
 c["output_directory"] = out + "/run"
 c["mesh"]["shrouded_sector"]["mesh_size"] = 1.25
 c["reduced_model"]["check_frequencies"] = 0
+c["reduced_model"]["contact_dofs"] = contact_dofs
 c["disc_response"]["contact"]["patches"] = patches
 for key in ("studies", "peak_studies", "peak_stress"):
     c["disc_response"].pop(key, None)

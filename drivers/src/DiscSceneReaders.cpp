@@ -26,6 +26,7 @@
 #include "cyclone/hbm/ElementStates.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 
 namespace cyclone::scenes {
@@ -220,8 +221,29 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
         if (e.where().rfind(section, 0) == 0) throw InputError(d.where(e.where()), e.problem());
       throw;
     }
+    // The contact faces' DOFs in the models: every face node, or each patch's mean motion
+    // (a static correction of one load case per patch direction, not per face node DOF).
+    const std::string contactDofs = r.getString("contact_dofs", "nodes");
+    if (contactDofs == "patch_means") {
+      if (spec.contact.patches < 1)
+        throw InputError(r.where("contact_dofs"), "patch_means needs disc_response/contact/patches >= 1 (the face "
+                                                  "split into patches whose mean motions the models retain)");
+      const auto pairs = disc::shroudContactPairs(mesh, sectors, plan.modelSpec.axis, spec.contact);
+      plan.modelSpec.retainedMeans = disc::shroudPatchMeans(pairs, disc::shroudContactValues(mesh, pairs, spec.contact),
+                                                            spec.contact);
+      auto& sets = plan.modelSpec.retainedNodeSets;
+      for (const auto& face : {spec.contact.leftSet, spec.contact.rightSet})
+        sets.erase(std::remove(sets.begin(), sets.end(), face), sets.end());
+      if (sets.empty())
+        throw InputError(r.where("retained_node_sets"), "retains only the contact faces, whose patch means "
+                                                        "contact_dofs: patch_means retains instead: add the "
+                                                        "excitation's node set");
+    } else if (contactDofs != "nodes") {
+      throw InputError(r.where("contact_dofs"), "use nodes (every contact face node, the default) or patch_means "
+                                                "(each contact patch's mean motion)");
+    }
     try {
-      disc::checkRetainedNodeSets(mesh, plan.modelSpec.retainedNodeSets, spec);
+      disc::checkRetainedNodeSets(mesh, plan.modelSpec.retainedNodeSets, spec, !plan.modelSpec.retainedMeans.empty());
     } catch (const InputError& e) {
       throw InputError(r.where("retained_node_sets"), e.problem());
     }

@@ -20,6 +20,7 @@
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/disc/ShroudContactLaw.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "DemoDisc.hpp"
 
@@ -70,4 +71,68 @@ TEST(DiscContactPatches, PatchesConvergeToEveryPair) {
   EXPECT_LT(errors[1], errors[0]) << "8 patches against 4";
   EXPECT_LT(errors[3], errors[1]) << "32 patches against 8";
   for (std::size_t i = 1; i < stated.size(); ++i) EXPECT_LT(stated[i], stated[i - 1]) << "level " << i;
+}
+
+// The models retaining each patch's mean motion (two means a patch, DiscModelSpec::
+// retainedMeans: a static correction of 6 load cases a patch instead of 3 per face node)
+// against the models retaining every face node, the same 8 patches on both: the hybrid
+// model is linear in its loads, so the means' receptance is the nodes' seen through the
+// patches' weights, and the two friction problems are one. Checked on the condensed
+// unknowns (the same coordinates in both: the patches' relative motions and the
+// mid-blade's): the residual of one at the other's traced points, and the peaks.
+TEST(DiscContactPatches, PatchMeansRetainedAreTheFaceNodesThroughTheirWeights) {
+  log::setQuiet(true);
+  mesh::ShroudedSectorParameters p;
+  const auto mesh = mesh::generateShroudedSector(p);
+  const int H = 2;
+  auto spec = demo_disc::demoDiscResponse(H);
+  spec.contact.law = disc::ShroudContactSpec::Law::PerArea;
+  spec.contact.kn = spec.contact.kt = 5000.0;
+  spec.contact.preload = 20000.0;
+  spec.contact.patches = 8;
+  std::vector<int> harmonics;
+  for (int h = 0; h <= H; ++h) harmonics.push_back(h);
+  const auto nds = disc::nodalDiametersFor(p.sectors, 3, harmonics);
+  const auto comm = Tpetra::getDefaultComm();
+  Timer timer;
+  const auto nodes = disc::buildDiscReducedModels(mesh, demo_disc::demoDiscModels(p), nds, "", comm);
+  const double nodeSeconds = timer.seconds();
+  auto meanSpec = demo_disc::demoDiscModels(p);
+  meanSpec.retainedNodeSets = {"mid_blade"};
+  const auto pairs = disc::shroudContactPairs(mesh, p.sectors, nodes.sector.axis, spec.contact);
+  meanSpec.retainedMeans = disc::shroudPatchMeans(pairs, disc::shroudContactValues(mesh, pairs, spec.contact), spec.contact);
+  ASSERT_EQ(meanSpec.retainedMeans.size(), 16u);
+  timer.restart();
+  const auto means = disc::buildDiscReducedModels(mesh, meanSpec, nds, "", comm);
+  const double meanSeconds = timer.seconds();
+  ASSERT_EQ(means.models.at(3)->size(), 2 * 3 * (1 + 16));
+
+  disc::DiscSweepOptions sweep;
+  sweep.harmonicsCheckTo = -1;
+  sweep.stability = response::ForcedResponseSetup::Stability::Never;
+  const auto a = disc::solveDiscForcedResponse(mesh, nodes, spec, sweep);
+  const auto b = disc::solveDiscForcedResponse(mesh, means, spec, sweep);
+  ASSERT_TRUE(a.curve.branch.end == continuation::BranchEnd::RangeEnd) << a.curve.branch.stopReason;
+  ASSERT_TRUE(b.curve.branch.end == continuation::BranchEnd::RangeEnd) << b.curve.branch.stopReason;
+  ASSERT_EQ(a.setup.system->numUnknowns(), b.setup.system->numUnknowns());
+  double worst = 0;
+  Eigen::VectorXd Ra, Rb, R0;
+  for (const auto& point : a.curve.branch.points) {
+    const double omega = point.parameter * a.setup.omegaUnit;
+    a.setup.system->residual(point.x, omega, Ra, nullptr);
+    b.setup.system->residual(point.x, omega, Rb, nullptr);
+    // Against the residual at rest (the excitation, in the residual's own units).
+    a.setup.system->residual(Eigen::VectorXd::Zero(point.x.size()), omega, R0, nullptr);
+    worst = std::max(worst, (Rb - Ra).norm() / R0.norm());
+  }
+  const double peak = std::abs(b.curve.peak / a.curve.peak - 1), hz = std::abs(b.curve.peakOmega / a.curve.peakOmega - 1);
+  std::printf("8 patches: models retaining the face nodes %.1f s (%ld DOFs at ND 3), the patch means %.1f s (%ld); "
+              "residuals of the means' system at the nodes' %zu points: %.2e; peaks %.6f against %.6f mm (%.1e), "
+              "%.3f against %.3f Hz (%.1e)\n",
+              nodeSeconds, long(nodes.models.at(3)->size()), meanSeconds, long(means.models.at(3)->size()),
+              a.curve.branch.points.size(), worst, b.curve.peak, a.curve.peak, peak, b.curve.peakOmega / (2 * M_PI),
+              a.curve.peakOmega / (2 * M_PI), hz);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(peak, 1e-6);
+  EXPECT_LT(hz, 1e-7);
 }

@@ -219,7 +219,12 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     text << "family " << options.family << " at " << out.estimate->freeHz << " Hz with the shroud free, "
          << out.estimate->stuckHz << " Hz with the contacts stuck"
          << (spec.contact.preload > 0 ? "" : " (closed: no preload holds them so at rest)");
-    if (spec.contact.patches > 0) {
+    if (spec.contact.patches > 0 && !models.retainedMeans.empty()) {
+      // Every node pair as a contact needs the face nodes retained: models that retain the
+      // patches' means have none.
+      text << "; " << spec.contact.patches << " contact patches on the models' retained mean motions (patches "
+           << "against every node pair not compared: that needs the face nodes retained)";
+    } else if (spec.contact.patches > 0) {
       // The same stuck system with every node pair a contact (harmonic 1 alone: cheap).
       auto every = spec;
       every.contact.patches = 0;

@@ -199,13 +199,31 @@ void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, 
   std::vector<bool> isGap;
   const auto gapElement = gapElementFor(spec.gap, spec.contact, values.members.size(), isGap);
   const int n = hb.numDofs();
+  // Models that retain the patches' mean motions (DiscModelSpec::retainedMeans): each
+  // patch reads its two means, which must be this spec's patches (the same pairs, weights).
+  const auto& means = models.retainedMeans;
+  if (!means.empty()) {
+    const auto expected = shroudPatchMeans(pairs, values, spec.contact);
+    bool same = expected.size() == means.size();
+    for (std::size_t m = 0; same && m < means.size(); ++m)
+      same = expected[m].nodes == means[m].nodes && expected[m].weights == means[m].weights;
+    if (!same)
+      throw InputError("contact/patches", "the reduced models retain " + std::to_string(means.size()) +
+                                              " means, not this contact's " + std::to_string(expected.size()) +
+                                              " patch sides (build the models with this contact's patches)");
+  }
+  const int firstMean = int(models.retainedNodes.size());
   for (std::size_t c = 0; c < values.members.size(); ++c) {
     const int d = isGap[c] ? 1 : 3;
     const Eigen::MatrixXd Ei = E.rightCols(d);
     Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n, d), Wnext = Eigen::MatrixXd::Zero(n, d);
+    if (!means.empty()) {  // the patch's right mean and the next sector's left mean
+      W.middleRows(3 * (firstMean + 2 * int(c)), 3) -= Ei;
+      Wnext.middleRows(3 * (firstMean + 2 * int(c) + 1), 3) += Q.transpose() * Ei;
+    }
     // The contact's motion: its pairs' relative motions weighted (one pair of weight 1
     // without patches); its force goes back to them by the same weights.
-    for (std::size_t m = 0; m < values.members[c].size(); ++m) {
+    for (std::size_t m = 0; means.empty() && m < values.members[c].size(); ++m) {
       const auto i = std::size_t(values.members[c][m]);
       const double w = values.memberWeights[c][m];
       const int r = retainedIndex(models, right[i], spec.contact.rightSet);
@@ -234,9 +252,14 @@ void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& m
   }
   const int n = hb.numDofs();
   setup.dofNames.resize(n);
+  const int nodes = int(models.retainedNodes.size());
   for (int i = 0; i < n / 3; ++i)
-    for (int c = 0; c < 3; ++c)
-      setup.dofNames[3 * i + c] = "node" + std::to_string(mesh.nodeIds[models.retainedNodes[i]]) + "_" + "xyz"[c];
+    for (int c = 0; c < 3; ++c) {
+      std::string name = i < nodes ? "node" + std::to_string(mesh.nodeIds[models.retainedNodes[std::size_t(i)]])
+                                   : models.retainedMeans.at(std::size_t(i - nodes)).name;
+      std::replace(name.begin(), name.end(), ' ', '_');
+      setup.dofNames[3 * i + c] = name + "_" + "xyz"[c];
+    }
   for (const auto& set : spec.responseNodeSets)
     for (auto node : mesh.nodeSet(set)) {
       const int i = retainedIndex(models, node, set);
@@ -278,7 +301,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
 }
 
 void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,
-                           const DiscResponseSpec& spec) {
+                           const DiscResponseSpec& spec, bool patchMeans) {
   if (retainedNodeSets.empty())
     throw InputError("reduced_model/retained_node_sets", "is empty: the reduced models need the node sets the "
                                                          "forced response uses (contact faces, excitation)");
@@ -286,7 +309,8 @@ void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string
   for (const auto& name : retainedNodeSets)
     for (mesh::Index n : mesh.nodeSet(name)) retained.push_back(n);
   std::sort(retained.begin(), retained.end());
-  std::vector<std::string> used{spec.contact.leftSet, spec.contact.rightSet, spec.excitation.nodeSet};
+  std::vector<std::string> used{spec.excitation.nodeSet};
+  if (!patchMeans) used.insert(used.end(), {spec.contact.leftSet, spec.contact.rightSet});
   used.insert(used.end(), spec.responseNodeSets.begin(), spec.responseNodeSets.end());
   for (const auto& set : used)
     for (mesh::Index n : mesh.nodeSet(set))

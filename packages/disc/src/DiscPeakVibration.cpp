@@ -94,6 +94,7 @@ DiscPeakVibration solveDiscPeakVibration(const mesh::Mesh& mesh, const DiscReduc
   problem.material = modelSpec.material;
   problem.fixedNodeSets = modelSpec.fixedNodeSets;
   problem.retainedNodeSets = modelSpec.retainedNodeSets;
+  problem.retainedMeans = modelSpec.retainedMeans;
   problem.lossFactor = modelSpec.lossFactor;
   if (prestress) problem.prestress = std::make_shared<const cyclic::PrestressState>(*prestress);
   DiscPeakVibration out;

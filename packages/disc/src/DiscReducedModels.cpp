@@ -82,6 +82,11 @@ std::string modelHash(const mesh::Mesh& mesh, const DiscModelSpec& s, int nd) {
   if (s.material.massQuadrature != fe::MassQuadrature::Exact) h.add(std::string("mass quadrature: stiffness rule"));
   h.add(s.sectors).add(s.axis.point.data(), sizeof(double) * 3).add(s.axis.direction.data(), sizeof(double) * 3);
   h.add(s.rpm).add(prestressName(s.prestress)).add(reducedModelKindName(s.kind)).add(s.modes).add(s.omega0).add(s.lossFactor).add(nd);
+  // Only when there are means, so that the models without them keep their keys.
+  for (const auto& m : s.retainedMeans) {
+    h.add(std::string("retained mean ") + m.name);
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) h.add(static_cast<long long>(mesh.nodeIds.at(std::size_t(m.nodes[i])))).add(m.weights[i]);
+  }
   return h.hex();
 }
 
@@ -242,9 +247,13 @@ struct BuiltModel {
 BuiltModel reduceModel(const std::shared_ptr<rom::NodalDiameterModel>& full, const rom::RetainedModes& modes, int k,
                        const DiscModelSpec& spec, const std::vector<mesh::Index>& retainedNodes) {
   std::vector<int> nodes, directions, copies;
-  for (int c = 0; c < full->copies(); ++c)
+  // A mean's DOFs are filed under node -1 - m (its definition is in the file's name's hash).
+  for (int c = 0; c < full->copies(); ++c) {
     for (auto node : retainedNodes)
       for (int d = 0; d < 3; ++d) nodes.push_back(int(node)), directions.push_back(d), copies.push_back(c);
+    for (std::size_t m = 0; m < spec.retainedMeans.size(); ++m)
+      for (int d = 0; d < 3; ++d) nodes.push_back(-1 - int(m)), directions.push_back(d), copies.push_back(c);
+  }
   BuiltModel out;
   if (spec.kind == ReducedModelKind::FullFe) {
     out.model = full;
@@ -333,6 +342,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   problem.material = spec.material;
   problem.fixedNodeSets = spec.fixedNodeSets;
   problem.retainedNodeSets = spec.retainedNodeSets;
+  problem.retainedMeans = spec.retainedMeans;
+  out.retainedMeans = spec.retainedMeans;
   problem.lossFactor = spec.lossFactor;
   std::optional<cyclic::PrestressState> prestress;  // computed when the first model is built, not for read-backs
   bool prestressed = false;

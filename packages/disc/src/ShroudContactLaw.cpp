@@ -76,4 +76,24 @@ ShroudContactValues shroudContactValues(const mesh::Mesh& mesh, const mesh::Node
   return out;
 }
 
+std::vector<rom::RetainedMean> shroudPatchMeans(const mesh::NodePairing& pairs, const ShroudContactValues& values,
+                                                const ShroudContactSpec& contact) {
+  if (contact.patches < 1)
+    throw InputError("contact/patches", "the patches' mean motions are retained only where the face is split into "
+                                        "patches (patches >= 1)");
+  std::vector<rom::RetainedMean> out;
+  for (std::size_t c = 0; c < values.members.size(); ++c)
+    for (const bool right : {true, false}) {
+      rom::RetainedMean mean;
+      mean.name = "patch " + std::to_string(c) + (right ? " right" : " left");
+      for (std::size_t m = 0; m < values.members[c].size(); ++m) {
+        const auto i = std::size_t(values.members[c][m]);
+        mean.nodes.push_back(right ? pairs.right[i] : pairs.left[i]);
+        mean.weights.push_back(values.memberWeights[c][m]);
+      }
+      out.push_back(std::move(mean));
+    }
+  return out;
+}
+
 }  // namespace cyclone::disc

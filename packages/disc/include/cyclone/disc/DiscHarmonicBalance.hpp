@@ -92,9 +92,10 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
 
 /// The node sets the forced response uses (contact faces, excitation, response sets) all
 /// among the reduced models' retained node sets: InputError("reduced_model/retained_node_sets")
-/// naming the set, before any model is built.
+/// naming the set, before any model is built. With `patchMeans` the contact faces are not
+/// asked for (the models retain the patches' mean motions instead).
 void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,
-                           const DiscResponseSpec& spec);
+                           const DiscResponseSpec& spec, bool patchMeans = false);
 
 /// The system: receptance form over `models`, one friction3d element named "contact" per
 /// pair (w = [t1, t2, n]^T (u_next - u), n > 0 pressing the faces together), or a

@@ -16,6 +16,7 @@
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
 #include "cyclone/rom/ComplianceModel.hpp"
+#include "cyclone/rom/RetainedDofs.hpp"
 
 namespace cyclone::disc {
 
@@ -35,6 +36,9 @@ struct DiscModelSpec {
   mesh::RotationAxis axis;
   std::vector<std::string> leftSets{"disc_left"}, rightSets{"disc_right"};  ///< cantilever: disc faces only
   std::vector<std::string> retainedNodeSets{"shroud_contact_left", "shroud_contact_right", "mid_blade"};
+  /// Retained after the sets' nodes: weighted means of nodes (the contact patches' mean
+  /// motions, shroudPatchMeans, in place of the contact sets' nodes).
+  std::vector<rom::RetainedMean> retainedMeans;
   double rpm = 0;
   cyclic::PrestressKind prestress = cyclic::PrestressKind::Nonlinear;
   ReducedModelKind kind = ReducedModelKind::Hybrid;
@@ -75,6 +79,8 @@ struct DiscReducedModels {
   double rpm = 0;  ///< the speed the models were built at (their prestress)
   cyclic::CyclicSector sector;
   std::vector<mesh::Index> retainedNodes;  ///< retained DOF 3 i + d is direction d of node retainedNodes[i]
+  /// then DOF 3 (retainedNodes.size() + m) + d is direction d of mean m
+  std::vector<rom::RetainedMean> retainedMeans;
   std::map<int, std::shared_ptr<const rom::ComplianceModel>> models;  ///< by nodal diameter
   std::map<int, std::vector<double>> naturalHz;  ///< by nodal diameter: the distinct natural frequencies (cantilever)
   std::map<int, std::string> files;              ///< by nodal diameter: the HDF5 file (none for full_fe)
