@@ -52,6 +52,25 @@ TEST(HillStability, LinearOscillatorHasItsDampedEigenvaluesAsExponents) {
   EXPECT_TRUE(fl.stable);
 }
 
+
+// The same closed form on a stiff oscillator (k = 1e12, m = 1, c = 0.05: exponents
+// -0.025 +- 1e6 i), driven near and far from resonance: unscaled, the companion matrix's
+// norm of 1e12 made the eigenvalues' rounding exceed the damping, and a linear damped
+// system came out unstable (real parts up to +10, issue 49 probe).
+TEST(HillStability, StiffOscillatorKeepsItsSmallDamping) {
+  Eigen::MatrixXd M(1, 1), C(1, 1), K(1, 1);
+  M << 1.0;
+  C << 0.05;
+  K << 1e12;
+  hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(5), 32);
+  sys.addExcitation(0, 1, 1.0);
+  for (const double omega : {0.5e6, 0.99e6, 1.01e6, 3e6}) {
+    const auto fl = hbm::hillStability(sys, sys.linearSolution(omega), omega);
+    ASSERT_EQ(fl.exponents.size(), 2);
+    for (int i = 0; i < 2; ++i) EXPECT_NEAR(fl.exponents(i).real(), -0.025, 1e-6) << "omega " << omega;
+    EXPECT_TRUE(fl.stable) << "omega " << omega;
+  }
+}
 TEST(HillStability, DuffingMiddleBranchIsUnstable) {
   // At W = 1.2 the Duffing curve (m = 1, c = 0.05, k = 1, g = 0.1, P = 0.18) has three
   // solutions; the middle one (between the folds) is unstable, the outer two stable.

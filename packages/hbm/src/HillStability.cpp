@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "ReceptanceHill.hpp"
@@ -36,15 +37,22 @@ FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::Ve
   const auto& cyc = sys.cyclic();
   const Eigen::MatrixXd D2 = sys.coefficientOperator(sys.M(), cyc.Mnext);
   const Eigen::MatrixXd D1 = 2 * D2 * wD + sys.coefficientOperator(sys.C(), cyc.Cnext);
-  // Companion form: [0 I; -D2^-1 J, -D2^-1 D1].
+  // Companion form of the problem in mu = lambda / s: [0 I; -D2^-1 J / s^2, -D2^-1 D1 / s],
+  // s = sqrt(|J| / |D2|) the size of the exponents' imaginary parts. Unscaled, a stiff
+  // system's companion matrix has a norm of |J| / |D2| (1e12 for K = 1e12, M = 1), and the
+  // eigenvalues' rounding, about its norm times 1e-16, exceeded the damping's real part
+  // (-0.025 came out as +5.5: "unstable", issue 49 probe); scaled, the matrix is of order
+  // one and the rounding of lambda about s times 1e-16.
   const auto lu = D2.partialPivLu();
   if (!(lu.rcond() > kSingularMass)) throw InputError("stability", "Hill's method needs an invertible mass matrix");
+  const double normJ = J.norm(), normD2 = D2.norm();
+  const double s = normJ > 0 && normD2 > 0 ? std::sqrt(normJ / normD2) : 1.0;
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * m, 2 * m);
   A.block(0, m, m, m).setIdentity();
-  A.block(m, 0, m, m) = -lu.solve(J);
-  A.block(m, m, m, m) = -lu.solve(D1);
+  A.block(m, 0, m, m) = -lu.solve(J) / (s * s);
+  A.block(m, m, m, m) = -lu.solve(D1) / s;
   Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-  const Eigen::VectorXcd all = es.eigenvalues();
+  const Eigen::VectorXcd all = s * es.eigenvalues();
   FloquetExponents out;
   out.all = all;
   std::vector<int> order(all.size());
