@@ -29,16 +29,18 @@ std::vector<double> rootsOf(const F& f) {
     }
   return roots;
 }
+// m x'' + c x' + k x = cos(W t), harmonics 0..5 on 32 samples.
+hbm::HarmonicBalanceSystem oscillator(double m, double c, double k) {
+  hbm::HarmonicBalanceSystem sys(Eigen::MatrixXd::Constant(1, 1, m), Eigen::MatrixXd::Constant(1, 1, c),
+                                 Eigen::MatrixXd::Constant(1, 1, k), hbm::HarmonicSet::upTo(5), 32);
+  sys.addExcitation(0, 1, 1.0);
+  return sys;
+}
 }  // namespace
 
 TEST(HillStability, LinearOscillatorHasItsDampedEigenvaluesAsExponents) {
   // m x'' + c x' + k x = f: exponents -c/2m +- i sqrt(k/m - (c/2m)^2), whatever the forcing.
-  Eigen::MatrixXd M(1, 1), C(1, 1), K(1, 1);
-  M << 2.0;
-  C << 0.3;
-  K << 5.0;
-  hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(5), 32);
-  sys.addExcitation(0, 1, 1.0);
+  const auto sys = oscillator(2.0, 0.3, 5.0);
   const double omega = 1.3;
   const auto fl = hbm::hillStability(sys, sys.linearSolution(omega), omega);
   ASSERT_EQ(fl.exponents.size(), 2);
@@ -58,12 +60,7 @@ TEST(HillStability, LinearOscillatorHasItsDampedEigenvaluesAsExponents) {
 // norm of 1e12 made the eigenvalues' rounding exceed the damping, and a linear damped
 // system came out unstable (real parts up to +10, issue 49 probe).
 TEST(HillStability, StiffOscillatorKeepsItsSmallDamping) {
-  Eigen::MatrixXd M(1, 1), C(1, 1), K(1, 1);
-  M << 1.0;
-  C << 0.05;
-  K << 1e12;
-  hbm::HarmonicBalanceSystem sys(M, C, K, hbm::HarmonicSet::upTo(5), 32);
-  sys.addExcitation(0, 1, 1.0);
+  const auto sys = oscillator(1.0, 0.05, 1e12);
   for (const double omega : {0.5e6, 0.99e6, 1.01e6, 3e6}) {
     const auto fl = hbm::hillStability(sys, sys.linearSolution(omega), omega);
     ASSERT_EQ(fl.exponents.size(), 2);
