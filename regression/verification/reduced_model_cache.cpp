@@ -170,6 +170,18 @@ TEST(ReducedModelCache, ACopiedOrEditedCachedModelIsRebuilt) {
     set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
   }
   expectRebuilt("an eigenvalue scaled by 1.01");
+  // A valid, whole model of another material (E 12 % higher: the same ND, kind, speed and
+  // sizes, its own digest intact) under ND 1's name: it was reused and gave another
+  // scene's peak with exit 0 (issue 49's fourth probe).
+  {
+    auto other = c;
+    other.spec.material.E *= 1.12;
+    other.dir = c.dir / "other";
+    const auto stiffer = other.build(nds);
+    ASSERT_NE(stiffer.naturalHz.at(1).front(), built.naturalHz.at(1).front());
+    fs::copy_file(stiffer.files.at(1), built.files.at(1), fs::copy_options::overwrite_existing);
+  }
+  expectRebuilt("another material's model under ND 1's name");
 }
 
 // A nodal diameter's model does not depend on which others are built in the same run:

@@ -170,7 +170,8 @@ namespace {
 
 // A cached model of nodal diameter k read back into `out` (false: none, or damaged and
 // to be rebuilt).
-bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, DiscReducedModels& out) {
+bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, const std::string& inputs,
+                     DiscReducedModels& out) {
   if (path.empty() || !std::filesystem::exists(path)) return false;
   std::optional<io::ReducedModelRecord> cached;
   try {
@@ -194,6 +195,13 @@ bool readCachedModel(const std::string& path, int k, const DiscModelSpec& spec, 
     wrong << "it holds a model of " << record.sectors << " sectors, " << spec.sectors << " expected";
   else if (record.rpm != spec.rpm)
     wrong << "it holds a model at " << record.rpm << " rpm, " << spec.rpm << " expected";
+  // A valid model of other inputs (another material, mesh or retained set) under this
+  // name gave another scene's peak with exit 0 (issue 49's fourth probe).
+  else if (record.inputDigest.empty())
+    wrong << "it does not say which inputs it was built from (written by an older version)";
+  else if (record.inputDigest != inputs)
+    wrong << "it was built from other inputs (its input digest " << record.inputDigest.substr(0, 20) << ", this run's "
+          << inputs.substr(0, 20) << ")";
   if (!wrong.str().empty()) {
     log::warn("reduced model ND " + std::to_string(k) + ": the cached " + path + " is not reused: " + wrong.str() +
               "; rebuilding it");
@@ -351,10 +359,10 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   const bool cache = !cacheDirectory.empty() && spec.kind != ReducedModelKind::FullFe;
   if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
   for (int k : nodalDiameters) {
+    const std::string inputs = modelHash(mesh, spec, k);
     const std::string path =
-        cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + modelHash(mesh, spec, k).substr(0, 20) + ".h5"
-              : std::string();
-    if (readCachedModel(path, k, spec, out)) continue;
+        cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + inputs.substr(0, 20) + ".h5" : std::string();
+    if (readCachedModel(path, k, spec, inputs, out)) continue;
     if (!prestressed) {
       prestress = discPrestress(mesh, out.sector, spec, comm);
       prestressed = true;
@@ -368,7 +376,8 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
       throw InputError("constraints/fixed_node_sets", "the sector has rigid-body modes at ND " + std::to_string(k) +
                                                           ": a disc response needs the disc held (e.g. the bore)");
     out.naturalHz[k] = distinctHz(modes.eigenvalues, modes.copies);
-    const auto built = reduceModel(full, modes, k, spec, out.retainedNodes);
+    auto built = reduceModel(full, modes, k, spec, out.retainedNodes);
+    if (built.record) built.record->inputDigest = inputs;
     out.models[k] = built.model;
     ++out.built;
     if (k == spec.checkNodalDiameter && spec.kind != ReducedModelKind::FullFe && spec.checkFrequencies > 0) {

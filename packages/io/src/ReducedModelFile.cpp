@@ -130,6 +130,8 @@ std::string contentDigest(const ReducedModelRecord& rec) {
   h.add(rec.rpm).add(rec.lossFactor);
   h.addAll(rec.retainedNodes).addAll(rec.retainedDirections).addAll(rec.retainedCopies);
   addMatrix(h, rec.retainedAxes);
+  // Only when given, so that files written without it keep their digests.
+  if (!rec.inputDigest.empty()) h.add(std::string("input digest")).add(rec.inputDigest);
   if (modal(rec.kind)) {
     h.add(rec.modes.copies).addAll(rec.modes.eigenvalues);
     addMatrix(h, rec.modes.shapes);
@@ -196,6 +198,7 @@ void writeReducedModelHdf5(const std::string& path, const ReducedModelRecord& re
     if (rec.retainedAxes.size()) writeMatrix(h5, "retained_axes", rec.retainedAxes);
     writeIntAttribute(h5, "format_version", kFormatVersion);
     writeStringAttribute(h5, "kind", rec.kind);
+    if (!rec.inputDigest.empty()) writeStringAttribute(h5, "input_digest", rec.inputDigest);
     writeIntAttribute(h5, "harmonic", rec.nodalDiameter);  // the file's name for it (caches stay readable)
     writeIntAttribute(h5, "sectors", rec.sectors);
     writeIntAttribute(h5, "copies", modal(rec.kind) ? rec.modes.copies : rec.reduction.copies);
@@ -257,6 +260,7 @@ ReducedModelRecord readReducedModelHdf5(const std::string& path) {
     rec.sectors = readIntAttribute(h5, "sectors");
     rec.lossFactor = readDoubleAttribute(h5, "loss_factor");
     rec.rpm = readDoubleAttribute(h5, "rpm");
+    if (h5.attrExists("input_digest")) rec.inputDigest = readStringAttribute(h5, "input_digest");
     if (h5.attrExists("content_digest")) {
       const std::string written = readStringAttribute(h5, "content_digest");
       if (written != contentDigest(rec))

@@ -21,6 +21,8 @@
 //     /retained_axes       [r x 3]    optional: each DOF's unit vector (a local frame's); absent: x, y, z
 //   attributes on /: format_version (2; 1: no kind, hybrid or truncation), kind (string),
 //                    harmonic, sectors, copies, static_correction (0/1), loss_factor, omega0, shift, rpm,
+//                    input_digest (string, optional: the digest of the inputs the model was built
+//                    from, e.g. the disc chain's cache key),
 //                    content_digest (string, written last: contentDigest of what the file holds;
 //                    files written before it have none)
 #include <memory>
@@ -52,6 +54,10 @@ struct ReducedModelRecord {
   // guyan and craig_bampton: K_g, M_g (and the interface modes kept, M_bm); copies
   rom::BoundaryReduction reduction;
   std::vector<double> fullModelEigenvalues;  ///< optional: the full model's omega_j^2 (e.g. for a resonance estimate)
+  /// Optional: the digest of the inputs the model was built from (the disc chain's cache
+  /// key: mesh, material, speed, kind, retained DOFs), so that a valid model of other
+  /// inputs filed under this one's name is told apart from it. Empty: none given.
+  std::string inputDigest;
   /// Read back: the file carried a content digest and it matched what was read (false: a
   /// file written without one).
   bool contentVerified = false;
