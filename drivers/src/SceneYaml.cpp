@@ -107,6 +107,12 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
     if (!blank) {
       std::smatch key;
       if (std::regex_search(content, key, blockKey)) {
+        // The reader keeps the first top-level key's map: any key beside 'cyclone' was
+        // ignored without a word (issue 49's fourth probe).
+        if (indent == 0 && !key[1].matched && key[2].str() != "cyclone")
+          throw InputError(source + ": line " + std::to_string(number),
+                           "only 'cyclone' is read at the top level; '" + key[2].str() +
+                               "' beside it would be ignored (indent it under cyclone, or remove it)");
         // A list item's key opens a mapping two columns in; the mappings deeper than
         // this key's are closed, and so is its own where a list item starts it.
         const int at = indent + (key[1].matched ? 2 : 0);
@@ -156,8 +162,9 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
 Teuchos::RCP<Teuchos::ParameterList> parseSceneYaml(const std::string& yaml, const std::string& source) {
   checkSceneLimits(yaml, source);
   const std::string text = plainSceneText(yaml, source);
+  Teuchos::RCP<Teuchos::ParameterList> root;
   try {
-    return Teuchos::getParametersFromYamlString(text);
+    root = Teuchos::getParametersFromYamlString(text);
   } catch (const std::exception& e) {
     // The reader's first lines say where; the rest is its parser's state.
     std::istringstream what(e.what());
@@ -166,6 +173,7 @@ Teuchos::RCP<Teuchos::ParameterList> parseSceneYaml(const std::string& yaml, con
     throw InputError(source, "not a valid YAML scene (two-space indentation and flow lists [a, b] are safest): " +
                                  shown);
   }
+  return root;
 }
 
 }  // namespace cyclone::scenes

@@ -35,6 +35,14 @@ TEST(Scenes, UnknownKeyIsNamedWithItsPath) {
   EXPECT_FALSE(fs::exists(dir / "static.exo"));
 }
 
+// A key beside 'cyclone' at the top level was ignored with exit 0 (issue 49's fourth probe).
+TEST(Scenes, AKeyBesideCycloneIsRefused) {
+  const auto dir = freshDir("beside");
+  const auto msg = failure(smallScene() + "other: 1\n", dir);
+  EXPECT_NE(msg.find("only 'cyclone' is read at the top level; 'other'"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "static.exo"));
+}
+
 // An empty analysis list built the mesh and ended "complete" with exit 0 (issue 49).
 TEST(Scenes, AnEmptyAnalysisListIsRefused) {
   const auto dir = freshDir("no_analysis");
