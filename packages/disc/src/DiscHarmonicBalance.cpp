@@ -285,6 +285,20 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
     frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]);
   std::vector<bool> isGap;
   gapElementFor(spec.gap, spec.contact, values.members.size(), isGap);
+  if (!spec.gap.pairs.empty()) {
+    // A clearance or interference beyond the small displacements the linear models hold:
+    // -1e3 mm was taken, its pairs carrying 5.6e6 N against the face's 2e4 N preload, and
+    // the headline said "converged" (issue 49's fourth probe).
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+    for (const auto& x : mesh.coords)
+      for (int d = 0; d < 3; ++d) lo(d) = std::min(lo(d), x[d]), hi(d) = std::max(hi(d), x[d]);
+    const double size = mesh.coords.empty() ? 0.0 : (hi - lo).norm();
+    if (std::abs(spec.gap.clearance) > 0.01 * size)
+      throw InputError("gap/clearance", numberText(spec.gap.clearance) + " mm is more than 1 % of the sector's size (" +
+                                            numberText(size, 4) + " mm, its bounding box's diagonal): beyond the small "
+                                            "displacements the linear reduced models hold (a clearance or "
+                                            "interference is a fraction of a millimetre)");
+  }
   if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
   if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
     throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
@@ -295,6 +309,15 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
     throw InputError("excitation/amplitude", numberText(spec.excitation.amplitude) + " N is beyond " +
                                                  numberText(response::kLargestTraceable) +
                                                  ": the trace's products of it overflow double precision");
+  // And below the smallest response the trace can carry: a disc's compliance is far below
+  // 1 mm/N, so such a force's response is smaller still (1e-200 was refused only after
+  // the reduced models, issue 49's fourth probe).
+  if (std::abs(spec.excitation.amplitude) < response::kSmallestTraceable)
+    throw InputError("excitation/amplitude", numberText(spec.excitation.amplitude) + " N is below " +
+                                                 numberText(response::kSmallestTraceable) +
+                                                 ": its response is too small to trace in double precision (its "
+                                                 "square underflows); the response is linear in a force that small: "
+                                                 "scale it up");
   if (spec.contact.normal.norm() != 0 || spec.contact.tangent.norm() != 0) checkContactFrame(spec.contact);
   mesh.nodeSet(spec.excitation.nodeSet);
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
