@@ -12,6 +12,7 @@
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <utility>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -87,7 +88,7 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
     std::ifstream in(manifest);
     bool listed = false;
     for (std::string line; std::getline(in, line);) {
-      if (line == "files:") listed = true;
+      if (line == "files:" || line == "earlier files:") listed = true;
       else if (listed && line.rfind("  - ", 0) == 0) earlierFiles_.push_back(line.substr(4));
       else listed = false;
     }
@@ -186,6 +187,14 @@ void RunManifest::write(const std::string& status, const std::string& extra) {
   std::ostringstream text;
   text << "status: " << status << "\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_ << "\n"
        << extra;
+  // Until this run completes, the earlier run's files still in the directory are kept on
+  // record: a refused run's manifest had dropped them, and the next run no longer said that
+  // they stay beside its own (issue 49's fourth probe).
+  if (status != "complete") {
+    bool first = true;
+    for (const auto& f : earlierFiles_)
+      if (std::filesystem::exists(dir_ + "/" + f)) text << (std::exchange(first, false) ? "earlier files:\n" : "") << "  - " << f << "\n";
+  }
   const std::string bytes = text.str();
   AtomicFile file(path);
   try {

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/io/ResponseCurveFile.hpp"
 #include "cyclone/io/TraceCheckpointDirectory.hpp"
@@ -358,6 +359,18 @@ TEST(Scenes, AnEarlierRunsFilesLeftInTheDirectoryAreSaid) {
   const auto third =
       scenes::runSceneText(duffingSceneWith("dofs: 1", "dofs: 1"), "duffing.yaml", o, Tpetra::getDefaultComm());
   for (const auto& line : third.computed) EXPECT_EQ(line.find("of an earlier run into"), std::string::npos) << line;
+  // A refused run in between keeps them on record (its manifest had dropped them, and the
+  // next run said nothing: issue 49's fourth probe).
+  const auto again = scenes::runSceneText(smallScene(), "static.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_THROW(scenes::runSceneText(smallScene("", "      sectorz: 12\n"), "bad.yaml", o, Tpetra::getDefaultComm()),
+               cyclone::InputError);
+  const auto fourth =
+      scenes::runSceneText(duffingSceneWith("dofs: 1", "dofs: 1"), "duffing.yaml", o, Tpetra::getDefaultComm());
+  said = false;
+  for (const auto& line : fourth.computed)
+    said = said || (line.find("of an earlier run into") != std::string::npos &&
+                    line.find("static.exo") != std::string::npos);
+  EXPECT_TRUE(said) << "after a refused run, the static run's files are not said";
 }
 
 // Out of memory (a process limited to 700 MB of address space, the demo's disc at mesh
