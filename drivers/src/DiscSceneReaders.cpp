@@ -70,6 +70,17 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   analysis::StaticProblem loads;
   readStaticLoads(scene.section("loads"), mesh, loads);
   const double loadsRpm = loads.speedRpm;
+  // The models' prestress spins the sector about the cyclic axis: a speed's axis given
+  // elsewhere in loads changed nothing without a word (issue 49's fourth probe).
+  {
+    const Eigen::Vector3d a = spec.axis.direction.normalized(), b = loads.axis.direction.normalized();
+    const double size = std::max(1.0, (loads.axis.point - spec.axis.point).norm());
+    if (a.cross(b).norm() > 1e-9 || a.cross(loads.axis.point - spec.axis.point).norm() > 1e-9 * size)
+      throw InputError(scene.where("loads/axis_direction"),
+                       "the speed's axis differs from the cyclic symmetry's (cyclic/axis_point, cyclic/axis_direction): "
+                       "the disc's reduced models spin about the cyclic axis; give the same axis in both, or leave "
+                       "loads' out");
+  }
   spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
   if (spec.retainedNodeSets.empty())

@@ -399,6 +399,8 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "1e-200 N is below 1e-150"},
       {"      preload: [16000.0, 20000.0, 80000.0]\n", "      force: [1.0e-200]\n",
        "cyclone/disc_response/studies/force", "the value 1e-200: excitation/amplitude: 2e-199 N is below 1e-150"},
+      {"    axis_direction: [0.0, 0.0, 1.0]\n", "    axis_direction: [0.0, 0.0995, 0.995]\n",
+       "cyclone/loads/axis_direction", "the speed's axis differs from the cyclic symmetry's"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patch_means\n", "cyclone/reduced_model/contact_dofs",
        "patch_means needs disc_response/contact/patches >= 1"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patches\n", "cyclone/reduced_model/contact_dofs",
