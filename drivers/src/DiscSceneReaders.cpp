@@ -15,6 +15,7 @@
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
@@ -108,6 +109,13 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
                                         "expansion point)");
   spec.lossFactor = r.getDouble("loss_factor", spec.lossFactor);
   if (!(spec.lossFactor >= 0)) throw InputError(r.where("loss_factor"), "must be >= 0");
+  // eta is the energy lost per radian over the energy stored: 1 already loses 2 pi times
+  // the stored energy a cycle, no structure's damping. 1e6 failed later as a frequency
+  // range's fault (issue 49's fourth probe).
+  if (spec.lossFactor > 1)
+    throw InputError(r.where("loss_factor"), numberText(spec.lossFactor) + " is above 1: a structure's loss factor "
+                                             "(2 x its damping ratio at resonance) is a few thousandths to a few "
+                                             "hundredths");
   spec.rpm = r.getDouble("speed_rpm", loadsRpm);
   if (!(spec.rpm >= 0)) throw InputError(r.where("speed_rpm"), "must be >= 0");
   checkCentrifugalStrain(spec.material, spec.rpm, mesh, spec.axis,

@@ -401,6 +401,8 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "cyclone/disc_response/studies/force", "the value 1e-200: excitation/amplitude: 2e-199 N is below 1e-150"},
       {"    axis_direction: [0.0, 0.0, 1.0]\n", "    axis_direction: [0.0, 0.0995, 0.995]\n",
        "cyclone/loads/axis_direction", "the speed's axis differs from the cyclic symmetry's"},
+      {"    loss_factor: 0.006\n", "    loss_factor: 1.0e6\n", "cyclone/reduced_model/loss_factor",
+       "1e+06 is above 1"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patch_means\n", "cyclone/reduced_model/contact_dofs",
        "patch_means needs disc_response/contact/patches >= 1"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patches\n", "cyclone/reduced_model/contact_dofs",

@@ -104,7 +104,7 @@ void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::Rotat
     if (!std::isfinite(v)) throw InputError(key, at(v) + "must be finite");
     switch (parameter) {
       case DiscStudyParameter::LossFactor:
-        if (v < 0) throw InputError(key, at(v) + "a loss factor must be >= 0");
+        if (v < 0 || v > 1) throw InputError(key, at(v) + "a loss factor must lie in 0..1");
         break;
       case DiscStudyParameter::Modes:
         if (v != std::floor(v) || v < 1 || v > modes)
