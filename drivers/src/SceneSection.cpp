@@ -34,9 +34,12 @@ std::string SceneSection::where(const std::string& key) const {
 
 std::string SceneSection::location() const { return file_ + ": section '" + path_ + "'"; }
 
-void SceneSection::markUsed(const std::string& key) { used_.insert(key); }
+void SceneSection::markUsed(const std::string& key) { used_.insert(key), asked_.insert(key); }
 
-bool SceneSection::has(const std::string& key) const { return list_.isParameter(key); }
+bool SceneSection::has(const std::string& key) const {
+  asked_.insert(key);
+  return list_.isParameter(key);
+}
 
 bool SceneSection::isSection(const std::string& key) const { return has(key) && list_.isSublist(key); }
 
@@ -193,7 +196,7 @@ void SceneSection::rejectUnknownKeys() const {
     const auto& name = list_.name(it);
     if (!used_.count(name)) {
       std::string known;
-      for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
+      for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
       throw InputError(where(name), "unknown key (known here: " + known + ")");
     }
   }

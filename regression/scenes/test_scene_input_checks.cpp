@@ -35,6 +35,23 @@ TEST(Scenes, UnknownKeyIsNamedWithItsPath) {
   EXPECT_FALSE(fs::exists(dir / "static.exo"));
 }
 
+// An unknown key's message lists the section's keys, those the scene leaves out too: the
+// disc response's list lacked gap, peak_stress, harmonics_tolerance and harmonics_max
+// (issue 49's fourth probe).
+TEST(Scenes, AnUnknownKeysMessageListsTheKeysLeftOut) {
+  std::string text = scenes::demoScene();
+  const std::string engine = "    engine_order: 3\n";
+  text.replace(text.find(engine), engine.size(), engine + "    harmonicz: 1\n");
+  // The demo's peak_stress, studies and peak_studies (the last of its sections) left out.
+  const auto at = text.find("    peak_stress:");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at);
+  const auto msg = failure(text, freshDir("known_here"));
+  EXPECT_NE(msg.find("cyclone/disc_response/harmonicz': unknown key (known here:"), std::string::npos) << msg;
+  for (const std::string key : {"gap", "peak_stress", "studies", "peak_studies", "harmonics_tolerance", "harmonics_max"})
+    EXPECT_NE(msg.find(key), std::string::npos) << key << " not listed: " << msg;
+}
+
 // A key beside 'cyclone' at the top level was ignored with exit 0 (issue 49's fourth probe).
 TEST(Scenes, AKeyBesideCycloneIsRefused) {
   const auto dir = freshDir("beside");

@@ -56,6 +56,9 @@ private:
   const Teuchos::ParameterList& list_;
   std::string file_, path_;
   std::set<std::string> used_;
+  // Every key asked about (has() included): what an unknown key's message lists as known
+  // here, so that keys this scene leaves out (gap, peak_stress) are named too.
+  mutable std::set<std::string> asked_;
   void markUsed(const std::string& key);
 };
 
