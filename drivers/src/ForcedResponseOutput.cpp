@@ -2,6 +2,8 @@
 
 #include <Teuchos_Comm.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -42,6 +44,19 @@ void writeForcedResponse(const response::ForcedResponseSetup& setup, const respo
   }
   for (const char* ext : {".h5", ".csv", ".svg"}) summary.written.push_back(outDir + "/" + name + ext);
   if (!result.harmonicsCheck.levels.empty()) summary.written.push_back(harmonicsCsv);
+  if (!result.branch.finished && !result.branch.points.empty()) {
+    // A curve that stops short of its range is the scene's answer missing in part: said
+    // as a warning with how much of the range it covers (a force scale over 1e-3..1e6
+    // gave 2 points, its checks "by 0", exit 0 without one: issue 49's fourth probe).
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const auto& p : result.branch.points) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
+    std::ostringstream msg;
+    msg << name << ": the curve is incomplete: " << result.branch.points.size() << " points over " << lo << ".." << hi
+        << " of the range " << setup.continuation.from << ".." << setup.continuation.to
+        << " (in the continuation's parameter); its checks and peak cover only those";
+    log::warn(msg.str());
+    summary.computed.push_back("warning: " + msg.str());
+  }
   summary.computed.push_back(curveLine(name, result));
   if (const auto flags = result.flagCounts(); flags.count("turn")) {
     std::ostringstream msg;

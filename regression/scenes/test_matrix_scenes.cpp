@@ -212,6 +212,27 @@ std::vector<double> crossings(const std::vector<std::vector<double>>& rows, int 
 
 }  // namespace
 
+// A curve that stops short of its range says so first: a force scale over 1e-3..1e6 traced
+// 2 points at its start, and the run ended without a warning, its checks "by 0" (issue
+// 49's fourth probe). The scene's own range traces whole and says nothing of the kind.
+TEST(Scenes, ACurveShortOfItsRangeIsSaidFirst) {
+  log::setQuiet(true);
+  std::ifstream in(std::string(CYCLONE_SCENE_DIR) + "/duffing_force.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  scenes::SceneOverrides o;
+  o.outputDirectory = freshDir("dforce_whole").string();
+  const auto whole = scenes::runSceneText(text.str(), "duffing_force.yaml", o, Tpetra::getDefaultComm());
+  for (const auto& line : whole.computed) EXPECT_EQ(line.find("incomplete"), std::string::npos) << line;
+  std::string wide = text.str();
+  wide.replace(wide.find("    from: 0.05\n    to: 3.0\n"), std::string("    from: 0.05\n    to: 3.0\n").size(),
+               "    from: 1.0e-3\n    to: 1.0e6\n");
+  o.outputDirectory = freshDir("dforce_wide").string();
+  const auto summary = scenes::runSceneText(wide, "duffing_force.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_FALSE(summary.computed.empty());
+  EXPECT_EQ(summary.computed.front().rfind("warning: frc: the curve is incomplete", 0), 0u) << summary.computed.front();
+}
+
 TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {
   log::setQuiet(true);
   const auto dirF = freshDir("dforce"), dirW = freshDir("dfreq");
