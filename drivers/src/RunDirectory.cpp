@@ -17,14 +17,23 @@ namespace cyclone::scenes {
 // into it is refused on every rank; a previous run that did not finish is said.
 std::unique_ptr<RunManifest> claimOutputDirectory(const std::string& outDir, const std::string& source,
                                                 linalg::CommPtr comm, SceneSummary& summary) {
-  if (comm->getRank() == 0) std::filesystem::create_directories(outDir);
   std::unique_ptr<RunManifest> manifest;
   std::string refused, previousUnfinished;
   if (comm->getRank() == 0) {
-    try {
-      manifest = std::make_unique<RunManifest>(outDir, source, previousUnfinished);
-    } catch (const InputError& e) {
-      refused = e.what();
+    // A file of that name (or a parent that is one) gave the raw "filesystem error" (issue
+    // 49's fourth probe): said as the output directory's fault, on every rank.
+    std::error_code made;
+    std::filesystem::create_directories(outDir, made);
+    if (made || !std::filesystem::is_directory(outDir)) {
+      refused = "the output directory cannot be made there (" +
+                (made ? made.message() : std::string("a file of that name exists")) +
+                "): give output_directory or --output a directory's path";
+    } else {
+      try {
+        manifest = std::make_unique<RunManifest>(outDir, source, previousUnfinished);
+      } catch (const InputError& e) {
+        refused = e.what();
+      }
     }
   }
   int isRefused = refused.empty() ? 0 : 1;

@@ -401,3 +401,20 @@ TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
   const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
   EXPECT_EQ(manifest.rfind("status: failed", 0), 0u) << manifest;
 }
+
+// An output directory that is a file gave the raw "filesystem error: cannot create
+// directories" (issue 49's fourth probe): said as the output directory's fault.
+TEST(Scenes, AnOutputDirectoryThatIsAFileIsSaid) {
+  log::setQuiet(true);
+  const auto dir = freshDir("output_is_a_file");
+  fs::create_directories(dir);
+  std::ofstream(dir / "a_file") << "not a directory";
+  scenes::SceneOverrides o;
+  o.outputDirectory = (dir / "a_file").string();
+  try {
+    scenes::runSceneText(duffingSceneWith("dofs: 1", "dofs: 1"), "duffing.yaml", o, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "a file as the output directory was taken";
+  } catch (const cyclone::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the output directory cannot be made there"), std::string::npos) << e.what();
+  }
+}
