@@ -68,7 +68,9 @@ DiscReducedModels reducedModelsStage(const mesh::Mesh& mesh, const DiscPlan& pla
   summary.stages.push_back({"reduced models (" + kind + ")", timer.seconds(), estimate.str()});
   std::ostringstream line;
   line << "reduced models (" << kind << ", " << ms.modes << " natural frequencies per ND, "
-       << models.retainedNodes.size() << " retained nodes) for ND";
+       << models.retainedNodes.size() << " retained nodes";
+  if (!models.retainedMeans.empty()) line << " and " << models.retainedMeans.size() << " patch means";
+  line << ") for ND";
   for (const auto& [k, m] : models.models) line << " " << k;
   line << " at " << ms.rpm << " rpm: " << models.built << " built, " << models.reused << " reused, "
        << models.seconds << " s";
