@@ -33,7 +33,7 @@ namespace {
 // modal realization): computed at every point (1, 0, or 2 undetermined), and no
 // point strictly inside a backward stretch of the frequency between two folds
 // (the middle branch of an overhang: a saddle, from the path alone) is called
-// stable. Returns how many such points were checked.
+// stable, unless a branch point lies inside it. Returns how many such points were checked.
 int expectNoStableMiddleBranch(const fs::path& dir) {
   int checked = 0;
   for (const auto& e : fs::directory_iterator(dir)) {
@@ -79,6 +79,13 @@ int expectNoStableMiddleBranch(const fs::path& dir) {
       while (a > 0 && back(a - 1, a)) --a;
       while (b + 1 < hz.size() && back(b, b + 1)) ++b;
       if (flag[a] != "fold" || flag[b] != "fold") continue;
+      // The path alone says "saddle" through the determinant's sign, which each fold
+      // flips; a branch point inside the stretch (the sign flipped without a fold: the
+      // sampled friction law's kinks on the demo's 16 kN top) flips it back, and the
+      // argument no longer holds there.
+      bool branchPoint = false;
+      for (std::size_t k = a + 1; k < b; ++k) branchPoint = branchPoint || flag[k] == "branch_point";
+      if (branchPoint) continue;
       ++checked;
       EXPECT_NE(verdict[i], "1") << name << ": point " << i << " at " << hz[i] << " Hz lies between two folds";
     }
