@@ -156,3 +156,12 @@ TEST(MeshGeometryCheck, InvertedAndDegenerateElements) {
 }
 
 }  // namespace
+
+// The bounding box's diagonal: of a box 3 x 4 x 12 (13, the closed form), whatever the
+// nodes inside it; 0 without nodes.
+TEST(Mesh, BoundingDiagonalIsTheBoxDiagonal) {
+  cyclone::mesh::Mesh m;
+  EXPECT_EQ(cyclone::mesh::boundingDiagonal(m), 0.0);
+  m.coords = {{1, -2, 5}, {4, 2, -7}, {2, 0, 0}};
+  EXPECT_DOUBLE_EQ(cyclone::mesh::boundingDiagonal(m), 13.0);
+}

@@ -269,10 +269,7 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   out.curve = sweepDisc(out.setup, out.fromHz, out.toHz, options, out.warnings);
   out.headline = discHeadline(out.curve);
   if (out.headline.found()) log::info(out.headline.text);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
-  for (const auto& x : mesh.coords)
-    for (int d = 0; d < 3; ++d) lo(d) = std::min(lo(d), x[d]), hi(d) = std::max(hi(d), x[d]);
-  out.sectorSize = mesh.coords.empty() ? 0.0 : (hi - lo).norm();
+  out.sectorSize = mesh::boundingDiagonal(mesh);
   return out;
 }
 

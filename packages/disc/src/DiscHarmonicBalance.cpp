@@ -289,10 +289,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
     // A clearance or interference beyond the small displacements the linear models hold:
     // -1e3 mm was taken, its pairs carrying 5.6e6 N against the face's 2e4 N preload, and
     // the headline said "converged" (issue 49's fourth probe).
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
-    for (const auto& x : mesh.coords)
-      for (int d = 0; d < 3; ++d) lo(d) = std::min(lo(d), x[d]), hi(d) = std::max(hi(d), x[d]);
-    const double size = mesh.coords.empty() ? 0.0 : (hi - lo).norm();
+    const double size = mesh::boundingDiagonal(mesh);
     if (std::abs(spec.gap.clearance) > 0.01 * size)
       throw InputError("gap/clearance", numberText(spec.gap.clearance) + " mm is more than 1 % of the sector's size (" +
                                             numberText(size, 4) + " mm, its bounding box's diagonal): beyond the small "

@@ -1,5 +1,7 @@
 #include "cyclone/mesh/Mesh.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -65,6 +67,15 @@ void Mesh::assignDefaultIds() {
     block.elementIds.resize(block.numElements());
     for (auto& id : block.elementIds) id = next++;
   }
+}
+
+double boundingDiagonal(const Mesh& mesh) {
+  if (mesh.coords.empty()) return 0.0;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& x : mesh.coords)
+    for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
 std::vector<Index> orphanNodes(const Mesh& mesh) {

@@ -57,6 +57,10 @@ public:
   void assignDefaultIds();
 };
 
+/// The diagonal of the nodes' bounding box (0 for no nodes): the mesh's size, against
+/// which displacements and clearances are judged small.
+double boundingDiagonal(const Mesh& mesh);
+
 /// Nodes that belong to no element (indices, ascending): nothing holds them, so a solve
 /// with their DOFs free is singular.
 std::vector<Index> orphanNodes(const Mesh& mesh);
