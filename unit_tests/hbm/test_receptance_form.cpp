@@ -211,6 +211,28 @@ TEST(ReceptanceForm, HillProblemEqualsMatrixForms) {
 }
 
 
+// The size a curve's stability budget is estimated from (ForcedResponse.cpp) is the
+// eigenproblem Hill's method solves: the count of its whole problem's eigenvalues in both
+// forms, and whole or nearest as HillOptions::denseUpTo decides.
+TEST(ReceptanceForm, HillProblemSizeIsTheEigenproblemSolved) {
+  const double w = 1.9;
+  auto [matrix, receptance] = bothForms(6, 2);
+  const Eigen::VectorXd X = newtonSolution(*matrix, w);
+  ASSERT_GT(X.size(), 0);
+  HillOptions whole;
+  whole.denseUpTo = 1 << 30;
+  const auto hm = hillStability(*matrix, X, w), hr = hillStability(*receptance, X, w, whole);
+  const auto sm = hillProblemSize(*matrix), sr = hillProblemSize(*receptance, whole);
+  EXPECT_EQ(sm.unknowns, int(hm.all.size()));
+  EXPECT_TRUE(sm.whole);
+  EXPECT_EQ(sr.unknowns, int(hr.all.size()));
+  EXPECT_TRUE(sr.whole);
+  HillOptions nearest;
+  nearest.denseUpTo = sr.unknowns - 1;
+  EXPECT_FALSE(hillProblemSize(*receptance, nearest).whole);
+  EXPECT_EQ(hillProblemSize(*receptance, nearest).unknowns, sr.unknowns);
+}
+
 // Hill's eigenvalues nearest zero only (ARPACK on the inverse, as a large problem gets
 // them: HillOptions::denseUpTo) against the whole problem's (LAPACK): the same Floquet
 // exponents and every eigenvalue up to the modulus covered, for every engine order.

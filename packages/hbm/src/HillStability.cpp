@@ -19,6 +19,12 @@ bool hillMassInvertible(const HarmonicBalanceSystem& sys) {
   return sys.coefficientOperator(sys.M(), sys.cyclic().Mnext).partialPivLu().rcond() > kSingularMass;
 }
 
+HillProblemSize hillProblemSize(const HarmonicBalanceSystem& sys, const HillOptions& options) {
+  if (!sys.isReceptance()) return {2 * sys.numDofs() * sys.numCoefficients(), true};
+  const int unknowns = 2 * receptanceModalCoordinates(sys);
+  return {unknowns, unknowns <= options.denseUpTo};
+}
+
 FloquetExponents hillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega,
                                const HillOptions& options) {
   for (const auto& c : sys.elements())

@@ -348,6 +348,16 @@ FloquetExponents nearestExponents(const Eigen::MatrixXcd& D0, const Eigen::Vecto
 
 }  // namespace
 
+int receptanceModalCoordinates(const HarmonicBalanceSystem& sys) {
+  int coordinates = 0;
+  for (int h : sys.aft().harmonics().harmonics()) {
+    const auto r = sys.receptance()->modalRealization(sys.phaseIndex(h));
+    if (!r) return 0;
+    coordinates += (h == 0 ? 1 : 2) * r->numModes();
+  }
+  return coordinates;
+}
+
 FloquetExponents receptanceHillStability(const HarmonicBalanceSystem& sys, const Eigen::VectorXd& X, double omega,
                                          const HillOptions& options) {
   if (!(omega > 0)) throw InputError("stability", "Hill's method needs a frequency > 0");

@@ -127,48 +127,59 @@ bool stabilityApplies(const ForcedResponseSetup& setup, std::string& note) {
   return true;
 }
 
+// Hill's method's cost a point, in seconds on one core of the machine the project is
+// measured on, from its problem's size alone (docs/benchmarks.md, disc_hill_stability:
+// a point of the default disc with 440 unknowns takes 0.30 s whole, 0.155 s for the
+// eigenvalues nearest zero, which grow as the size to the power 2.55 up to 1720; a
+// matrix system's whole problem about 1 s at 1200, as the cube of its size).
+double hillSecondsPerPoint(const hbm::HillProblemSize& size, bool receptance) {
+  const double n = size.unknowns;
+  if (!receptance) return std::pow(n / 1200, 3);
+  return size.whole ? 0.30 * std::pow(n / 440, 3) : 0.155 * std::pow(n / 440, 2.55);
+}
+
 // Hill's verdict per point. The receptance form's verdicts are checked with twice the
 // AFT samples: a friction contact's Jacobian moves with where its stick-slip events fall
 // on the sample grid, and near Re = 0 that can flip the sign of an exponent (the default
 // disc: +-10 /s at 256..2048 samples on a lightly damped stretch). A point whose verdict
 // changes is undetermined (2), not called either way.
-// Unless asked for (Stability::Always), Hill's method stops after its first point where
-// the whole curve would take longer than kTraceMultiple times the trace itself and
-// kKeepsUnder seconds: a curve's stability is part of the answer (which stretch of a
-// fold is followed, where a periodic response gives way to another), worth a run a few
-// times the trace's, not one it multiplies. The default disc at H = 5: 0.32 s a point
-// with the recheck (the eigenvalues nearest zero, HillOptions), 104 points against the
-// trace's 7.4 s.
-void computeStability(const ForcedResponseSetup& setup, ForcedResponseResult& result, double traceSeconds) {
-  constexpr double kKeepsUnder = 60, kTraceMultiple = 3;
+// Unless asked for (Stability::Always), Hill's method is left out of a curve whose points
+// it would take more than kEstimateUnder seconds for, estimated from the problem's size
+// and the points' count: a curve's stability is part of the answer (which stretch of a
+// fold is followed, where a periodic response gives way to another), worth a run a
+// minute or two longer, not one it multiplies. The estimate, not a clock: the same
+// input gives the same outputs however loaded the machine (with the first point timed,
+// the demo's curves, 59.7 s against a limit of 60, lost their stability under load).
+void computeStability(const ForcedResponseSetup& setup, ForcedResponseResult& result) {
+  constexpr double kEstimateUnder = 120;
   const auto& hb = *setup.system;
   std::unique_ptr<hbm::HarmonicBalanceSystem> finer;
   if (hb.isReceptance()) finer = hbm::withHarmonics(hb, hb.aft().harmonics(), 2 * hb.aft().numSamples());
   result.stabilityRechecked = finer != nullptr;
-  Timer timer;
   const std::size_t n = result.branch.points.size();
+  const auto size = hbm::hillProblemSize(hb);
+  const double estimate = double(n) * (finer ? 2 : 1) * hillSecondsPerPoint(size, hb.isReceptance());
+  if (setup.stability == Stability::Auto && estimate > kEstimateUnder) {
+    result.stabilityComputed = false;
+    std::ostringstream why;
+    why << "stability not computed: Hill's method would take about " << numberText(estimate, 2) << " s for the " << n
+        << " points (" << size.unknowns << " unknowns a point" << (finer ? ", each checked with twice the samples" : "")
+        << "), more than " << kEstimateUnder << " s (ask for stability to compute it anyway)";
+    result.stabilityNote = why.str();
+    log::warn(result.stabilityNote);
+    return;
+  }
+  Timer timer;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& pt = result.branch.points[i];
     const auto fl = hbm::hillStability(hb, pt.x, result.omega[i]);
     result.stable[i] = fl.stable ? 1 : 0;
     if (finer && hbm::hillStability(*finer, pt.x, result.omega[i]).stable != fl.stable) result.stable[i] = 2;
     if (fl.exponents.size() > 0) result.leadingExponent[i] = fl.exponents(0);
-    const double projected = timer.seconds() * double(n);
-    if (i == 0 && setup.stability == Stability::Auto && projected > std::max(kKeepsUnder, kTraceMultiple * traceSeconds)) {
-      result.stable.assign(n, -1);
-      result.leadingExponent.assign(n, std::nullopt);
-      result.stabilityComputed = false;
-      std::ostringstream why;
-      why << "stability not computed: Hill's method would take about " << projected << " s for the " << n
-          << " points (" << timer.seconds() << " s the first), more than " << kKeepsUnder << " s and "
-          << kTraceMultiple << " times the curve's own " << traceSeconds << " s (ask for stability to compute it anyway)";
-      result.stabilityNote = why.str();
-      log::warn(result.stabilityNote);
-      return;
-    }
   }
   std::ostringstream msg;
-  msg << "stability: " << result.branch.points.size() << " points by Hill's method in " << timer.seconds() << " s";
+  msg << "stability: " << n << " points by Hill's method in " << timer.seconds() << " s (estimated "
+      << numberText(estimate, 2) << " s)";
   log::info(msg.str());
 }
 
@@ -422,9 +433,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
     log::info(msg.str());
   }
   ForcedResponseResult result;
-  Timer traceTimer;
   result.branch = traceForcedResponse(setup, start);
-  const double traceSeconds = traceTimer.seconds();
   result.startMethod = start.method;
   const auto& hb = *setup.system;
   const std::size_t n = result.branch.points.size();
@@ -438,7 +447,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
   result.stable.assign(n, -1);
   result.leadingExponent.assign(n, std::nullopt);
   result.stabilityComputed = n > 0 && stabilityApplies(setup, result.stabilityNote);
-  if (result.stabilityComputed) computeStability(setup, result, traceSeconds);
+  if (result.stabilityComputed) computeStability(setup, result);
   flagPoints(result);
   if (!result.branch.finished)
     log::warn("forced response incomplete: " + result.branch.stopReason);

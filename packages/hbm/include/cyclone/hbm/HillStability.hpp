@@ -46,6 +46,18 @@ struct HillOptions {
 /// solution). True for a receptance system (its modal realization has M = I).
 bool hillMassInvertible(const HarmonicBalanceSystem& system);
 
+/// The size of the eigenproblem Hill's method solves at a point of this system, and whether
+/// it is solved whole (LAPACK) or only for the eigenvalues nearest zero (ARPACK): 2 m for
+/// the receptance form's m modal coordinates over the harmonics' blocks, 2 n nc for the
+/// matrix form (always whole). Depends on the system alone, not on the point, so a curve's
+/// cost is known before any point is checked. 0 for a receptance model without a modal
+/// realization.
+struct HillProblemSize {
+  int unknowns = 0;
+  bool whole = true;
+};
+HillProblemSize hillProblemSize(const HarmonicBalanceSystem& system, const HillOptions& options = {});
+
 /// Throws InputError for velocity-dependent elements (not supported yet), singular M, or a
 /// receptance without a modal realization.
 FloquetExponents hillStability(const HarmonicBalanceSystem& system, const Eigen::VectorXd& X, double omega,
