@@ -244,19 +244,11 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     // (a static correction of one load case per patch direction, not per face node DOF).
     const std::string contactDofs = r.getString("contact_dofs", "nodes");
     if (contactDofs == "patch_means") {
-      if (spec.contact.patches < 1)
-        throw InputError(r.where("contact_dofs"), "patch_means needs disc_response/contact/patches >= 1 (the face "
-                                                  "split into patches whose mean motions the models retain)");
-      const auto pairs = disc::shroudContactPairs(mesh, sectors, plan.modelSpec.axis, spec.contact);
-      plan.modelSpec.retainedMeans = disc::shroudPatchMeans(pairs, disc::shroudContactValues(mesh, pairs, spec.contact),
-                                                            spec.contact);
-      auto& sets = plan.modelSpec.retainedNodeSets;
-      for (const auto& face : {spec.contact.leftSet, spec.contact.rightSet})
-        sets.erase(std::remove(sets.begin(), sets.end(), face), sets.end());
-      if (sets.empty())
-        throw InputError(r.where("retained_node_sets"), "retains only the contact faces, whose patch means "
-                                                        "contact_dofs: patch_means retains instead: add the "
-                                                        "excitation's node set");
+      try {
+        plan.modelSpec = disc::retainingPatchMeans(plan.modelSpec, mesh, spec.contact);
+      } catch (const InputError& e) {
+        throw InputError(r.where(e.where()), e.problem());
+      }
     } else if (contactDofs != "nodes") {
       throw InputError(r.where("contact_dofs"), "use nodes (every contact face node, the default) or patch_means "
                                                 "(each contact patch's mean motion)");

@@ -1,5 +1,6 @@
 #include "cyclone/disc/ShroudContactLaw.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -94,6 +95,20 @@ std::vector<rom::RetainedMean> shroudPatchMeans(const mesh::NodePairing& pairs, 
       out.push_back(std::move(mean));
     }
   return out;
+}
+
+DiscModelSpec retainingPatchMeans(DiscModelSpec models, const mesh::Mesh& mesh, const ShroudContactSpec& contact) {
+  if (contact.patches < 1)
+    throw InputError("contact_dofs", "patch_means needs disc_response/contact/patches >= 1 (the face split into "
+                                     "patches whose mean motions the models retain)");
+  const auto pairs = shroudContactPairs(mesh, models.sectors, models.axis, contact);
+  models.retainedMeans = shroudPatchMeans(pairs, shroudContactValues(mesh, pairs, contact), contact);
+  auto& sets = models.retainedNodeSets;
+  for (const auto& face : {contact.leftSet, contact.rightSet}) sets.erase(std::remove(sets.begin(), sets.end(), face), sets.end());
+  if (sets.empty())
+    throw InputError("retained_node_sets", "retains only the contact faces, whose patch means contact_dofs: "
+                                           "patch_means retains instead: add the excitation's node set");
+  return models;
 }
 
 }  // namespace cyclone::disc

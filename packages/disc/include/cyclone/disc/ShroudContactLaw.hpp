@@ -44,4 +44,10 @@ ShroudContactValues shroudContactValues(const mesh::Mesh& mesh, const mesh::Node
 std::vector<rom::RetainedMean> shroudPatchMeans(const mesh::NodePairing& pairs, const ShroudContactValues& values,
                                                 const ShroudContactSpec& contact);
 
+/// `models` made to retain the contact patches' mean motions (shroudPatchMeans) in place
+/// of the contact faces' nodes, whose node sets leave models.retainedNodeSets.
+/// InputError naming `contact_dofs` for a contact without patches, `retained_node_sets`
+/// where only the contact faces were retained (nothing would be left for the excitation).
+DiscModelSpec retainingPatchMeans(DiscModelSpec models, const mesh::Mesh& mesh, const ShroudContactSpec& contact);
+
 }  // namespace cyclone::disc
