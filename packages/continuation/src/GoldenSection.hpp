@@ -1,32 +1,37 @@
 #pragma once
-// Private to continuation: golden-section search for the smallest measure on [a, b],
-// the optimum of a peak over a parameter (PeakFollowing's and PeakContinuation's).
+// Private to continuation: the golden-section search every extremum over a parameter
+// uses (a peak over the frequency, PeakSearch; the smallest peak over a study's
+// parameter, PeakFollowing and PeakContinuation).
 #include <cmath>
 #include <optional>
 
 namespace cyclone::continuation::detail {
 
-/// `evaluate(p, trial)` fills a trial at p and returns false where it cannot (the search
-/// stops: nothing returned); `measure(trial)` is what is minimised. The two inner points
-/// are kept, so each step costs one evaluation. Returns the better inner trial once the
-/// bracket is narrower than `tolerance`.
-template <class Trial, class Evaluate, class Measure>
-std::optional<Trial> goldenSectionMinimum(double a, double b, double tolerance, Evaluate&& evaluate,
-                                          Measure&& measure) {
-  const double golden = 0.5 * (std::sqrt(5.0) - 1);
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  Trial pc, pd;
-  if (!evaluate(c, pc) || !evaluate(d, pd)) return std::nullopt;
-  while (std::abs(b - a) > tolerance) {
-    if (measure(pc) < measure(pd)) {
-      b = d, d = c, pd = pc, c = b - golden * (b - a);
-      if (!evaluate(c, pc)) return std::nullopt;
+/// From a bracket left < mid < right (in `coordinate`) whose mid is better than both
+/// ends, each step evaluates one point a golden fraction of the way from mid into the
+/// larger part and keeps the better three: one evaluation a step, the bracket shrinking
+/// by the golden ratio every two. `evaluate(p, end, mid)` gives the trial at p (between
+/// mid and the bracket's `end`, the trials it may start from) or nothing where it cannot
+/// (the search stops: nothing returned); `better(a, b)` says whether a beats b. Returns
+/// the best trial once the bracket is narrower than `tolerance`.
+template <class Trial, class Coordinate, class Evaluate, class Better>
+std::optional<Trial> goldenSection(Trial left, Trial mid, Trial right, double tolerance, Coordinate&& coordinate,
+                                   Evaluate&& evaluate, Better&& better) {
+  const double golden = 0.5 * (3 - std::sqrt(5.0));
+  while (std::abs(coordinate(right) - coordinate(left)) > tolerance) {
+    const bool rightPart = std::abs(coordinate(right) - coordinate(mid)) > std::abs(coordinate(mid) - coordinate(left));
+    const Trial& end = rightPart ? right : left;
+    const double p = coordinate(mid) + golden * (coordinate(end) - coordinate(mid));
+    std::optional<Trial> s = evaluate(p, end, mid);
+    if (!s) return std::nullopt;
+    if (better(*s, mid)) {
+      (rightPart ? left : right) = std::move(mid);
+      mid = std::move(*s);
     } else {
-      a = c, c = d, pc = pd, d = a + golden * (b - a);
-      if (!evaluate(d, pd)) return std::nullopt;
+      (rightPart ? right : left) = std::move(*s);
     }
   }
-  return measure(pc) < measure(pd) ? pc : pd;
+  return mid;
 }
 
 }  // namespace cyclone::continuation::detail

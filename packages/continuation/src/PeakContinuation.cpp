@@ -430,7 +430,7 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
     if (out.optimum < 0 || out.points[i].measure < out.points[std::size_t(out.optimum)].measure) out.optimum = int(i);
   const std::size_t k = std::size_t(out.optimum);
   if (o.locateOptimum && k > 0 && k + 1 < out.points.size()) {
-    const auto peakMeasure = [&](double q, FollowedPeak& peak) {
+    const auto peakMeasure = [&](double q, const FollowedPeak&, const FollowedPeak&) -> std::optional<FollowedPeak> {
       // The traced peak's phase, interpolated in q, as the start.
       double phi = condition.phaseOf(out.points[k].x);
       for (std::size_t i = 0; i + 1 < out.points.size(); ++i) {
@@ -443,20 +443,20 @@ FollowedPeakCurve continuePeak(const PeakTrackingProblem& P, const Eigen::Vector
         }
       }
       Condition c;
-      if (!condition.peakAt(q, phi, c)) return false;
+      if (!condition.peakAt(q, phi, c)) return std::nullopt;
       try {
-        peak = condition.peakPoint(condition.lastPeakPhase(), q, &c);
+        return condition.peakPoint(condition.lastPeakPhase(), q, &c);
       } catch (const SolverError&) {
-        return false;
+        return std::nullopt;
       }
-      return true;
     };
-    const auto located = detail::goldenSectionMinimum<FollowedPeak>(
-        condition.coordinateOf(out.points[k - 1].parameter), condition.coordinateOf(out.points[k + 1].parameter),
-        o.optimumTolerance, peakMeasure, [](const FollowedPeak& p) { return p.measure; });
+    const auto located = detail::goldenSection(
+        out.points[k - 1], out.points[k], out.points[k + 1], o.optimumTolerance,
+        [&](const FollowedPeak& p) { return condition.coordinateOf(p.parameter); }, peakMeasure,
+        [](const FollowedPeak& a, const FollowedPeak& b) { return a.measure < b.measure; });
     if (located) {
       const FollowedPeak& best = *located;
-      if (best.measure <= out.points[k].measure) {
+      if (best.measure < out.points[k].measure) {  // else the grid's point is the optimum to the tolerance
         // Into the curve in its order of tracing (between k's neighbours).
         const double qb = condition.coordinateOf(best.parameter), qk = condition.coordinateOf(out.points[k].parameter),
                      qNext = condition.coordinateOf(out.points[k + 1].parameter);

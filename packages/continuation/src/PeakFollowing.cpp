@@ -153,15 +153,18 @@ void Follower::locateOptimum() {
   out_.optimum = int(k);
   if (k == 0 || k + 1 >= pts.size() || pts[k].jump || pts[k + 1].jump) return;
   // Each trial from the nearest of the three grid points around the smallest.
-  auto peakAt = [&](double p, FollowedPeak& peak) {
+  auto peakAt = [&](double p, const FollowedPeak&, const FollowedPeak&) {
     std::size_t near = k - 1;
     for (std::size_t j : {k, k + 1})
       if (std::abs(p - pts[j].parameter) < std::abs(p - pts[near].parameter)) near = j;
-    return searchFrom(p, pts[near].x, pts[near].frequency, peak);
+    FollowedPeak peak;
+    return searchFrom(p, pts[near].x, pts[near].frequency, peak) ? std::optional<FollowedPeak>(std::move(peak))
+                                                                 : std::nullopt;
   };
   const double tolerance = 1e-6 * std::abs(o_.parameters.back() - o_.parameters.front());
-  auto located = detail::goldenSectionMinimum<FollowedPeak>(pts[k - 1].parameter, pts[k + 1].parameter, tolerance,
-                                                            peakAt, [](const FollowedPeak& p) { return p.measure; });
+  auto located = detail::goldenSection(
+      pts[k - 1], pts[k], pts[k + 1], tolerance, [](const FollowedPeak& p) { return p.parameter; }, peakAt,
+      [](const FollowedPeak& a, const FollowedPeak& b) { return a.measure < b.measure; });
   if (!located) return;
   FollowedPeak best = std::move(*located);
   const auto at = pts.begin() + long(best.parameter < pts[k].parameter ? k : k + 1);

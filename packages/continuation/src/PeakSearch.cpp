@@ -1,5 +1,7 @@
 #include "cyclone/continuation/PeakSearch.hpp"
 
+#include "GoldenSection.hpp"
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -133,28 +135,23 @@ bool PeakSearch::bracket(Solved& left, Solved& mid, Solved& right, std::string& 
 
 // Golden-section search on [left, right] with mid the highest point inside.
 bool PeakSearch::goldenSection(Solved left, Solved mid, Solved right, std::string& why) {
-  const double golden = 0.5 * (3 - std::sqrt(5.0));
-  while (right.p - left.p > o_.parameterTolerance) {
-    const bool rightPart = right.p - mid.p > mid.p - left.p;
-    const Solved& end = rightPart ? right : left;
-    const double p = mid.p + golden * (end.p - mid.p);
-    auto s = solveAt(p, predict(end, mid, p));
-    if (!s) s = solveAt(p, end.x);
-    if (!s) {
-      std::ostringstream msg;
-      msg << "no solution at p = " << p << " inside the bracket [" << left.p << ", " << right.p << "]";
-      why = msg.str();
-      return false;
-    }
-    accept(*s);
-    if (s->g > mid.g) {
-      (rightPart ? left : right) = mid;
-      mid = *s;
-    } else {
-      (rightPart ? right : left) = *s;
-    }
-  }
-  return true;
+  const auto solved = detail::goldenSection(
+      left, mid, right, o_.parameterTolerance, [](const Solved& s) { return s.p; },
+      [&](double p, const Solved& end, const Solved& inner) {
+        auto s = solveAt(p, predict(end, inner, p));
+        if (!s) s = solveAt(p, end.x);
+        if (s) {
+          accept(*s);
+        } else {
+          std::ostringstream msg;
+          msg << "no solution at p = " << p << " inside the bracket [" << std::min(end.p, inner.p) << ", "
+              << std::max(end.p, inner.p) << "]";
+          why = msg.str();
+        }
+        return s;
+      },
+      [](const Solved& a, const Solved& b) { return a.g > b.g; });
+  return solved.has_value();
 }
 
 PeakSearchResult PeakSearch::run(const Eigen::VectorXd& x0) {
