@@ -86,8 +86,8 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   std::printf("a wall at 0.9 .. 1.0: %zu points, %s\n", wall.points.size(), wall.stopReason.c_str());
   EXPECT_FALSE(wall.finished);
   EXPECT_EQ(wall.end, continuation::BranchEnd::Wall) << wall.stopReason;
-  EXPECT_NE(wall.stopReason.find("traced again with 2 times the 256 AFT samples"), std::string::npos)
-      << wall.stopReason;
+  EXPECT_EQ(wall.retraces.samplesFactorsTried, std::vector<int>{2}) << wall.stopReason;  // four times not tried
+  EXPECT_EQ(wall.retraces.samplesFactor, 1) << wall.stopReason;                        // the first curve kept
   EXPECT_NE(wall.stopReason.find("not a sampling corner, four times not tried"), std::string::npos)
       << wall.stopReason;
   EXPECT_EQ(walled.system->aft().numSamples(), 256);  // the first curve and its system kept
@@ -99,7 +99,8 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   EXPECT_EQ(stopped.points.size(), 10u);
   EXPECT_EQ(stopped.end, continuation::BranchEnd::PointBudget) << stopped.stopReason;
   EXPECT_NE(stopped.stopReason.find("max_points 10"), std::string::npos) << stopped.stopReason;
-  EXPECT_EQ(stopped.stopReason.find("AFT samples"), std::string::npos) << stopped.stopReason;
+  EXPECT_TRUE(stopped.retraces.samplesFactorsTried.empty()) << stopped.stopReason;
+  EXPECT_FALSE(stopped.retraces.otherEngineTried) << stopped.stopReason;
   EXPECT_EQ(budget.system->aft().numSamples(), 256);
 
   auto whole = jenkinsChain(continuation::ContinuationOptions().maxSteps);
@@ -107,5 +108,6 @@ TEST(RetraceWithSamples, AStopThatStaysWithTwiceTheSamplesIsNotRetracedAgain) {
   std::printf("default budget: %zu points, %s\n", traced.points.size(), traced.stopReason.c_str());
   EXPECT_TRUE(traced.finished) << traced.stopReason;
   EXPECT_EQ(traced.end, continuation::BranchEnd::RangeEnd) << traced.stopReason;
-  EXPECT_EQ(traced.stopReason.find("AFT samples"), std::string::npos) << traced.stopReason;
+  EXPECT_TRUE(traced.retraces.samplesFactorsTried.empty()) << traced.stopReason;
+  EXPECT_FALSE(traced.retraces.otherEngineTried) << traced.stopReason;
 }

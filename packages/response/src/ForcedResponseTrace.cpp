@@ -342,6 +342,7 @@ continuation::Branch traceWithOneEngine(ForcedResponseSetup& setup, const Starti
 continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const StartingPoint& start,
                                        StartSearches& searches) {
   auto branch = traceWithOneEngine(setup, start, searches);
+  branch.retraces.engine = setup.continuation.engine;
   if (branch.finished || !setup.fallback || pointBudgetSpent(setup, branch)) return branch;
   const auto primary = setup.continuation;
   continuation::ContinuationOptions other = *setup.fallback;
@@ -351,6 +352,8 @@ continuation::Branch traceWithFallback(ForcedResponseSetup& setup, const Startin
   setup.continuation = other;
   const StartingPoint again = start.x.size() > 0 ? start : searchStart(setup, searches);
   auto second = traceWithOneEngine(setup, again, searches);
+  second.retraces.engine = other.engine;
+  branch.retraces.otherEngineTried = second.retraces.otherEngineTried = true;
   setup.continuation = primary;
   setup.apply(primary.from);
   if (second.finished) {
@@ -418,12 +421,17 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
   if (setup.fallback) setup.fallback->checkpoints = nullptr;
   std::ostringstream tried;
   std::string notRetried;  // why four times was not tried
+  std::vector<int> factorsTried;
   for (const int factor : {2, 4}) {
+    factorsTried.push_back(factor);
     setup.system = hbm::withHarmonics(*original, original->aft().harmonics(), factor * samples);
     log::info("forced response: incomplete with " + std::to_string(samples) + " AFT samples; traced again with " +
               std::to_string(factor * samples));
     StartSearches searches;  // a new system: nothing searched yet
     auto again = traceWithFallback(setup, searchStart(setup, searches), searches);
+    again.retraces.samplesFactor = factor;
+    again.retraces.samplesFactorsTried = factorsTried;
+    again.retraces.otherEngineTried = again.retraces.otherEngineTried || first.retraces.otherEngineTried;
     if (again.finished) {
       setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
       again.stopReason += " (with " + std::to_string(factor * samples) + " AFT samples" + tried.str() + ": with " +
@@ -447,6 +455,7 @@ continuation::Branch traceWithMoreSamples(ForcedResponseSetup& setup, continuati
   setup.continuation = continuationBefore, setup.fallback = fallbackBefore;
   setup.system = std::move(original);
   setup.apply(setup.continuation.from);
+  first.retraces.samplesFactorsTried = factorsTried;
   first.stopReason += (notRetried.empty() ? "; traced again with 2 and 4 times the " : "; traced again with 2 times the ") +
                       std::to_string(samples) + " AFT samples, incomplete too" + notRetried;
   return first;

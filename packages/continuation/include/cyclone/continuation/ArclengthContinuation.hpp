@@ -196,6 +196,16 @@ struct Branch {
   /// consecutive points across a start are not neighbours on a path.
   std::vector<std::size_t> segmentStarts;
   ContinuationStatistics statistics;  ///< PredictorCorrector only
+  /// How a curve that needed more than one trace was obtained (response::traceForcedResponse's
+  /// retries), what stopReason says in words: the engine whose trace this is, whether the
+  /// other engine was tried because one left the curve incomplete, the AFT samples of the
+  /// kept trace as a multiple of the system's, and every multiple tried beyond 1.
+  struct Retraces {
+    ContinuationOptions::Engine engine = ContinuationOptions::Engine::PredictorCorrector;
+    bool otherEngineTried = false;
+    int samplesFactor = 1;
+    std::vector<int> samplesFactorsTried;
+  } retraces;
 };
 
 /// Newton steps by GMRES on problem.jacobianOperator (see ContinuationOptions::linearSolver).
