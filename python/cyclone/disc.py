@@ -12,6 +12,7 @@ headline peak.
                                             amplitude=20.0, harmonics_check_to=2)
     modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
     peaks = cyclone.disc.follow_peak(response, "preload", (10000.0, 40000.0), values=8)
+    curves = cyclone.disc.study(response, "mu", [0.2, 0.4, 0.8])
     stress = cyclone.disc.peak_stress(response, fatigue="Ti-6Al-4V")
 
 Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
@@ -25,6 +26,7 @@ from . import _core, arrays
 from .errors import InputError
 from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
+from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
 from .response import ForcedResponse
 
 

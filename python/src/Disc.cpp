@@ -191,7 +191,7 @@ void bindDiscResponse(py::module_& m) {
         d["num_dofs"] = r.setup.system->numDofs();
         d["library_seconds"] = librarySeconds;
         // Kept for the calls that start from this curve (the peak following, the stresses at the peak).
-        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r)});
+        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r), sweep});
         return d;
       },
       py::arg("mesh"), py::arg("models"), py::arg("spec"), py::arg("from_hz"), py::arg("to_hz"), py::arg("family"),

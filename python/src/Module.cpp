@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindDisc(m);
   cyclone::python::bindDiscPeakFollowing(m);
   cyclone::python::bindDiscPeakStress(m);
+  cyclone::python::bindDiscStudies(m);
 }
