@@ -25,6 +25,7 @@ import numpy as np
 from . import _core, arrays
 from .errors import InputError
 from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.disc's API)
+from .disc_static import StaticSolution, static_solve  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
 from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
 from .response import ForcedResponse

@@ -30,5 +30,7 @@ void bindDiscPeakFollowing(pybind11::module_& m);
 void bindDiscPeakStress(pybind11::module_& m);
 /// The disc's value-list studies: a frequency curve per value of a parameter.
 void bindDiscStudies(pybind11::module_& m);
+/// One linear static solve of a mesh under its centrifugal load.
+void bindStaticSolve(pybind11::module_& m);
 
 }  // namespace cyclone::python

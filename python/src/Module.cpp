@@ -16,4 +16,5 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindDiscPeakFollowing(m);
   cyclone::python::bindDiscPeakStress(m);
   cyclone::python::bindDiscStudies(m);
+  cyclone::python::bindStaticSolve(m);
 }
