@@ -12,6 +12,7 @@ headline peak.
                                             amplitude=20.0, harmonics_check_to=2)
     modes.frequencies_hz(3), response.headline, response.curve.omega, response.curve.max_abs
     peaks = cyclone.disc.follow_peak(response, "preload", (10000.0, 40000.0), values=8)
+    curves = cyclone.disc.study(response, "mu", [0.2, 0.4, 0.8])
     stress = cyclone.disc.peak_stress(response, fatigue="Ti-6Al-4V")
 
 Units are the library's: mm, N, s, t (MPa, t/mm^3)."""
@@ -24,7 +25,9 @@ import numpy as np
 from . import _core, arrays
 from .errors import InputError
 from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.disc's API)
+from .disc_static import StaticSolution, static_solve  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
+from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
 from .response import ForcedResponse
 
 
@@ -70,6 +73,12 @@ def shrouded_sector(**parameters):
 def read_mesh(path, sectors):
     """A sector's mesh from a file (Exodus II, CalculiX/Abaqus .inp, Gmsh .msh) of a disc of `sectors`."""
     return Mesh(_core.read_mesh(str(path)), int(sectors))
+
+
+def write_mesh(mesh, path):
+    """Writes `mesh` as a mesher would: Abaqus .inp or Exodus II .exo (by the extension),
+    its node sets with it."""
+    _core.write_mesh(mesh._core, str(path))
 
 
 @dataclass(frozen=True)
@@ -165,9 +174,31 @@ def modal_sweep(mesh, speeds_rpm, modes_per_nd=6, nodal_diameters=None, material
     return ModalSweep(*_core.modal_sweep(mesh._core, spec))
 
 
+@dataclass(frozen=True)
+class ModelCheck:
+    """A reduced model against the full FE model at one nodal diameter (disc_model_check.csv):
+    per frequency hz[i], |A| at the first retained DOF of the excitation's direction,
+    reduced[i] and full[i], and error[i], ||A_reduced - A_full||_F / ||A_full||_F
+    estimated by 8 random probe columns; reused: read back with a cached model (checked
+    when it was built, at checked_at)."""
+
+    nodal_diameter: int
+    hz: np.ndarray
+    reduced: np.ndarray
+    full: np.ndarray
+    error: np.ndarray
+    reused: bool
+    checked_at: str
+
+    @property
+    def max_error(self):
+        return float(self.error.max())
+
+
 class ReducedModels:
     """One reduced model per nodal diameter; natural_hz[k]: the cantilevered sector's
-    distinct natural frequencies at nodal diameter k (Hz); reused/built: from the cache or not."""
+    distinct natural frequencies at nodal diameter k (Hz); reused/built: from the cache or
+    not; check: a ModelCheck (reduced_models(check_nodal_diameter=k)) or None."""
 
     def __init__(self, core, spec, cache):
         self._core = core
@@ -176,6 +207,8 @@ class ReducedModels:
         self.natural_hz = {k: np.array(v) for k, v in core.natural_hz.items()}
         self.files = dict(core.files)
         self.reused, self.built, self.seconds = core.reused, core.built, core.seconds
+        check = core.check
+        self.check = ModelCheck(**check) if check["nodal_diameter"] >= 0 and len(check["hz"]) else None
 
     def __repr__(self):
         return f"<ReducedModels: ND {self.nodal_diameters}, {self.built} built, {self.reused} reused>"
@@ -188,9 +221,12 @@ def nodal_diameters_for(sectors, engine_order, harmonics):
 
 def reduced_models(mesh, rpm, nodal_diameters, cache_directory="", material=Material(), sectors=None, modes=20,
                    loss_factor=0.006, kind="hybrid", prestress="nonlinear", omega0=0.0, fixed_node_sets=("bore",),
-                   retained_node_sets=("shroud_contact_left", "shroud_contact_right", "mid_blade")):
+                   retained_node_sets=("shroud_contact_left", "shroud_contact_right", "mid_blade"),
+                   check_nodal_diameter=None, check_frequencies=12):
     """The models of `nodal_diameters` on the prestress at `rpm`, read from `cache_directory`
-    where a model of the same inputs is there ("": no cache). The scenes' reduced_model keys."""
+    where a model of the same inputs is there ("": no cache). The scenes' reduced_model keys;
+    check_nodal_diameter: that one of `nodal_diameters` compared with the full FE
+    compliance at check_frequencies frequencies (a scene's check_frequencies)."""
     spec = _core.DiscModelSpec()
     spec.material = (material.name, material.E, material.nu, material.rho)
     spec.sectors = int(sectors if sectors is not None else mesh.sectors or 0)
@@ -201,6 +237,10 @@ def reduced_models(mesh, rpm, nodal_diameters, cache_directory="", material=Mate
     spec.kind = kind
     spec.set_prestress(prestress)
     spec.fixed_node_sets, spec.retained_node_sets = list(fixed_node_sets), list(retained_node_sets)
+    if check_nodal_diameter is not None:
+        if int(check_nodal_diameter) not in [int(k) for k in nodal_diameters]:
+            raise InputError("check_nodal_diameter", f"{check_nodal_diameter} is not one of nodal_diameters")
+        spec.check_nodal_diameter, spec.check_frequencies = int(check_nodal_diameter), int(check_frequencies)
     return ReducedModels(_core.disc_reduced_models(mesh._core, spec, [int(k) for k in nodal_diameters],
                                                    str(cache_directory)), spec, str(cache_directory))
 

@@ -28,5 +28,9 @@ void bindDisc(pybind11::module_& m);
 void bindDiscPeakFollowing(pybind11::module_& m);
 /// The sector's stresses and fatigue margin at the disc's peak.
 void bindDiscPeakStress(pybind11::module_& m);
+/// The disc's value-list studies: a frequency curve per value of a parameter.
+void bindDiscStudies(pybind11::module_& m);
+/// One linear static solve of a mesh under its centrifugal load.
+void bindStaticSolve(pybind11::module_& m);
 
 }  // namespace cyclone::python

@@ -22,6 +22,8 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/mesh/AbaqusIO.hpp"
+#include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/mesh/MeshReader.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 
@@ -85,6 +87,15 @@ void bindMesh(py::module_& m) {
     py::gil_scoped_release release;
     return std::make_shared<mesh::Mesh>(mesh::readMesh(path));
   });
+  // As a mesher would write it, for a script that reads a mesh file (example 01).
+  m.def("write_mesh", [](const mesh::Mesh& mesh, const std::string& path) {
+    const auto dot = path.rfind('.');
+    const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    if (ext != ".inp" && ext != ".exo") throw InputError("path", "'" + path + "': must end in .inp (Abaqus) or .exo (Exodus II)");
+    py::gil_scoped_release release;
+    if (ext == ".inp") mesh::writeAbaqusInp(path, mesh);
+    else mesh::writeExodus(path, mesh);
+  });
 }
 
 void bindReducedModels(py::module_& m) {
@@ -109,7 +120,9 @@ void bindReducedModels(py::module_& m) {
           [](S& s, const std::string& name) { s.kind = disc::reducedModelKindFromName(name, "kind"); })
       .def_readwrite("modes", &S::modes)
       .def_readwrite("omega0", &S::omega0)
-      .def_readwrite("loss_factor", &S::lossFactor);
+      .def_readwrite("loss_factor", &S::lossFactor)
+      .def_readwrite("check_nodal_diameter", &S::checkNodalDiameter)
+      .def_readwrite("check_frequencies", &S::checkFrequencies);
   using R = disc::DiscReducedModels;
   py::class_<R, std::shared_ptr<R>>(m, "DiscReducedModels")
       .def_readonly("sectors", &R::sectors)
@@ -119,6 +132,16 @@ void bindReducedModels(py::module_& m) {
       .def_readonly("reused", &R::reused)
       .def_readonly("built", &R::built)
       .def_readonly("seconds", &R::seconds)
+      .def_property_readonly("check",
+                             [](const R& r) {
+                               const auto& c = r.check;
+                               return py::dict(py::arg("nodal_diameter") = c.nodalDiameter,
+                                               py::arg("hz") = py::array(py::cast(c.hz)),
+                                               py::arg("reduced") = py::array(py::cast(c.reduced)),
+                                               py::arg("full") = py::array(py::cast(c.full)),
+                                               py::arg("error") = py::array(py::cast(c.error)),
+                                               py::arg("reused") = c.reused, py::arg("checked_at") = c.checkedAt);
+                             })
       .def_property_readonly("nodal_diameters", [](const R& r) {
         std::vector<int> nds;
         for (const auto& [k, model] : r.models) nds.push_back(k);
@@ -191,7 +214,7 @@ void bindDiscResponse(py::module_& m) {
         d["num_dofs"] = r.setup.system->numDofs();
         d["library_seconds"] = librarySeconds;
         // Kept for the calls that start from this curve (the peak following, the stresses at the peak).
-        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r)});
+        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r), sweep});
         return d;
       },
       py::arg("mesh"), py::arg("models"), py::arg("spec"), py::arg("from_hz"), py::arg("to_hz"), py::arg("family"),

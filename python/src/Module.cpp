@@ -15,4 +15,6 @@ PYBIND11_MODULE(_core, m) {
   cyclone::python::bindDisc(m);
   cyclone::python::bindDiscPeakFollowing(m);
   cyclone::python::bindDiscPeakStress(m);
+  cyclone::python::bindDiscStudies(m);
+  cyclone::python::bindStaticSolve(m);
 }

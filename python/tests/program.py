@@ -33,3 +33,48 @@ def read_csv(path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     return {key: np.array([row[key] for row in rows]) for key in rows[0]}
+
+
+# The disc the disc tests run by the program and from Python: the sector above at
+# 10 000 rpm, engine order 3, harmonics 0..1 checked with 2, 20 kN preload over the
+# shroud face, 20 N at mid-blade; Ti-6Al-4V for the margin.
+DISC_SCENE = """cyclone:
+  analysis: [disc_response]
+""" + SECTOR.replace("rho: 4.507e-9}", "rho: 4.507e-9, fatigue: {data: Ti-6Al-4V}}") + """  loads: {speed_rpm: 10000.0}
+  reduced_model: {check_frequencies: 0}
+  disc_response:
+    engine_order: 3
+    harmonics: [0, 1]
+    harmonics_check_to: 2
+    contact: {preload: 20000.0}
+    excitation: {amplitude: 20.0}
+"""
+
+
+def disc_response(out):
+    """DISC_SCENE's response from Python, on the reduced models the program wrote in `out`
+    (the same inputs, so their files: none built again)."""
+    import cyclone
+
+    sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
+    nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
+    models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds, cache_directory=out / "reduced_models")
+    assert (models.reused, models.built) == (3, 0)
+    return cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
+                                        amplitude=20.0, harmonics_check_to=2)
+
+
+def assert_peaks_equal(peaks, path, parameter):
+    """A followed peak as the program's peak_<parameter>.csv: every value's parameter, peak
+    frequency, peak and force_beyond_h to its 10 significant digits, the jumps and the optimum."""
+    expected = read_csv(path)
+    assert len(peaks) == len(expected[parameter])
+    number = lambda key: expected[key].astype(float)  # noqa: E731
+    np.testing.assert_allclose(peaks.parameter, number(parameter), rtol=1e-9)
+    np.testing.assert_allclose(peaks.hz, number("peak_hz"), rtol=1e-9)
+    np.testing.assert_allclose(peaks.peak, number("peak_max_abs"), rtol=1e-9)
+    np.testing.assert_array_equal(peaks.jump.astype(int), expected["jump"].astype(int))
+    optimum = np.flatnonzero(expected["optimum"].astype(int))
+    assert peaks.optimum == (int(optimum[0]) if len(optimum) else None)
+    beyond = np.array([float(v) if v else -1.0 for v in expected["force_beyond_h"]])
+    np.testing.assert_allclose(peaks.force_beyond, beyond, rtol=1e-9)

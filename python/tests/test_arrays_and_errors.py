@@ -152,3 +152,19 @@ def test_the_discs_peak_studies_need_a_disc_response(call):
     with pytest.raises(cyclone.InputError) as error:
         call(curve)
     assert error.value.key == "response"
+
+
+def test_a_solver_failure_arrives_as_cyclone_solver_error():
+    # The sector held at its one mid-blade node: accepted (the set exists, as a static
+    # scene accepts it), but three pinned displacements leave the three rigid rotations
+    # about that node, so the stiffness of its 3 n - 3 free DOFs is singular and CHOLMOD's
+    # factorization refuses it: the library's SolverError, a RuntimeError, not an InputError.
+    sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
+    assert len(sector.node_sets["mid_blade"]) == 1
+    with pytest.raises(cyclone.SolverError) as error:
+        cyclone.disc.static_solve(sector, speed_rpm=10000.0, fixed_node_sets=["mid_blade"])
+    assert isinstance(error.value, RuntimeError) and not isinstance(error.value, ValueError)
+    free = 3 * sector.num_nodes - 3
+    assert str(error.value).startswith(f"CHOLMOD: the matrix ({free} equations) is not positive definite")
+    # Held at the bore the same call solves.
+    assert cyclone.disc.static_solve(sector, speed_rpm=10000.0).relative_residual < 1e-8

@@ -15,17 +15,7 @@ import pytest
 import cyclone
 import program
 
-SCENE = """cyclone:
-  analysis: [disc_response]
-""" + program.SECTOR.replace("rho: 4.507e-9}", "rho: 4.507e-9, fatigue: {data: Ti-6Al-4V}}") + """  loads: {speed_rpm: 10000.0}
-  reduced_model: {check_frequencies: 0}
-  disc_response:
-    engine_order: 3
-    harmonics: [0, 1]
-    harmonics_check_to: 2
-    contact: {preload: 20000.0}
-    excitation: {amplitude: 20.0}
-    peak_studies:
+SCENE = program.DISC_SCENE + """    peak_studies:
       preload: {range: [10000.0, 40000.0], values: 4}
     peak_stress: {animation_steps: 8}
 """
@@ -38,13 +28,7 @@ def program_out(cyclone_program, tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def python_response(program_out):
-    sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
-    nds = cyclone.disc.nodal_diameters_for(sector.sectors, engine_order=3, harmonics=[0, 1, 2])
-    models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds,
-                                         cache_directory=program_out / "reduced_models")
-    assert (models.reused, models.built) == (3, 0)  # the same inputs, so the program's files
-    return cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
-                                        amplitude=20.0, harmonics_check_to=2)
+    return program.disc_response(program_out)
 
 
 @pytest.mark.disc
@@ -72,20 +56,11 @@ def test_the_disc_response_equals_the_programs(program_out, python_response):
 
 @pytest.mark.disc
 def test_the_peak_over_the_preload_equals_the_programs(program_out, python_response):
-    expected = program.read_csv(program_out / "peak_preload.csv")
     peaks = cyclone.disc.follow_peak(python_response, "preload", (10000.0, 40000.0), values=4)
     assert peaks.end is cyclone.PeakFollowingEnd.RANGE_END
     assert peaks.reference_value == 20000.0
-    assert len(peaks) == len(expected["preload"]) >= 5  # 4 values in log and the response's 20 kN
-    number = lambda key: expected[key].astype(float)  # noqa: E731
-    # The CSV's 10 significant digits.
-    np.testing.assert_allclose(peaks.parameter, number("preload"), rtol=1e-9)
-    np.testing.assert_allclose(peaks.hz, number("peak_hz"), rtol=1e-9)
-    np.testing.assert_allclose(peaks.peak, number("peak_max_abs"), rtol=1e-9)
-    np.testing.assert_array_equal(peaks.jump.astype(int), expected["jump"].astype(int))
-    assert peaks.optimum == int(np.flatnonzero(expected["optimum"].astype(int))[0])
-    beyond = np.array([float(v) if v else -1.0 for v in expected["force_beyond_h"]])
-    np.testing.assert_allclose(peaks.force_beyond, beyond, rtol=1e-9)
+    assert len(peaks) >= 5  # 4 values in log and the response's 20 kN
+    program.assert_peaks_equal(peaks, program_out / "peak_preload.csv", "preload")
     # At the response's own preload the followed peak is the traced curve's (located on its path).
     at_reference = int(np.flatnonzero(peaks.parameter == 20000.0)[0])
     assert abs(peaks.peak[at_reference] / python_response.curve.peak.value - 1) < 1e-3
