@@ -234,7 +234,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     // faces carry no area, the friction and gap values), the excitation and the node sets
     // named are refused before any FE work, under the scene's key.
     try {
-      disc::checkDiscResponse(mesh, sectors, plan.modelSpec.axis, spec);
+      disc::checkDiscResponse(mesh, sectors, plan.modelSpec.axis, spec, plan.modelSpec.material.E);
     } catch (const InputError& e) {
       for (const char* section : {"contact", "gap", "excitation"})
         if (e.where().rfind(section, 0) == 0) throw InputError(d.where(e.where()), e.problem());

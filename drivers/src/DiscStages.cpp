@@ -239,7 +239,7 @@ DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int
       try {
         disc::checkDiscStudyValues(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, plan.spec,
                                    *disc::discStudyParameterFromName(name), stages.studies.getDoubleList(name, {}),
-                                   plan.modelSpec.modes, top);
+                                   plan.modelSpec.modes, top, plan.modelSpec.material.E);
       } catch (const InputError& e) {
         throw InputError(stages.studies.where(name), e.problem());
       }

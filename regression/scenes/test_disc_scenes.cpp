@@ -197,6 +197,18 @@ TEST(Scenes, ContactsFarStifferThanTheSectorAreRefused) {
       << msg;
   EXPECT_LT(timer.seconds(), 20.0);
   EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
+  // kt alone, against its own bound: kt = 1e12 N/mm^3 on the default disc (kn 5000; 9e10
+  // times the sector's own) traced 286 points without a peak and ended with exit 0, naming
+  // neither kt nor its size (a fifth probe of the shipped build); only kn was held to a
+  // bound. Here 1e16 N/mm per pair: far above the bound of 1e10 times the sector's own,
+  // below E times its size (which refuses before the models).
+  std::string tangential = discResponseScene();
+  tangential.replace(tangential.find("      preload: 5.0\n"), 0, "      kt: 1.0e16\n");
+  const auto tmsg = failure(tangential, dir);
+  EXPECT_NE(tmsg.find("disc_response/contact/kt: the shroud contacts' tangential stiffness is up to"),
+            std::string::npos)
+      << tmsg;
+  EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
 }
 
 // (Also: bad peak studies are named before any work.)

@@ -420,6 +420,14 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "cyclone/loads/axis_direction", "the speed's axis differs from the cyclic symmetry's"},
       {"    loss_factor: 0.006\n", "    loss_factor: 1.0e6\n", "cyclone/reduced_model/loss_factor",
        "1e+06 is above 1"},
+      // A contact stiffer than any node of the sector (E times its size): kn = 1e30 N/mm^3
+      // was refused only after the reduced models (a fifth probe of the shipped build).
+      {"      kn: 5000.0 ", "      kn: 1.0e30 ", "cyclone/disc_response/contact/kn",
+       "1e+30 N/mm^3 makes a contact of"},
+      {"      kt: 5000.0\n", "      kt: 1.0e30\n", "cyclone/disc_response/contact/kt",
+       "1e+30 N/mm^3 makes a contact of"},
+      {"      preload: [16000.0, 20000.0, 80000.0]\n", "      contact_stiffness: [1.0e30]\n",
+       "cyclone/disc_response/studies/contact_stiffness", "the value 1e+30: contact/kn: 1e+30 N/mm^3 makes"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patch_means\n", "cyclone/reduced_model/contact_dofs",
        "patch_means needs disc_response/contact/patches >= 1"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patches\n", "cyclone/reduced_model/contact_dofs",

@@ -85,10 +85,13 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
 
 /// What makeDiscForcedResponse checks in the spec that needs no reduced model: the engine
 /// order, the harmonics, the contact pairs and law (its values, the friction and gap
-/// elements' parameters), the excitation's direction and amplitude, the node sets named.
+/// elements' parameters), the excitation's direction and amplitude, the node sets named;
+/// and the contacts' kn and kt against the material's E times the sector's size (a
+/// stiffness no node of the sector has, far above the bound kRigidContactRatio that
+/// solveDiscForcedResponse holds them to once the models give the sector's own).
 /// InputError naming the key; so a scene can refuse them before any FE work.
 void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
-                       const DiscResponseSpec& spec);
+                       const DiscResponseSpec& spec, double youngsModulus);
 
 /// The node sets the forced response uses (contact faces, excitation, response sets) all
 /// among the reduced models' retained node sets: InputError("reduced_model/retained_node_sets")
