@@ -245,8 +245,10 @@ void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, 
 // DOFs: each response node's excitation direction first, then its other two.
 void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, const DiscReducedModels& models,
                              const DiscResponseSpec& spec, ForcedResponseSetup& setup) {
-  const Eigen::Vector3d d = spec.excitation.direction.normalized();
-  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  // stableNormalized: [0, 0, 1e300] made a zero force (its squared norm overflowed), and
+  // the run failed after the reduced models as "no resonance of the stuck system".
+  const Eigen::Vector3d d = spec.excitation.direction.stableNormalized();
+  if (!(spec.excitation.direction.stableNorm() > 0)) throw InputError("excitation/direction", "must not be zero");
   for (auto node : mesh.nodeSet(spec.excitation.nodeSet)) {
     const int i = retainedIndex(models, node, spec.excitation.nodeSet);
     for (int c = 0; c < 3; ++c)
@@ -333,7 +335,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
                                             "displacements the linear reduced models hold (a clearance or "
                                             "interference is a fraction of a millimetre)");
   }
-  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  if (!(spec.excitation.direction.stableNorm() > 0)) throw InputError("excitation/direction", "must not be zero");
   if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
     throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
                                                  std::to_string(spec.excitation.amplitude));
