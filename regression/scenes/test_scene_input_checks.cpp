@@ -428,6 +428,10 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
        "1e+30 N/mm^3 makes a contact of"},
       {"      preload: [16000.0, 20000.0, 80000.0]\n", "      contact_stiffness: [1.0e30]\n",
        "cyclone/disc_response/studies/contact_stiffness", "the value 1e+30: contact/kn: 1e+30 N/mm^3 makes"},
+      // An amplitude above the floor of 1e-150 N but whose response the preload's round-off
+      // swamps (2e4 N against 1e-140 N): "no start" after the reduced models.
+      {"      amplitude: 20.0\n", "      amplitude: 1.0e-140\n", "cyclone/disc_response/excitation/amplitude",
+       "the shroud contacts' preload is 2e+144 times the excitation's force"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patch_means\n", "cyclone/reduced_model/contact_dofs",
        "patch_means needs disc_response/contact/patches >= 1"},
       {"    modes: 20\n", "    modes: 20\n    contact_dofs: patches\n", "cyclone/reduced_model/contact_dofs",

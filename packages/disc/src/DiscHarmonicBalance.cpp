@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -357,6 +358,24 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   if (spec.contact.normal.norm() != 0 || spec.contact.tangent.norm() != 0) checkContactFrame(spec.contact);
   mesh.nodeSet(spec.excitation.nodeSet);
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
+}
+
+double preloadOverExcitation(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                             const DiscResponseSpec& spec) {
+  const auto values = shroudContactValues(mesh, shroudContactPairs(mesh, sectors, axis, spec.contact), spec.contact);
+  const double force = std::abs(spec.excitation.amplitude) * double(mesh.nodeSet(spec.excitation.nodeSet).size());
+  return force > 0 ? values.totalPreload / force : 0.0;
+}
+
+std::string preloadRoundoffText(double ratio, double tolerance) {
+  const double roundoff = ratio * std::numeric_limits<double>::epsilon();
+  if (!(roundoff > 0.1 * tolerance)) return "";
+  return "the shroud contacts' preload is " + numberText(ratio, 3) +
+         " times the excitation's force: its round-off in double precision is " + numberText(roundoff / tolerance, 3) +
+         " times the continuation's tolerance (" + numberText(tolerance) +
+         ", relative to the excitation), which Newton cannot meet; raise disc_response/excitation/amplitude (where "
+         "the contacts stay stuck the response is linear in it), lower disc_response/contact/preload, or loosen "
+         "disc_response/continuation/tolerance";
 }
 
 void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,

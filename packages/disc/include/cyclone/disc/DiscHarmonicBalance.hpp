@@ -93,6 +93,19 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
 void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
                        const DiscResponseSpec& spec, double youngsModulus);
 
+/// The shroud contacts' total preload over the excitation's total force (|amplitude| times
+/// the excited nodes). The oscillating rows' residual is held to the continuation's
+/// tolerance relative to the excitation, and the contact forces carry the preload's
+/// round-off (double precision's 2.2e-16 of it) into those rows: far above
+/// tolerance / 2.2e-16 no start converges (on the default disc, 2e4 N against 1e-3 N
+/// traced, against 1e-4 N it did not).
+double preloadOverExcitation(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                             const DiscResponseSpec& spec);
+
+/// What that ratio means for a continuation tolerance, said with the keys to change
+/// (empty where the preload's round-off is below a tenth of the tolerance).
+std::string preloadRoundoffText(double preloadOverExcitation, double tolerance);
+
 /// The node sets the forced response uses (contact faces, excitation, response sets) all
 /// among the reduced models' retained node sets: InputError("reduced_model/retained_node_sets")
 /// naming the set, before any model is built. With `patchMeans` the contact faces are not
