@@ -214,6 +214,16 @@ TEST(Scenes, ForcedResponseBadInputIsNamed) {
                 dir);
   EXPECT_NE(msg.find("cyclone/samples"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must lie in 15..65536 time samples per period (2 H + 1 resolve harmonic H = 7"), std::string::npos) << msg;
+  // A range to 1e300 rad/s failed at once as "the residual or Jacobian failed", and no
+  // output DOF gave a curve of frequencies alone, its checks skipped, exit 0 (a fifth probe).
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce +
+                    "  continuation:\n    from: 0.5\n    to: 1.0e300\n",
+                dir);
+  EXPECT_NE(msg.find("'cyclone/continuation/to': 1e+300 rad/s is beyond 1e+100"), std::string::npos) << msg;
+  msg = failure(base + "    M: [1.0, 0.0, 0.0, 1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce + range +
+                    "  output:\n    dofs: []\n",
+                dir);
+  EXPECT_NE(msg.find("'cyclone/output/dofs': is empty"), std::string::npos) << msg;
   msg = failure(base + "    M: [1.0, 0.0, 0.0, -1.0]\n    K: [1.0, 0.0, 0.0, 1.0]\n" + aForce + range, dir);
   EXPECT_NE(msg.find("cyclone/system/M"), std::string::npos) << msg;
   EXPECT_NE(msg.find("positive definite"), std::string::npos) << msg;
