@@ -375,19 +375,15 @@ TEST(Scenes, AnEarlierRunsFilesLeftInTheDirectoryAreSaid) {
 
 namespace {
 
-// The demo scene at `meshSize` run by the program under `ulimit -v kB` (killed after 60 s
-// or 120 s): its exit status, its last "cyclone: " line and its manifest.
+// A scene run by the program under `ulimit -v kB` (killed after `seconds`): its exit
+// status, its last "cyclone: " line and its manifest.
 struct LimitedRun {
   int status = -1;
   std::string error, manifest;
 };
-LimitedRun demoUnderAddressSpaceLimit(const fs::path& dir, const std::string& meshSize, long kB, int seconds) {
+LimitedRun runUnderAddressSpaceLimit(const fs::path& dir, const std::string& sceneText, long kB, int seconds) {
   const fs::path scene = dir.string() + ".yaml", log = dir.string() + ".log";
-  {
-    std::string text = scenes::demoScene();
-    text.replace(text.find("mesh_size: 6.0"), 14, "mesh_size: " + meshSize);
-    std::ofstream(scene) << text;
-  }
+  std::ofstream(scene) << sceneText;
   const std::string command = "bash -c 'ulimit -v " + std::to_string(kB) + "; OPENBLAS_NUM_THREADS=1 timeout -s KILL " +
                               std::to_string(seconds) + " " + std::string(CYCLONE_EXE) + " run " + scene.string() +
                               " --output " + dir.string() + " > " + log.string() + " 2>&1'";
@@ -402,6 +398,12 @@ LimitedRun demoUnderAddressSpaceLimit(const fs::path& dir, const std::string& me
   return run;
 }
 
+std::string demoAtMeshSize(const std::string& meshSize) {
+  std::string text = scenes::demoScene();
+  text.replace(text.find("mesh_size: 6.0"), 14, "mesh_size: " + meshSize);
+  return text;
+}
+
 }  // namespace
 
 // Out of memory (a process limited to 700 MB of address space, the demo's disc at mesh
@@ -409,7 +411,7 @@ LimitedRun demoUnderAddressSpaceLimit(const fs::path& dir, const std::string& me
 // body ..." and, with 1 GB, an allocation failure inside the prestress as "10000 rpm cannot
 // be reached" (issue 49 probe). Said as memory now, exit 1, the manifest failed.
 TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
-  const auto run = demoUnderAddressSpaceLimit(freshDir("out_of_memory"), "3.0", 700000, 120);
+  const auto run = runUnderAddressSpaceLimit(freshDir("out_of_memory"), demoAtMeshSize("3.0"), 700000, 120);
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.error.find("memory"), std::string::npos) << run.error;
   EXPECT_EQ(run.error.find("not positive definite"), std::string::npos) << run.error;
@@ -418,15 +420,22 @@ TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
 }
 
 // Under an address-space limit too small for OpenBLAS's work buffer (128 MB), OpenBLAS
-// waits for it forever: the demo's disc at mesh size 12 under `ulimit -v 600000` hung in
-// its first factorization until killed (a fifth probe; the fourth's). Said before the
-// factorization now, exit 1, the manifest failed.
-TEST(Scenes, AnAddressSpaceLimitTooSmallForTheFactorizationIsSaidBeforeIt) {
-  const auto run = demoUnderAddressSpaceLimit(freshDir("address_space_limit"), "12.0", 600000, 60);
-  EXPECT_EQ(run.status, 1);  // 137: killed by the timeout, hung
-  EXPECT_NE(run.error.find("out of memory before the factorization"), std::string::npos) << run.error;
-  EXPECT_NE(run.error.find("ulimit -v, 586 MB"), std::string::npos) << run.error;
-  EXPECT_EQ(run.manifest.rfind("status: failed", 0), 0u) << run.manifest;
+// waits for it forever: under `ulimit -v 600000` the demo's disc at mesh size 12 hung in
+// its first CHOLMOD factorization, and the Duffing scene in its first dense LU, until
+// killed (a fifth probe; the fourth's). The buffer is taken, or its shortfall said, before
+// any work now: exit 1 at once, the manifest failed.
+TEST(Scenes, AnAddressSpaceLimitTooSmallForOpenBlasIsSaidBeforeAnyWork) {
+  std::ifstream duffing(CYCLONE_SCENE_DIR "/duffing.yaml");
+  const std::string duffingText((std::istreambuf_iterator<char>(duffing)), std::istreambuf_iterator<char>());
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"disc", demoAtMeshSize("12.0")},
+                                   {"duffing", duffingText}}) {
+    const auto run = runUnderAddressSpaceLimit(freshDir("address_space_limit_" + name), text, 600000, 60);
+    EXPECT_EQ(run.status, 1) << name;  // 137: killed by the timeout, hung
+    EXPECT_NE(run.error.find("out of memory before any work: the process's address-space limit (ulimit -v, 586 MB)"),
+              std::string::npos)
+        << name << ": " << run.error;
+    EXPECT_EQ(run.manifest.rfind("status: failed", 0), 0u) << name << ": " << run.manifest;
+  }
 }
 
 // An output directory that is a file gave the raw "filesystem error: cannot create

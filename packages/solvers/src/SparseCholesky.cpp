@@ -79,11 +79,11 @@ std::string cholmodOutOfMemory(long long equations) {
          "coarser mesh or more memory";
 }
 
-// OpenBLAS's work buffer (Debian 12's libopenblas 0.3.21: 128 MiB and a page, malloc'd by
-// the first dense kernel a supernodal factorization calls, dpotrf, and kept). Once one
-// factorization has passed, the buffer is held and reused: later ones need only their
-// factor (a second buffer, for factorizations on several threads at once, is not counted).
-static constexpr double kBlasBufferBytes = 128.0 * (1 << 20) + 4096;
+// OpenBLAS's work buffer (kOpenBlasBufferBytes), malloc'd by the first dense kernel a
+// supernodal factorization calls, dpotrf, unless takeBlasWorkBuffer had it taken before, and
+// kept. Once one factorization has passed, the buffer is held and reused: later ones need
+// only their factor (a second buffer, for factorizations on several threads at once, is
+// not counted).
 static std::atomic<bool> blasBufferTaken{false};
 
 void checkFactorAddressSpace(long long equations, double factorNonzeros, int scalarBytes, bool supernodal) {
@@ -92,7 +92,7 @@ void checkFactorAddressSpace(long long equations, double factorNonzeros, int sca
   // A supernodal factor stores its supernodes' dense blocks: up to about half again the
   // nonzeros cholmod_analyze counts (the relaxed amalgamation's explicit zeros).
   const double factor = 1.5 * factorNonzeros * scalarBytes;
-  const double buffer = supernodal && !blasBufferTaken ? kBlasBufferBytes : 0.0;
+  const double buffer = supernodal && !blasBufferTaken && !blasWorkBufferTaken() ? kOpenBlasBufferBytes : 0.0;
   if (factor + buffer <= left) return;
   const double mb = 1 << 20;
   std::ostringstream why;
