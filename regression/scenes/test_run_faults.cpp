@@ -82,7 +82,7 @@ TEST(Scenes, ARunMarksItsDirectoryAndAConcurrentRunIsRefused) {
 // manifest saying "interrupted".
 void stopMidCurveAndResume(int signal, const std::string& manifestStatus) {
   const std::string scene = std::string(CYCLONE_SCENE_DIR) + "/friction3d_rotating.yaml";
-  const std::string tag = signal == SIGKILL ? "killed" : "terminated";
+  const std::string tag = signal == SIGKILL ? "killed" : signal == SIGHUP ? "hung_up" : "terminated";
   const auto whole = freshDir("resume_whole_" + tag), killed = freshDir("resume_" + tag);
   fs::create_directories(killed);
   auto cyclone = [&](const fs::path& out, const std::string& extra, const fs::path& log) {
@@ -167,6 +167,10 @@ void stopMidCurveAndResume(int signal, const std::string& manifestStatus) {
 TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) { stopMidCurveAndResume(SIGKILL, "running"); }
 
 TEST(Scenes, ATerminatedRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGTERM, "interrupted"); }
+
+// A closed terminal or ssh session (SIGHUP) left the manifest "running", as a kill does (a
+// fifth probe of the shipped build): an interruption like SIGTERM's now.
+TEST(Scenes, AHungUpRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGHUP, "interrupted"); }
 
 // A run whose stdout reader goes away (`cyclone run s.yaml | head -1`): it was killed by
 // SIGPIPE at its second log line, exit 141, its manifest left "running" (issue 49 probe).
