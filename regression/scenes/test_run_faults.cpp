@@ -379,16 +379,16 @@ TEST(Scenes, AnEarlierRunsFilesLeftInTheDirectoryAreSaid) {
 
 namespace {
 
-// A scene run by the program under `ulimit -v kB` (killed after `seconds`): its exit
-// status, its last "cyclone: " line and its manifest.
+// A scene run by the program under `ulimit <limit>` (e.g. "-v 600000"; killed after
+// `seconds`): its exit status, its last "cyclone: " line and its manifest.
 struct LimitedRun {
   int status = -1;
   std::string error, manifest;
 };
-LimitedRun runUnderAddressSpaceLimit(const fs::path& dir, const std::string& sceneText, long kB, int seconds) {
+LimitedRun runUnderUlimit(const fs::path& dir, const std::string& sceneText, const std::string& limit, int seconds) {
   const fs::path scene = dir.string() + ".yaml", log = dir.string() + ".log";
   std::ofstream(scene) << sceneText;
-  const std::string command = "bash -c 'ulimit -v " + std::to_string(kB) + "; OPENBLAS_NUM_THREADS=1 timeout -s KILL " +
+  const std::string command = "bash -c 'ulimit " + limit + "; OPENBLAS_NUM_THREADS=1 timeout -s KILL " +
                               std::to_string(seconds) + " " + std::string(CYCLONE_EXE) + " run " + scene.string() +
                               " --output " + dir.string() + " > " + log.string() + " 2>&1'";
   LimitedRun run;
@@ -415,7 +415,7 @@ std::string demoAtMeshSize(const std::string& meshSize) {
 // body ..." and, with 1 GB, an allocation failure inside the prestress as "10000 rpm cannot
 // be reached" (issue 49 probe). Said as memory now, exit 1, the manifest failed.
 TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
-  const auto run = runUnderAddressSpaceLimit(freshDir("out_of_memory"), demoAtMeshSize("3.0"), 700000, 120);
+  const auto run = runUnderUlimit(freshDir("out_of_memory"), demoAtMeshSize("3.0"), "-v 700000", 120);
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.error.find("memory"), std::string::npos) << run.error;
   EXPECT_EQ(run.error.find("not positive definite"), std::string::npos) << run.error;
@@ -433,13 +433,31 @@ TEST(Scenes, AnAddressSpaceLimitTooSmallForOpenBlasIsSaidBeforeAnyWork) {
   const std::string duffingText((std::istreambuf_iterator<char>(duffing)), std::istreambuf_iterator<char>());
   for (const auto& [name, text] : {std::pair<std::string, std::string>{"disc", demoAtMeshSize("12.0")},
                                    {"duffing", duffingText}}) {
-    const auto run = runUnderAddressSpaceLimit(freshDir("address_space_limit_" + name), text, 600000, 60);
+    const auto run = runUnderUlimit(freshDir("address_space_limit_" + name), text, "-v 600000", 60);
     EXPECT_EQ(run.status, 1) << name;  // 137: killed by the timeout, hung
     EXPECT_NE(run.error.find("out of memory before any work: the process's address-space limit (ulimit -v, 586 MB)"),
               std::string::npos)
         << name << ": " << run.error;
     EXPECT_EQ(run.manifest.rfind("status: failed", 0), 0u) << name << ": " << run.manifest;
   }
+}
+
+// A stack limit of 256 kB (soft and hard: `ulimit -s 256`) killed the static stage of the
+// demo's disc by SIGSEGV in the element assembly (its fixed-size matrices), exit 139, the
+// manifest left "running" (a fifth probe; 512 kB killed the disc's reduced models). Said
+// before anything runs now; a hard limit of 4 MB is enough, and the run goes through.
+TEST(Scenes, AStackLimitTooSmallForTheElementsIsSaid) {
+  std::string scene = demoAtMeshSize("12.0");
+  const std::string analyses = "analysis: [static, modal, disc_response]";
+  scene.replace(scene.find(analyses), analyses.size(), "analysis: [static]");
+  const auto small = runUnderUlimit(freshDir("stack_limit_small"), scene, "-s 256", 60);
+  EXPECT_EQ(small.status, 1);  // 139: SIGSEGV
+  EXPECT_NE(small.error.find("the stack limit (ulimit -s) is 256 kB and can be raised only to 256 kB"),
+            std::string::npos)
+      << small.error;
+  const auto enough = runUnderUlimit(freshDir("stack_limit_enough"), scene, "-s 4096", 60);
+  EXPECT_EQ(enough.status, 0) << enough.error;
+  EXPECT_EQ(enough.manifest.rfind("status: complete", 0), 0u) << enough.manifest;
 }
 
 // An output directory that is a file gave the raw "filesystem error: cannot create
