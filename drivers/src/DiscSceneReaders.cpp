@@ -134,6 +134,10 @@ DiscResponseSpec readResponseSpec(SceneSection& d) {
   if (!d.has("engine_order"))
     throw InputError(d.where("engine_order"), d.requiredText("engine_order") + " (the excitation's engine order)");
   spec.harmonics = readHarmonicList(d, 3);
+  // The engine-order excitation acts on harmonic 1: [0, 2] was refused only after the
+  // reduced models, as "excitation: harmonic 1 is not in the harmonic set" (a fifth probe).
+  if (std::find(spec.harmonics.begin(), spec.harmonics.end(), 1) == spec.harmonics.end())
+    throw InputError(d.where("harmonics"), "must contain harmonic 1: the engine-order excitation acts on it");
   spec.samples = d.getInt("samples", 0);
   {
     // Enough for the highest harmonic given (a harmonics check or target raises it, and
@@ -234,7 +238,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     // faces carry no area, the friction and gap values), the excitation and the node sets
     // named are refused before any FE work, under the scene's key.
     try {
-      disc::checkDiscResponse(mesh, sectors, plan.modelSpec.axis, spec);
+      disc::checkDiscResponse(mesh, sectors, plan.modelSpec.axis, spec, plan.modelSpec.material.E);
     } catch (const InputError& e) {
       for (const char* section : {"contact", "gap", "excitation"})
         if (e.where().rfind(section, 0) == 0) throw InputError(d.where(e.where()), e.problem());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -115,9 +116,14 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
                 " times the sector's own at their pairs: far more than holds the faces together, and it makes the "
                 "balance stiff (lower disc_response/contact/kn and kt)"
           : std::string();
-  if (reference.branch.points.empty())
-    throw SolverError("disc_frc: no point of the curve was computed, so nothing was written: " +
-                      reference.branch.stopReason + (stiff.empty() ? "" : "; " + stiff));
+  if (reference.branch.points.empty()) {
+    const std::string roundoff = disc::preloadRoundoffText(
+        disc::preloadOverExcitation(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, spec),
+        sweep.continuation.tolerance);
+    throw SolverError("disc_frc: no point of the curve was computed, so nothing was written" +
+                      (roundoff.empty() ? "" : "; " + roundoff) + ": " + reference.branch.stopReason +
+                      (stiff.empty() ? "" : "; " + stiff));
+  }
   if (solved.contactStiffnessRatio > 1e5) {
     log::warn(stiff);
     summary.computed.push_back("warning: disc_frc: " + stiff);
@@ -220,6 +226,16 @@ DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int
                        {}, {}, d.section("studies")};
   if (forcedResponse) {
     stages.sweep = readSweepOptions(d, stages.plan, checkpoints);
+    // A preload whose round-off alone is far above the tolerance, relative to the
+    // excitation: an amplitude of 1e-140 N against the default disc's 2e4 N passed the
+    // floor of 1e-150 and failed only after the reduced models, as "no start". Refused
+    // here from 100 times the tolerance (1e-4 N, 4 times, already found no start: the
+    // reference curve's failure names the keys from a tenth).
+    const auto& plan = stages.plan;
+    const double tolerance = stages.sweep->continuation.tolerance;
+    const double ratio = disc::preloadOverExcitation(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, plan.spec);
+    if (ratio * std::numeric_limits<double>::epsilon() > 100 * tolerance)
+      throw InputError(d.where("excitation/amplitude"), disc::preloadRoundoffText(ratio, tolerance));
     stages.hysteresisContacts = readHysteresisContacts(d, mesh, stages.plan.spec);
   }
   // The studies' values are read with their curves; their names here, so a misspelt one
@@ -239,7 +255,7 @@ DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int
       try {
         disc::checkDiscStudyValues(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, plan.spec,
                                    *disc::discStudyParameterFromName(name), stages.studies.getDoubleList(name, {}),
-                                   plan.modelSpec.modes, top);
+                                   plan.modelSpec.modes, top, plan.modelSpec.material.E);
       } catch (const InputError& e) {
         throw InputError(stages.studies.where(name), e.problem());
       }

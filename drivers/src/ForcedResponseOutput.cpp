@@ -8,7 +8,9 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/post/ForcedResponseFiles.hpp"
+#include "cyclone/response/StiffContacts.hpp"
 
 namespace cyclone::scenes {
 
@@ -30,6 +32,27 @@ std::string curveLine(const std::string& name, const response::ForcedResponseRes
   line << ") in " << result.seconds << " s, " << result.branch.stopReason;
   for (const auto& [kind, count] : result.flagCounts()) line << "; " << count << " " << kind;
   return line.str();
+}
+
+// Why a curve may have found no start, said before the engines' long account of it: a
+// friction contact far stiffer than the system along its coordinate (kt = 1e12 against
+// tmdsimpy's 2-DOF system's 12 failed with a 3000-character "no start" that named no
+// key). Above 1e4 times, as the disc's contacts are named.
+std::string stiffContactsText(const response::ForcedResponseSetup& setup) {
+  std::ostringstream text;
+  for (const auto& s : response::stiffContacts(setup, 1e4)) {
+    const auto i = std::size_t(s.element);
+    text << "; nonlinear_elements/" << (i < setup.elementNames.size() ? setup.elementNames[i] : std::to_string(i))
+         << "/" << s.parameter << " ("
+         << numberText(s.stiffness) << ") is " << numberText(s.ratio(), 3)
+         << " times the system's stiffness along the contact's "
+         << (s.parameter == "kn" ? "normal" : "tangential") << " coordinate (" << numberText(s.systemStiffness, 4)
+         << "): rigid in effect, "
+         << (s.parameter == "kt" ? "the contact sticks and slips within a sliver of a period, which the samples "
+                                   "cannot place: lower it"
+                                 : "it only makes the balance stiff: lower it");
+  }
+  return text.str();
 }
 
 }  // namespace
@@ -78,8 +101,8 @@ response::ForcedResponseResult traceAndWriteForcedResponse(response::ForcedRespo
                                                            linalg::CommPtr comm, SceneSummary& summary) {
   auto result = response::solveForcedResponse(setup);
   if (result.branch.points.empty())
-    throw SolverError(name + ": no point of the curve was computed, so nothing was written: " +
-                      result.branch.stopReason);
+    throw SolverError(name + ": no point of the curve was computed, so nothing was written" +
+                      stiffContactsText(setup) + ": " + result.branch.stopReason);
   writeForcedResponse(setup, result, outDir, name, comm, summary);
   return result;
 }

@@ -21,6 +21,7 @@
 #include "cyclone/hbm/QuadraticDamper.hpp"
 #include "cyclone/hbm/ScalarElementAdapter.hpp"
 #include "cyclone/hbm/UnilateralSpring.hpp"
+#include "cyclone/response/ForcedResponseChecks.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "MatrixSystemReaders.hpp"
@@ -194,6 +195,14 @@ void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
     throw InputError(cs.location(), "the frequency range must be positive");
+  // As the forces are (response::kLargestTraceable): to = 1e300 rad/s failed at once with
+  // "the residual or Jacobian failed at the start of the range" (a fifth probe).
+  if (setup.parameter == ForcedResponseSetup::Parameter::Omega)
+    for (const auto& [key, w] : {std::pair<const char*, double>{"from", opt.from}, {"to", opt.to}})
+      if (!(w < response::kLargestTraceable))
+        throw InputError(cs.where(key), numberText(w) + " rad/s is beyond " + numberText(response::kLargestTraceable) +
+                                            ": the trace's products of its square (the inertia forces) overflow "
+                                            "double precision");
   // The residual is relative to the forces at scale 1, so a point at scale s is solved to
   // tolerance / s of its own forces: at 1e-10 the solution 0 passed (issue 49 probe).
   if (setup.parameter == ForcedResponseSetup::Parameter::ForceScale)
@@ -269,6 +278,11 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                                "continuation parameter omega");
   auto out = scene.section("output");
   setup.outputDofs = out.getIntList("dofs", {0});
+  // None left a curve of frequencies alone, its samples and harmonics checks skipped
+  // without a word, exit 0 (a fifth probe).
+  if (setup.outputDofs.empty())
+    throw InputError(out.where("dofs"), "is empty: the curve's response, its peak and its samples and harmonics "
+                                        "checks are those of these DOFs (give at least one)");
   setup.stability = readStability(out);
   setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic(), harmonicsTarget);
   setup.harmonicsTolerance = harmonicsTarget.tolerance;

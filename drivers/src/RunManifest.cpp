@@ -31,7 +31,7 @@ std::string utcNow() {
   return text;
 }
 
-// What a SIGTERM or SIGINT writes: the manifest saying "interrupted", composed while the
+// What a SIGTERM, SIGINT or SIGHUP writes: the manifest saying "interrupted", composed while the
 // run starts, since a signal handler may only make system calls (open, write, rename:
 // async-signal-safe). One run per process, so one of each.
 char gInterruptedText[4096], gInterruptedTemp[4096], gManifestPath[4096];
@@ -129,11 +129,12 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
     previousUnfinished += (previousUnfinished.empty() ? "" : "; ") + removed.str();
   }
   write("running", "");
-  // SIGTERM and SIGINT (a batch system's stop, Ctrl-C) mark the run interrupted; its
+  // SIGTERM, SIGINT and SIGHUP (a batch system's stop, Ctrl-C, a closed terminal or ssh
+  // session: SIGHUP left "running", a fifth probe) mark the run interrupted; its
   // checkpoints stay for --resume. SIGKILL cannot be caught: the manifest says running.
   std::ostringstream text;
   text << "status: interrupted\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_
-       << "\nerror: stopped by a signal (SIGTERM or SIGINT); run again with --resume to continue from its "
+       << "\nerror: stopped by a signal (SIGTERM, SIGINT or SIGHUP); run again with --resume to continue from its "
           "checkpoints\n";
   keep(gInterruptedText, sizeof gInterruptedText, text.str());
   gInterruptedLength = std::strlen(gInterruptedText);
@@ -141,11 +142,13 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
   keep(gManifestPath, sizeof gManifestPath, manifest);
   std::signal(SIGTERM, markInterrupted);
   std::signal(SIGINT, markInterrupted);
+  std::signal(SIGHUP, markInterrupted);
 }
 
 RunManifest::~RunManifest() {
   std::signal(SIGTERM, SIG_DFL);
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGHUP, SIG_DFL);
   if (!finished_) {
     try {
       write("failed", "error: stopped before the end\n");

@@ -17,6 +17,7 @@
 #include "DemoScene.hpp"
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/continuation/ArclengthContinuation.hpp"
+#include "cyclone/core/AddressSpace.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/io/TraceCheckpointDirectory.hpp"
 #include "cyclone/core/Error.hpp"
@@ -225,6 +226,10 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints, linalg::CommPtr comm,
                SceneSummary& summary, std::map<std::string, std::string>& unreadNotes) {
   auto wants = [&](const char* a) { return std::find(analyses.begin(), analyses.end(), a) != analyses.end(); };
+  // Every analysis but writing a mesh calls LAPACK (CHOLMOD's factorizations, the dense
+  // LU of a matrix scene's Newton steps): OpenBLAS's work buffer taken now, or its
+  // shortfall under an address-space limit said now, not waited for by OpenBLAS for ever.
+  if (!(analyses.size() == 1 && analyses.front() == "mesh")) takeBlasWorkBuffer();
   if (wants("forced_response")) {
     // Matrix-defined systems need no mesh (--mesh-size was ignored, exit 0; issue 49 probe).
     if (overrides.meshSize)

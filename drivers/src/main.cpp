@@ -14,6 +14,8 @@
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
 
+#include "StackLimit.hpp"
+
 namespace {
 
 const char* kUsage = R"(cyclone - vibration of bladed discs with friction at the shrouds
@@ -60,6 +62,7 @@ int main(int argc, char** argv) {
     std::printf("%s", cyclone::scenes::demoScene());
     return 0;
   }
+  if (!cyclone::scenes::ensureStack(argv)) return 1;
   cyclone::returnLargeBlocksOnFree();
   Tpetra::ScopeGuard mpi(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();

@@ -182,6 +182,28 @@ TEST(Scenes, AMotionBeyondSmallDisplacementsIsSaid) {
   EXPECT_NE(summary.computed[1].find("beyond the small displacements"), std::string::npos) << summary.computed[1];
 }
 
+// A direction is a direction at any length: [0, 0, 1e200] made a zero force (its squared
+// norm overflowed in the normalization), and the run failed after the reduced models as
+// "no resonance of the stuck system ... give frequency_range_hz" (a fifth probe); with a
+// range given, [0, 0, 1e300] was refused as no force at all. Now the same curve as [0, 0, 1].
+TEST(Scenes, AnExcitationDirectionIsTakenWhateverItsLength) {
+  log::setQuiet(true);
+  scenes::SceneOverrides o;
+  o.outputDirectory = freshDir("disc_direction_length").string();
+  // (the contacts held by a large preload near the stuck resonance: a short curve)
+  std::string unit = discResponseScene() + "    stability: false\n    frequency_range_hz: [900.0, 1100.0]\n";
+  unit.replace(unit.find("preload: 5.0"), 12, "preload: 5000.0");
+  unit.replace(unit.find("      amplitude: 20.0\n"), 0, "      direction: [0.0, 0.0, 1.0]\n");
+  std::string huge = unit;
+  huge.replace(huge.find("[0.0, 0.0, 1.0]"), 15, "[0.0, 0.0, 1.0e200]");
+  const auto a = scenes::runSceneText(unit, "unit.yaml", o, Tpetra::getDefaultComm());
+  const auto b = scenes::runSceneText(huge, "huge.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_FALSE(a.computed.empty());
+  ASSERT_FALSE(b.computed.empty());
+  EXPECT_EQ(a.computed[0].rfind("friction-damped peak", 0), 0u) << a.computed[0];
+  EXPECT_EQ(b.computed[0], a.computed[0]);
+}
+
 // Contacts far stiffer than the sector at their pairs (kn = 1e8 N/mm^3 on the default
 // disc): half a minute of start attempts, then "no point of the curve was computed" with a
 // page of solver attempts and no word of the cause (issue 49 probe). Refused once the
@@ -196,6 +218,18 @@ TEST(Scenes, ContactsFarStifferThanTheSectorAreRefused) {
   EXPECT_NE(msg.find("disc_response/contact/kn: the shroud contacts' normal stiffness is up to"), std::string::npos)
       << msg;
   EXPECT_LT(timer.seconds(), 20.0);
+  EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
+  // kt alone, against its own bound: kt = 1e12 N/mm^3 on the default disc (kn 5000; 9e10
+  // times the sector's own) traced 286 points without a peak and ended with exit 0, naming
+  // neither kt nor its size (a fifth probe of the shipped build); only kn was held to a
+  // bound. Here 1e16 N/mm per pair: far above the bound of 1e10 times the sector's own,
+  // below E times its size (which refuses before the models).
+  std::string tangential = discResponseScene();
+  tangential.replace(tangential.find("      preload: 5.0\n"), 0, "      kt: 1.0e16\n");
+  const auto tmsg = failure(tangential, dir);
+  EXPECT_NE(tmsg.find("disc_response/contact/kt: the shroud contacts' tangential stiffness is up to"),
+            std::string::npos)
+      << tmsg;
   EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
 }
 

@@ -569,3 +569,30 @@ TEST(Scenes, AWideRangeOrALongStepDoesNotStepOverTheResonance) {
   EXPECT_NE(msg.find("continuation/initial_step"), std::string::npos) << msg;
   EXPECT_NE(msg.find("at most 1"), std::string::npos) << msg;
 }
+
+// tmdsimpy's 2-DOF friction scene with kt = 1e12 (1e11 times the system's 12 along the
+// tangential DOF: stick and slip within a sliver of a period) finds no start; the failure
+// was a 3000-character account of the engines' attempts that named no key. Now the
+// contact's kt is named first, with its ratio; the scene as shipped traces.
+TEST(Scenes, AContactFarStifferThanTheSystemIsNamedWhenNoStartIsFound) {
+  log::setQuiet(true);
+  std::ifstream in(CYCLONE_SCENE_DIR "/tmdsimpy_friction2d.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  const auto at = scene.find("      kt: 5.0\n");
+  ASSERT_NE(at, std::string::npos);
+  scene.replace(at, std::string("      kt: 5.0\n").size(), "      kt: 1.0e12\n");
+  scenes::SceneOverrides o;
+  o.outputDirectory = freshDir("tmdsimpy_kt_rigid").string();
+  std::string what;
+  try {
+    scenes::runSceneText(scene, "tmdsimpy_kt.yaml", o, Tpetra::getDefaultComm());
+  } catch (const std::exception& e) {
+    what = e.what();
+  }
+  ASSERT_FALSE(what.empty()) << "the scene traced";
+  const auto named = what.find("nonlinear_elements/contact/kt (1e+12) is 8.33e+10 times the system's stiffness");
+  EXPECT_NE(named, std::string::npos) << what;
+  EXPECT_LT(named, what.find("no start")) << what;  // before the engines' account
+}

@@ -82,7 +82,7 @@ TEST(Scenes, ARunMarksItsDirectoryAndAConcurrentRunIsRefused) {
 // manifest saying "interrupted".
 void stopMidCurveAndResume(int signal, const std::string& manifestStatus) {
   const std::string scene = std::string(CYCLONE_SCENE_DIR) + "/friction3d_rotating.yaml";
-  const std::string tag = signal == SIGKILL ? "killed" : "terminated";
+  const std::string tag = signal == SIGKILL ? "killed" : signal == SIGHUP ? "hung_up" : "terminated";
   const auto whole = freshDir("resume_whole_" + tag), killed = freshDir("resume_" + tag);
   fs::create_directories(killed);
   auto cyclone = [&](const fs::path& out, const std::string& extra, const fs::path& log) {
@@ -167,6 +167,10 @@ void stopMidCurveAndResume(int signal, const std::string& manifestStatus) {
 TEST(Scenes, AKilledRunResumesItsCurveWhereItStopped) { stopMidCurveAndResume(SIGKILL, "running"); }
 
 TEST(Scenes, ATerminatedRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGTERM, "interrupted"); }
+
+// A closed terminal or ssh session (SIGHUP) left the manifest "running", as a kill does (a
+// fifth probe of the shipped build): an interruption like SIGTERM's now.
+TEST(Scenes, AHungUpRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGHUP, "interrupted"); }
 
 // A run whose stdout reader goes away (`cyclone run s.yaml | head -1`): it was killed by
 // SIGPIPE at its second log line, exit 141, its manifest left "running" (issue 49 probe).
@@ -373,33 +377,87 @@ TEST(Scenes, AnEarlierRunsFilesLeftInTheDirectoryAreSaid) {
   EXPECT_TRUE(said) << "after a refused run, the static run's files are not said";
 }
 
+namespace {
+
+// A scene run by the program under `ulimit <limit>` (e.g. "-v 600000"; killed after
+// `seconds`): its exit status, its last "cyclone: " line and its manifest.
+struct LimitedRun {
+  int status = -1;
+  std::string error, manifest;
+};
+LimitedRun runUnderUlimit(const fs::path& dir, const std::string& sceneText, const std::string& limit, int seconds) {
+  const fs::path scene = dir.string() + ".yaml", log = dir.string() + ".log";
+  std::ofstream(scene) << sceneText;
+  const std::string command = "bash -c 'ulimit " + limit + "; OPENBLAS_NUM_THREADS=1 timeout -s KILL " +
+                              std::to_string(seconds) + " " + std::string(CYCLONE_EXE) + " run " + scene.string() +
+                              " --output " + dir.string() + " > " + log.string() + " 2>&1'";
+  LimitedRun run;
+  const int status = std::system(command.c_str());
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  run.error = text.substr(std::min(text.size(), text.rfind("cyclone: ")));
+  std::ifstream manifestFile(dir / "run_manifest.txt");
+  run.manifest.assign(std::istreambuf_iterator<char>(manifestFile), std::istreambuf_iterator<char>());
+  return run;
+}
+
+std::string demoAtMeshSize(const std::string& meshSize) {
+  std::string text = scenes::demoScene();
+  text.replace(text.find("mesh_size: 6.0"), 14, "mesh_size: " + meshSize);
+  return text;
+}
+
+}  // namespace
+
 // Out of memory (a process limited to 700 MB of address space, the demo's disc at mesh
 // size 3): CHOLMOD's partial factor read as "the matrix is not positive definite: a free
 // body ..." and, with 1 GB, an allocation failure inside the prestress as "10000 rpm cannot
 // be reached" (issue 49 probe). Said as memory now, exit 1, the manifest failed.
 TEST(Scenes, OutOfMemoryIsSaidAsSuch) {
-  const auto dir = freshDir("out_of_memory");
-  const fs::path scene = dir.string() + ".yaml", log = dir.string() + ".log";
-  {
-    std::string text = scenes::demoScene();
-    text.replace(text.find("mesh_size: 6.0"), 14, "mesh_size: 3.0");
-    std::ofstream(scene) << text;
+  const auto run = runUnderUlimit(freshDir("out_of_memory"), demoAtMeshSize("3.0"), "-v 700000", 120);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.error.find("memory"), std::string::npos) << run.error;
+  EXPECT_EQ(run.error.find("not positive definite"), std::string::npos) << run.error;
+  EXPECT_EQ(run.error.find("cannot be reached"), std::string::npos) << run.error;
+  EXPECT_EQ(run.manifest.rfind("status: failed", 0), 0u) << run.manifest;
+}
+
+// Under an address-space limit too small for OpenBLAS's work buffer (128 MB), OpenBLAS
+// waits for it forever: under `ulimit -v 600000` the demo's disc at mesh size 12 hung in
+// its first CHOLMOD factorization, and the Duffing scene in its first dense LU, until
+// killed (a fifth probe; the fourth's). The buffer is taken, or its shortfall said, before
+// any work now: exit 1 at once, the manifest failed.
+TEST(Scenes, AnAddressSpaceLimitTooSmallForOpenBlasIsSaidBeforeAnyWork) {
+  std::ifstream duffing(CYCLONE_SCENE_DIR "/duffing.yaml");
+  const std::string duffingText((std::istreambuf_iterator<char>(duffing)), std::istreambuf_iterator<char>());
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"disc", demoAtMeshSize("12.0")},
+                                   {"duffing", duffingText}}) {
+    const auto run = runUnderUlimit(freshDir("address_space_limit_" + name), text, "-v 600000", 60);
+    EXPECT_EQ(run.status, 1) << name;  // 137: killed by the timeout, hung
+    EXPECT_NE(run.error.find("out of memory before any work: the process's address-space limit (ulimit -v, 586 MB)"),
+              std::string::npos)
+        << name << ": " << run.error;
+    EXPECT_EQ(run.manifest.rfind("status: failed", 0), 0u) << name << ": " << run.manifest;
   }
-  const std::string command = "bash -c 'ulimit -v 700000; OPENBLAS_NUM_THREADS=1 timeout 120 " +
-                              std::string(CYCLONE_EXE) + " run " + scene.string() + " --output " + dir.string() +
-                              " > " + log.string() + " 2>&1'";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  std::ifstream in(log);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto error = text.substr(std::min(text.size(), text.rfind("cyclone: ")));
-  EXPECT_NE(error.find("memory"), std::string::npos) << error;
-  EXPECT_EQ(error.find("not positive definite"), std::string::npos) << error;
-  EXPECT_EQ(error.find("cannot be reached"), std::string::npos) << error;
-  std::ifstream manifestFile(dir / "run_manifest.txt");
-  const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(manifest.rfind("status: failed", 0), 0u) << manifest;
+}
+
+// A stack limit of 256 kB (soft and hard: `ulimit -s 256`) killed the static stage of the
+// demo's disc by SIGSEGV in the element assembly (its fixed-size matrices), exit 139, the
+// manifest left "running" (a fifth probe; 512 kB killed the disc's reduced models). Said
+// before anything runs now; a hard limit of 4 MB is enough, and the run goes through.
+TEST(Scenes, AStackLimitTooSmallForTheElementsIsSaid) {
+  std::string scene = demoAtMeshSize("12.0");
+  const std::string analyses = "analysis: [static, modal, disc_response]";
+  scene.replace(scene.find(analyses), analyses.size(), "analysis: [static]");
+  const auto small = runUnderUlimit(freshDir("stack_limit_small"), scene, "-s 256", 60);
+  EXPECT_EQ(small.status, 1);  // 139: SIGSEGV
+  EXPECT_NE(small.error.find("the stack limit (ulimit -s) is 256 kB and can be raised only to 256 kB"),
+            std::string::npos)
+      << small.error;
+  const auto enough = runUnderUlimit(freshDir("stack_limit_enough"), scene, "-s 4096", 60);
+  EXPECT_EQ(enough.status, 0) << enough.error;
+  EXPECT_EQ(enough.manifest.rfind("status: complete", 0), 0u) << enough.manifest;
 }
 
 // An output directory that is a file gave the raw "filesystem error: cannot create

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <complex>
 #include <sstream>
+#include <tuple>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -162,24 +163,31 @@ response::ForcedResponseResult sweepDisc(response::ForcedResponseSetup& setup, d
 namespace {
 
 // kn e^H A e for each friction contact, e its normal coordinate's column (with the next
-// sector's at the phase of harmonic 1); the largest.
-double contactStiffnessRatio(const response::ForcedResponseSetup& setup, double hz) {
+// sector's at the phase of harmonic 1), and kt e^H A e over its tangential coordinates;
+// the largest of each: {normal, tangential}.
+std::pair<double, double> contactStiffnessRatios(const response::ForcedResponseSetup& setup, double hz) {
   const auto& hb = *setup.system;
-  if (!hb.receptance() || !(hz > 0)) return 0;
+  if (!hb.receptance() || !(hz > 0)) return {0, 0};
   const long phase = hb.phaseIndex(1);
   const Eigen::MatrixXcd A = hb.receptance()->compliance(2 * M_PI * hz, phase);
   const std::complex<double> next =
       std::polar(1.0, hb.isCyclic() ? 2 * M_PI * double(phase) / hb.cyclic().sectors : 0.0);
-  double worst = 0;
+  double normal = 0, tangential = 0;
   for (const auto& c : hb.elements()) {
     const auto* contact = dynamic_cast<const hbm::FrictionContact*>(c.element.get());
     if (!contact) continue;
     const int n = contact->dimension() - 1;
-    Eigen::VectorXcd e = c.W.col(n).cast<std::complex<double>>();
-    if (c.Wnext.size() > 0) e += next * c.Wnext.col(n).cast<std::complex<double>>();
-    worst = std::max(worst, contact->parameters().kn * std::abs(e.dot(A * e)));
+    for (int j = 0; j <= n; ++j) {
+      Eigen::VectorXcd e = c.W.col(j).cast<std::complex<double>>();
+      if (c.Wnext.size() > 0) e += next * c.Wnext.col(j).cast<std::complex<double>>();
+      const double compliance = std::abs(e.dot(A * e));
+      if (j == n)
+        normal = std::max(normal, contact->parameters().kn * compliance);
+      else
+        tangential = std::max(tangential, contact->parameters().kt * compliance);
+    }
   }
-  return worst;
+  return {normal, tangential};
 }
 
 }  // namespace
@@ -249,9 +257,12 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
     out.toHz = 1.1 * std::max(out.estimate->freeHz, out.estimate->stuckHz);
   }
   checkModesCoverRange(models, spec, out.toHz);
-  if (out.estimate) out.contactStiffnessRatio = contactStiffnessRatio(out.setup, 0.5 * out.estimate->freeHz);
+  if (out.estimate)
+    std::tie(out.contactStiffnessRatio, out.contactTangentialStiffnessRatio) =
+        contactStiffnessRatios(out.setup, 0.5 * out.estimate->freeHz);
   log::info("shroud contacts: their normal stiffness up to " + numberText(out.contactStiffnessRatio, 3) +
-            " times the sector's own at their pairs");
+            " times the sector's own at their pairs, their tangential stiffness up to " +
+            numberText(out.contactTangentialStiffnessRatio, 3) + " times");
   // Measured on the default disc: 4e4 times traced, 4e5 found no first point after about a
   // minute of attempts; a penalty that far above the structure holds the faces no better.
   if (out.contactStiffnessRatio > kRigidContactRatio)
@@ -260,6 +271,13 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
                          " times the sector's own at their pairs (above " + numberText(kRigidContactRatio) +
                          "): no stiffer than rigid in effect, it only makes the balance too stiff to solve; lower kn "
                          "and kt (the default disc's are about 200 times the sector's own)");
+  if (out.contactTangentialStiffnessRatio > kRigidTangentialContactRatio)
+    throw InputError("disc_response/contact/kt",
+                     "the shroud contacts' tangential stiffness is up to " +
+                         numberText(out.contactTangentialStiffnessRatio, 3) + " times the sector's own at their pairs "
+                         "(above " + numberText(kRigidTangentialContactRatio) +
+                         "): rigid in effect, the contacts stick and slip within a sliver of a period, which the "
+                         "samples cannot place; lower kt (the default disc's is about 500 times the sector's own)");
   if (options.mustCoverHz > 0 && !(options.mustCoverHz >= out.fromHz && options.mustCoverHz <= out.toHz)) {
     std::ostringstream why;
     why << options.mustCoverHz << " Hz lies outside the curve's range " << out.fromHz << ".." << out.toHz

@@ -1,10 +1,13 @@
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 
 #include "cyclone/disc/ShroudContactLaw.hpp"
+#include "cyclone/disc/DiscForcedResponse.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -243,8 +246,10 @@ void addContactElements(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, 
 // DOFs: each response node's excitation direction first, then its other two.
 void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& mesh, const DiscReducedModels& models,
                              const DiscResponseSpec& spec, ForcedResponseSetup& setup) {
-  const Eigen::Vector3d d = spec.excitation.direction.normalized();
-  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  // stableNormalized: [0, 0, 1e300] made a zero force (its squared norm overflowed), and
+  // the run failed after the reduced models as "no resonance of the stuck system".
+  const Eigen::Vector3d d = spec.excitation.direction.stableNormalized();
+  if (!(spec.excitation.direction.stableNorm() > 0)) throw InputError("excitation/direction", "must not be zero");
   for (auto node : mesh.nodeSet(spec.excitation.nodeSet)) {
     const int i = retainedIndex(models, node, spec.excitation.nodeSet);
     for (int c = 0; c < 3; ++c)
@@ -272,10 +277,44 @@ void addExcitationAndOutputs(hbm::HarmonicBalanceSystem& hb, const mesh::Mesh& m
     }
 }
 
+// A contact stiffer than any node of the sector can be, refused from the material and the
+// mesh alone: kn = 1e30 N/mm^3 was refused only after the reduced models were built, by
+// the bound on the sector's own stiffness at the pairs (kRigidContactRatio, which needs
+// the models), and kt = 1e30 was traced to a curve without a peak, exit 0. Why E times
+// the sector's size bounds that stiffness: the sector's compliance at a pair is at least
+// 1 / lambda_max(K), and K's largest eigenvalue is at most its largest row sum, of order E
+// times an element's size (which the sector's size, its bounding box's diagonal, exceeds).
+// The margin of 1e3 over the bounds after the models covers the row sum's constant (the
+// elements at a node, a poorly shaped one), so nothing refused here would have passed
+// them; on the default disc (mesh size 12) a pair's kn is about 1e-3 of E times the size
+// (the interface's 4e5 N/mm over 21 pairs against 1.16e5 x 133), and 207 times the
+// sector's own stiffness at the pair.
+void checkContactStiffnessScale(const mesh::Mesh& mesh, const ShroudContactValues& values,
+                                const ShroudContactSpec& contact, double youngsModulus) {
+  const double size = mesh::boundingDiagonal(mesh);
+  if (!(youngsModulus > 0) || !(size > 0)) return;  // the material's and the mesh's own checks say why
+  const char* unit = contact.law == ShroudContactSpec::Law::PerArea ? " N/mm^3" : " N/mm";
+  for (const auto& [name, law, pairValues, ratio] :
+       {std::tuple<const char*, double, const std::vector<double>*, double>{"kn", contact.kn, &values.kn,
+                                                                            1e3 * kRigidContactRatio},
+        {"kt", contact.kt, &values.kt, 1e3 * kRigidTangentialContactRatio}}) {
+    const double stiffest = pairValues->empty() ? 0 : *std::max_element(pairValues->begin(), pairValues->end());
+    if (stiffest > ratio * youngsModulus * size)
+      throw InputError(std::string("contact/") + name,
+                       numberText(law) + unit + " makes a contact of " + numberText(stiffest, 3) +
+                           " N/mm, more than " + numberText(ratio) +
+                           " times the material's E times the sector's size (" + numberText(youngsModulus, 4) +
+                           " x " + numberText(size, 4) +
+                           ", its bounding box's diagonal), which no node of the sector is as stiff as: "
+                           "rigid in effect, it only makes the balance too stiff to solve (the default disc's "
+                           "contacts are about 200 times the sector's own stiffness at their pairs)");
+  }
+}
+
 }  // namespace
 
 void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
-                       const DiscResponseSpec& spec) {
+                       const DiscResponseSpec& spec, double youngsModulus) {
   checkEngineOrder(spec.engineOrder, sectors);
   const hbm::HarmonicSet harmonics(spec.harmonics);
   const auto pairs = shroudContactPairs(mesh, sectors, axis, spec.contact);
@@ -283,6 +322,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
   for (std::size_t i = 0; i < values.kn.size(); ++i)
     frictionElement(values.kn[i], values.kt[i], spec.contact.mu, values.preload[i]);
+  checkContactStiffnessScale(mesh, values, spec.contact, youngsModulus);
   std::vector<bool> isGap;
   gapElementFor(spec.gap, spec.contact, values.members.size(), isGap);
   if (!spec.gap.pairs.empty()) {
@@ -296,7 +336,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
                                             "displacements the linear reduced models hold (a clearance or "
                                             "interference is a fraction of a millimetre)");
   }
-  if (!(spec.excitation.direction.norm() > 0)) throw InputError("excitation/direction", "must not be zero");
+  if (!(spec.excitation.direction.stableNorm() > 0)) throw InputError("excitation/direction", "must not be zero");
   if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
     throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
                                                  std::to_string(spec.excitation.amplitude));
@@ -318,6 +358,24 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   if (spec.contact.normal.norm() != 0 || spec.contact.tangent.norm() != 0) checkContactFrame(spec.contact);
   mesh.nodeSet(spec.excitation.nodeSet);
   for (const auto& set : spec.responseNodeSets) mesh.nodeSet(set);
+}
+
+double preloadOverExcitation(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                             const DiscResponseSpec& spec) {
+  const auto values = shroudContactValues(mesh, shroudContactPairs(mesh, sectors, axis, spec.contact), spec.contact);
+  const double force = std::abs(spec.excitation.amplitude) * double(mesh.nodeSet(spec.excitation.nodeSet).size());
+  return force > 0 ? values.totalPreload / force : 0.0;
+}
+
+std::string preloadRoundoffText(double ratio, double tolerance) {
+  const double roundoff = ratio * std::numeric_limits<double>::epsilon();
+  if (!(roundoff > 0.1 * tolerance)) return "";
+  return "the shroud contacts' preload is " + numberText(ratio, 3) +
+         " times the excitation's force: its round-off in double precision is " + numberText(roundoff / tolerance, 3) +
+         " times the continuation's tolerance (" + numberText(tolerance) +
+         ", relative to the excitation), which Newton cannot meet; raise disc_response/excitation/amplitude (where "
+         "the contacts stay stuck the response is linear in it), lower disc_response/contact/preload, or loosen "
+         "disc_response/continuation/tolerance";
 }
 
 void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string>& retainedNodeSets,

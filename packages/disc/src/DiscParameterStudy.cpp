@@ -92,7 +92,7 @@ std::optional<DiscStudyParameter> discStudyParameterFromName(const std::string& 
 
 void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
                           const DiscResponseSpec& spec, DiscStudyParameter parameter, const std::vector<double>& values,
-                          int modes, int maxHarmonic) {
+                          int modes, int maxHarmonic, double youngsModulus) {
   const std::string key = "disc_response/studies/" + discStudyParameterName(parameter);
   if (values.empty()) throw InputError(key, "needs a list of values");
   auto at = [](double v) {
@@ -124,7 +124,7 @@ void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::Rotat
         // The contact and excitation values as the spec's own are checked.
         const auto sv = specWithElementValue(spec, parameter, v, key)->first;
         try {
-          checkDiscResponse(mesh, sectors, axis, sv);
+          checkDiscResponse(mesh, sectors, axis, sv, youngsModulus);
         } catch (const InputError& e) {
           throw InputError(key, at(v) + e.where() + ": " + e.problem());
         }

@@ -191,22 +191,38 @@ DirectSolver::DirectSolver(const linalg::Matrix& A, const linalg::Matrix* B, dou
     return;
   }
   int ok = 1;
+  std::string shortfall;  // the address space's, said before OpenBLAS would wait for it
   if (I.gather.root) {
     I.cholmod.setMode(positive ? Eigen::CholmodSupernodalLLt : Eigen::CholmodLDLt);
     I.cholmod.cholmod().print = 0;  // failures are reported by SolverError, not on stderr
-    I.cholmod.compute(S);
-    I.rcond = I.cholmod.rcond();
-    // min/max pivot of D (LDL^T) or of diag(L)^2 (LL^T): the same measure.
-    ok = I.cholmod.info() == Eigen::Success && I.rcond > 1e-24;
-    // Out of memory leaves a partial factor, which read as "not positive definite" (a
-    // process limited to 700 MB; issue 49 probe): said as what it is.
-    if (I.cholmod.cholmod().status == CHOLMOD_OUT_OF_MEMORY) ok = -1;
+    I.cholmod.analyzePattern(S);
+    try {
+      checkFactorAddressSpace(n, double(I.cholmod.cholmod().lnz), int(sizeof(double)), positive);
+    } catch (const SolverError& e) {
+      shortfall = e.what();
+    }
+    if (shortfall.empty()) {
+      I.cholmod.factorize(S);
+      I.rcond = I.cholmod.rcond();
+      // min/max pivot of D (LDL^T) or of diag(L)^2 (LL^T): the same measure.
+      ok = I.cholmod.info() == Eigen::Success && I.rcond > 1e-24;
+      // Out of memory leaves a partial factor, which read as "not positive definite" (a
+      // process limited to 700 MB; issue 49 probe): said as what it is.
+      if (I.cholmod.cholmod().status == CHOLMOD_OUT_OF_MEMORY) ok = -1;
+      if (ok > 0 && positive) noteFactorizationPassed();
+    } else {
+      ok = -2;
+    }
     I.stats.nonzerosFactor = I.cholmod.cholmod().lnz;
     I.stats.flops = I.cholmod.cholmod().fl;
   }
   Teuchos::broadcast(*comm, 0, &ok);
   Teuchos::broadcast(*comm, 0, &I.rcond);
   I.stats.factorSeconds = timer.seconds();
+  if (ok == -2)
+    throw SolverError(I.gather.root ? shortfall
+                                    : "the factorization on rank 0 has no room under its address-space limit (ulimit "
+                                      "-v; rank 0 says how much it needs)");
   if (ok < 0) throw SolverError(cholmodOutOfMemory(n));
   if (!ok && positive)
     throw SolverError("CHOLMOD: the matrix (" + std::to_string(n) +

@@ -3,10 +3,14 @@
 #include <Eigen/CholmodSupport>
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
+#include <sstream>
 #include <utility>
 #include <string>
 #include <vector>
 
+#include "cyclone/core/AddressSpace.hpp"
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::solvers {
@@ -74,6 +78,37 @@ std::string cholmodOutOfMemory(long long equations) {
          " equations): its factor needs more than this machine, or the process's limit (ulimit -v), allows; use a "
          "coarser mesh or more memory";
 }
+
+// OpenBLAS's work buffer (kOpenBlasBufferBytes), malloc'd by the first dense kernel a
+// supernodal factorization calls, dpotrf, unless takeBlasWorkBuffer had it taken before, and
+// kept. Once one factorization has passed, the buffer is held and reused: later ones need
+// only their factor (a second buffer, for factorizations on several threads at once, is
+// not counted).
+static std::atomic<bool> blasBufferTaken{false};
+
+void checkFactorAddressSpace(long long equations, double factorNonzeros, int scalarBytes, bool supernodal) {
+  const double left = addressSpaceLeftBytes();
+  if (left == std::numeric_limits<double>::infinity()) return;
+  // A supernodal factor stores its supernodes' dense blocks: up to about half again the
+  // nonzeros cholmod_analyze counts (the relaxed amalgamation's explicit zeros).
+  const double factor = 1.5 * factorNonzeros * scalarBytes;
+  const double buffer = supernodal && !blasBufferTaken && !blasWorkBufferTaken() ? kOpenBlasBufferBytes : 0.0;
+  if (factor + buffer <= left) return;
+  const double mb = 1 << 20;
+  std::ostringstream why;
+  why << std::fixed;
+  why.precision(0);
+  why << "out of memory before the factorization of the matrix (" << equations << " equations): it needs about "
+      << (factor + buffer) / mb << " MB of address space (its factor about " << factor / mb << " MB";
+  if (buffer > 0) why << ", OpenBLAS's work buffer " << buffer / mb << " MB";
+  why << "), and the process's address-space limit (ulimit -v, " << addressSpaceLimitBytes() / mb << " MB) leaves it "
+      << std::max(left, 0.0) / mb
+      << " MB: raise the limit, or use a coarser mesh (OpenBLAS, short of room for its buffer, waits forever "
+         "instead of failing)";
+  throw SolverError(why.str());
+}
+
+void noteFactorizationPassed() { blasBufferTaken = true; }
 
 // CHOLMOD's own choice of ordering (AMD, METIS when AMD fills much; then the weighted
 // postorder of the elimination tree) is found once on A's pattern, and A is handed over
@@ -152,7 +187,9 @@ SparseCholesky<Scalar>::SparseCholesky(const Matrix& A, Matrix* release) : impl_
   common.method[0].ordering = CHOLMOD_NATURAL;
   common.postorder = 0;  // already postordered; CHOLMOD would otherwise mark it not natural
   c.analyzePattern(B);
+  checkFactorAddressSpace(B.rows(), double(common.lnz), int(sizeof(Scalar)), true);
   I.factorize(B, B.rows());
+  noteFactorizationPassed();
 }
 
 template <class Scalar>

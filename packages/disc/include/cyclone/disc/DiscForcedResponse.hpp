@@ -93,6 +93,10 @@ struct DiscForcedResponse {
   /// the balance stiff (kn = 1e8 N/mm^3 on the default disc found no first point, and the
   /// failure did not say why). 0 where the system has no receptance model.
   double contactStiffnessRatio = 0;
+  /// The same for kt along the contacts' tangential coordinates (kt = 1e12 N/mm^3 on the
+  /// default disc, 9e10 times the sector's own, traced 286 points without a peak, exit 0,
+  /// and named neither kt nor its size).
+  double contactTangentialStiffnessRatio = 0;
   /// The headline's peak beyond 1 % of the sector's size: the reduced models are linear
   /// elasticity about the prestressed state, small displacements (an excitation of 1e5 N
   /// gave a peak of 550 mm on a 60 mm blade).
@@ -107,6 +111,12 @@ void checkModesCoverRange(const DiscReducedModels& models, const DiscResponseSpe
 /// The largest DiscForcedResponse::contactStiffnessRatio solveDiscForcedResponse traces
 /// (an InputError naming disc_response/contact/kn above it).
 constexpr double kRigidContactRatio = 1e6;
+/// The largest contactTangentialStiffnessRatio it traces (an InputError naming
+/// disc_response/contact/kt above it). Far higher than kn's: a rigid tangential contact is
+/// Coulomb's law, which the balance still solves. Measured on the default disc at mesh
+/// size 12 (its kt 461 times the sector's own): 1e6 to 9e7 times traced a peak converged in
+/// the harmonics, 9e8 times an estimate (H = 2 not found), 9e10 times no peak (exit 0).
+constexpr double kRigidTangentialContactRatio = 1e10;
 
 /// The frequency curve of the disc `spec` describes over `models` (InputError for an
 /// engine order its sectors cannot carry, a family out of range, or no resonance of the

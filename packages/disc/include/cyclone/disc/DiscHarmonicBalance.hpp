@@ -85,10 +85,26 @@ Eigen::Matrix3d shroudContactFrame(const mesh::Mesh& mesh, const DiscReducedMode
 
 /// What makeDiscForcedResponse checks in the spec that needs no reduced model: the engine
 /// order, the harmonics, the contact pairs and law (its values, the friction and gap
-/// elements' parameters), the excitation's direction and amplitude, the node sets named.
+/// elements' parameters), the excitation's direction and amplitude, the node sets named;
+/// and the contacts' kn and kt against the material's E times the sector's size (a
+/// stiffness no node of the sector has, far above the bound kRigidContactRatio that
+/// solveDiscForcedResponse holds them to once the models give the sector's own).
 /// InputError naming the key; so a scene can refuse them before any FE work.
 void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
-                       const DiscResponseSpec& spec);
+                       const DiscResponseSpec& spec, double youngsModulus);
+
+/// The shroud contacts' total preload over the excitation's total force (|amplitude| times
+/// the excited nodes). The oscillating rows' residual is held to the continuation's
+/// tolerance relative to the excitation, and the contact forces carry the preload's
+/// round-off (double precision's 2.2e-16 of it) into those rows: far above
+/// tolerance / 2.2e-16 no start converges (on the default disc, 2e4 N against 1e-3 N
+/// traced, against 1e-4 N it did not).
+double preloadOverExcitation(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
+                             const DiscResponseSpec& spec);
+
+/// What that ratio means for a continuation tolerance, said with the keys to change
+/// (empty where the preload's round-off is below a tenth of the tolerance).
+std::string preloadRoundoffText(double preloadOverExcitation, double tolerance);
 
 /// The node sets the forced response uses (contact faces, excitation, response sets) all
 /// among the reduced models' retained node sets: InputError("reduced_model/retained_node_sets")

@@ -53,7 +53,7 @@ std::vector<DiscStudyCurve> studyDisc(const mesh::Mesh& mesh, const DiscReducedM
 /// `modes`, harmonics from 1 to `maxHarmonic` (the highest the models are built for).
 void checkDiscStudyValues(const mesh::Mesh& mesh, int sectors, const mesh::RotationAxis& axis,
                           const DiscResponseSpec& spec, DiscStudyParameter parameter, const std::vector<double>& values,
-                          int modes, int maxHarmonic);
+                          int modes, int maxHarmonic, double youngsModulus);
 
 /// The models with another loss factor (>= 0) or fewer modes (> 0; else kept): hybrid and
 /// truncation models only (InputError otherwise).

@@ -63,4 +63,16 @@ extern template class SparseCholesky<std::complex<double>>;
 /// partial factor otherwise reads as a matrix that is not positive definite.
 std::string cholmodOutOfMemory(long long equations);
 
+/// Before a factorization: SolverError where the process's address-space limit (ulimit
+/// -v) leaves less room than the factor (`factorNonzeros` entries of `scalarBytes`, as
+/// cholmod_analyze counts them) and, for a supernodal factor, OpenBLAS's work buffer
+/// need. Short of room for that buffer OpenBLAS waits forever instead of failing (the
+/// demo's disc under `ulimit -v 600000` hung in its first factorization), so the shortfall
+/// is said before it. Nothing is checked without a limit.
+void checkFactorAddressSpace(long long equations, double factorNonzeros, int scalarBytes, bool supernodal);
+
+/// After a supernodal factorization passed: OpenBLAS holds its work buffer from then on,
+/// and checkFactorAddressSpace counts only the factors.
+void noteFactorizationPassed();
+
 }  // namespace cyclone::solvers
