@@ -55,7 +55,7 @@ py::list studyCurves(const DiscReference& ref, const std::string& name, const st
   };
   try {
     disc::checkDiscStudyValues(*ref.mesh, modelSpec.sectors, modelSpec.axis, ref.spec, *parameter, values,
-                               modelSpec.modes, highestHarmonic(ref));
+                               modelSpec.modes, highestHarmonic(ref), modelSpec.material.E);
     py::gil_scoped_release release;
     disc::studyDisc(*ref.mesh, *ref.models, ref.spec, ref.solved, *parameter, values, ref.sweep, visit);
   } catch (const InputError& e) {
