@@ -59,6 +59,7 @@ solvers::ModalResult solveNodalDiameterModes(const NodalDiameterOperators& opera
   opt.shift = shift;
   opt.blockSize = std::max(4, 2 * operators.copies);
   opt.method = method;
+  if (travellingWavePaired(assembler.transform())) opt.structure = solvers::DirectSolver::Structure::TravellingWavePairs;
   if (opt.method == solvers::EigenMethod::Lobpcg) {
     // The sector's unknowns are rigid-body-like per copy away from the side faces.
     opt.nearNullSpace = assembler.rigidBodyModes();

@@ -329,6 +329,18 @@ RetainedModes NodalDiameterModel::modes(int distinct, double shift) const {
   RetainedModes out;
   out.copies = I.op.copies;
   out.eigenvalues = result.eigenvalues;
+  // A two-copy nodal diameter's modes come in travelling-wave pairs of one eigenvalue;
+  // the solver's two Ritz values of a pair differ by its accuracy (up to 3e-10 of it on
+  // the built-in sector), and the realization of the pair as one travelling wave
+  // (SectorReceptance) takes their mean: both take it, so the model's compliance and its
+  // modal realization are one model.
+  if (out.copies == 2)
+    for (std::size_t j = 0; j + 1 < out.eigenvalues.size(); ++j) {
+      const double a = out.eigenvalues[j], b = out.eigenvalues[j + 1];
+      const bool alone = (j == 0 || std::abs(a - out.eigenvalues[j - 1]) > 1e-8 * std::abs(a)) &&
+                         (j + 2 >= out.eigenvalues.size() || std::abs(out.eigenvalues[j + 2] - b) > 1e-8 * std::abs(b));
+      if (alone && std::abs(b - a) <= 1e-8 * std::abs(a)) out.eigenvalues[j] = out.eigenvalues[j + 1] = 0.5 * (a + b), ++j;
+    }
   out.shapes = I.retained(*result.modes);
   if (!I.F.is_null()) out.loads = transposeProduct(*result.modes, *I.F);
   out.seconds = timer.seconds();

@@ -96,7 +96,7 @@ double chooseShift(const linalg::Matrix& K, const linalg::Matrix& M, ModalOption
                    std::unique_ptr<DirectSolver>& factored) {
   rigidModes = 0;
   try {
-    factored = std::make_unique<DirectSolver>(K);
+    factored = std::make_unique<DirectSolver>(K, nullptr, 0.0, DirectSolver::Definiteness::Positive, opt.structure);
     return 0.0;
   } catch (const SolverError&) {
   }
@@ -457,7 +457,7 @@ ModalResult solveModes(const linalg::Matrix& K, const linalg::Matrix& M, const M
     throw InputError("modes", "asked for " + std::to_string(opt.numModes) + " modes of a model with only " +
                                   std::to_string(n) + " free degrees of freedom");
   if (!factored) try {
-      factored = std::make_unique<DirectSolver>(K, &M, opt.shift);
+      factored = std::make_unique<DirectSolver>(K, &M, opt.shift, DirectSolver::Definiteness::Positive, opt.structure);
     } catch (const SolverError& e) {
       throw SolverError(std::string(e.what()) + ". For the eigen-solution: K - sigma M with sigma = " +
                         std::to_string(opt.shift) +

@@ -27,11 +27,10 @@ public:
   /// the memory and a quarter of the work of the real form's, whose 2 x 2 blocks fill
   /// four times the entries (a two-copy nodal diameter of the seed's 334k-DOF sector
   /// passed 18 GB with the real form). Indefinite ones keep the real LDL^T. The reduced
-  /// models' static correction uses it; their modes keep the real form (with this factor a
-  /// travelling-wave pair's two Ritz values split by up to 2.7e-10, against 1.0e-10, which
-  /// the pair's modal realization does not keep). A singular H (a free sector's rigid-body
-  /// modes) is refused below a reciprocal condition of 1e-14, where its factor could
-  /// otherwise pass on a pivot of the rounding's size (docs/studies/thesis_scale_chain.md).
+  /// models' modes and static correction use it (ModalOptions::structure); a singular H
+  /// (a free sector's rigid-body modes) is refused below a reciprocal condition of 1e-14,
+  /// where its factor could otherwise pass on a pivot of the rounding's size
+  /// (docs/studies/thesis_scale_chain.md).
   enum class Structure { General, TravellingWavePairs };
 
   /// Factors A - sigma*B (B may be null). Throws SolverError if not positive definite

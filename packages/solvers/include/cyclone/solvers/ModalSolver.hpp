@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "cyclone/fe/LinearAlgebra.hpp"
+#include "cyclone/solvers/DirectSolver.hpp"
 
 namespace cyclone::solvers {
 
@@ -35,6 +36,10 @@ struct ModalOptions {
   /// first elastic eigenvalue and the real pass shifts to minus that.
   double shift = 0.0;
   static double automaticShift() { return std::numeric_limits<double>::quiet_NaN(); }
+  /// TravellingWavePairs: K and M are a cyclic real form in travelling-wave pairs
+  /// (cyclic::travellingWavePaired): K - sigma M is factored as its Hermitian half
+  /// (DirectSolver::Structure), a quarter of the real form's factor.
+  DirectSolver::Structure structure = DirectSolver::Structure::General;
   int blockSize = 4;  ///< at least the largest multiplicity sought (6 for a free body)
   int numBlocks = 0;  ///< Krylov blocks; 0 picks enough for numModes
   double tolerance = 1e-10;
