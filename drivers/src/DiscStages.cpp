@@ -63,6 +63,9 @@ DiscReducedModels reducedModelsStage(const mesh::Mesh& mesh, const DiscPlan& pla
     summary.written.push_back(outDir + "/rom_check.svg");
     summary.written.push_back(outDir + "/rom_check.csv");
     summary.computed.push_back("reduced model check: " + estimate.str());
+  } else if (!c.notMade.empty()) {
+    estimate << "not checked: " << c.notMade;
+    summary.computed.push_back("reduced model check: not made, " + c.notMade);
   } else {
     estimate << "not checked (a reused model built before the check, or check_frequencies: 0)";
   }

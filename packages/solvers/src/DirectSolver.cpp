@@ -9,6 +9,8 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/PeakMemory.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/solvers/SparseCholesky.hpp"
 
@@ -259,6 +261,21 @@ namespace {
 
 // UMFPACK's LU with its transpose solve (UMFPACK_Aat: Z^T x = b, no conjugate) on the same factors.
 struct UmfPackWithTransposeSolve : Eigen::UmfPackLU<ComplexSparse> {
+  // Why a factorization failed, in UMFPACK's own terms: a zero pivot is a singular
+  // matrix, anything else is not (a seed-scale sector's 320k-equation LU ran out of
+  // memory and was called singular), with the factor's size UMFPACK estimated.
+  bool outOfMemory() const { return m_umfpackInfo(UMFPACK_STATUS) == UMFPACK_ERROR_out_of_memory; }
+  std::string failure() const {
+    const double status = m_umfpackInfo(UMFPACK_STATUS), unit = m_umfpackInfo(UMFPACK_SIZE_OF_UNIT);
+    const double peakGb = m_umfpackInfo(UMFPACK_PEAK_MEMORY_ESTIMATE) * unit / 1e9;
+    const std::string estimate =
+        peakGb > 0 ? " (UMFPACK's estimate of its peak memory: " + numberText(peakGb, 3) + " GB; available: " +
+                         numberText(availableMemoryMb() / 1e3, 3) + " GB)"
+                   : "";
+    if (status == UMFPACK_WARNING_singular_matrix) return "is singular";
+    if (status == UMFPACK_ERROR_out_of_memory) return "could not be factored: out of memory" + estimate;
+    return "could not be factored: UMFPACK status " + numberText(status) + estimate;
+  }
   Eigen::MatrixXcd solveTransposed(const Eigen::MatrixXcd& b) const {
     Eigen::MatrixXcd x(b.rows(), b.cols());
     for (Eigen::Index j = 0; j < b.cols(); ++j)
@@ -307,7 +324,8 @@ ComplexDirectSolver::ComplexDirectSolver(const linalg::Matrix& A, std::complex<d
   if (I.wave && A.getGlobalNumRows() % 2 != 0)
     throw SolverError("travelling-wave solve: an odd number of equations (" + std::to_string(A.getGlobalNumRows()) +
                       ") cannot pair");
-  int ok = 1;
+  int ok = 1, outOfMemory = 0;
+  std::string failureText = "could not be factored (on another rank)";
   const SparseMatrix LA = I.gather.lower(A), LB = I.gather.lower(B);
   if (I.gather.root) {
     const SparseMatrix FA = symmetricFromLower(LA), FB = symmetricFromLower(LB);
@@ -319,11 +337,16 @@ ComplexDirectSolver::ComplexDirectSolver(const linalg::Matrix& A, std::complex<d
     I.lu.umfpackControl()(UMFPACK_IRSTEP) = 0;  // the residual is checked by the caller if needed
     I.lu.compute(I.matrix);
     ok = I.lu.info() == Eigen::Success;
+    if (!ok) failureText = I.lu.failure(), outOfMemory = I.lu.outOfMemory() ? 1 : 0;
   }
+  Teuchos::broadcast(*I.gather.rowMap->getComm(), 0, &outOfMemory);
+  if (outOfMemory)
+    throw OutOfMemoryError("UMFPACK: the complex matrix (" + std::to_string(A.getGlobalNumRows()) + " equations) " +
+                           failureText);
   Teuchos::broadcast(*I.gather.rowMap->getComm(), 0, &ok);
   if (!ok)
-    throw SolverError("UMFPACK: the complex matrix (" + std::to_string(A.getGlobalNumRows()) +
-                      " equations) is singular");
+    throw SolverError("UMFPACK: the complex matrix (" + std::to_string(A.getGlobalNumRows()) + " equations) " +
+                      failureText);
 }
 
 ComplexDirectSolver::~ComplexDirectSolver() = default;

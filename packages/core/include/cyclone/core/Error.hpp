@@ -33,4 +33,11 @@ public:
   explicit SolverError(const std::string& what) : Error(what) {}
 };
 
+/// A solver that ran out of memory (a factor larger than the machine gives): a caller
+/// that can do without the solve (a check) goes on without it.
+class OutOfMemoryError : public SolverError {
+public:
+  explicit OutOfMemoryError(const std::string& what) : SolverError(what) {}
+};
+
 }  // namespace cyclone

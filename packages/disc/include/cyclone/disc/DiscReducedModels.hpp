@@ -66,6 +66,9 @@ struct ReducedModelCheck {
   /// `checkedAt` (the check file's time, UTC), not in this run.
   bool reused = false;
   std::string checkedAt;
+  /// Asked for but not made: its full FE solves did not fit in memory (the reason; the
+  /// model is used unchecked, hz empty).
+  std::string notMade;
   double maxError() const;
 };
 
