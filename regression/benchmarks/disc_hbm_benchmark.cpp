@@ -8,8 +8,11 @@
 // factorisations and solves.
 //   build/regression/disc_hbm_benchmark [H (5)] [from Hz (1300)] [to Hz (1330)]
 //                                       [mesh size (6)] [cache dir (disc_benchmark_models)] [preload N (500)]
-//                                       [variants: all | krylov (all)]
+//                                       [variants: all | krylov | krylov-vs-dense6 (all)]
 // The demo's whole curve at its converged H: disc_hbm_benchmark 6 349.443 1727.63
+// krylov-vs-dense6: the Krylov curve with H, then the dense solve with kept factors (the
+// default before the Krylov solve) on the same band with H = 6, and the ratio of their
+// costs per curve point (issue 47's target: H = 30 at no more than 3x H = 6's).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -31,7 +34,8 @@ int main(int argc, char** argv) {
   const double meshSize = argc > 4 ? std::atof(argv[4]) : 6.0;
   const std::string cache = argc > 5 ? argv[5] : "disc_benchmark_models";
   const double preload = argc > 6 ? std::atof(argv[6]) : 500.0;
-  const std::string variants = argc > 7 ? argv[7] : "all";  // all | krylov (no dense LU: large H)
+  const std::string variants = argc > 7 ? argv[7] : "all";  // all | krylov (no dense LU: large H) | krylov-vs-dense6
+  const bool krylovOnly = variants == "krylov" || variants == "krylov-vs-dense6";
 
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
@@ -54,7 +58,7 @@ int main(int argc, char** argv) {
   for (int r = 0; r < reps; ++r) problem.residual(x, 1.0 + 1e-9 * r, R);
   const double residual = t.seconds() / reps;
   t.restart();
-  if (variants == "all")
+  if (!krylovOnly)
     for (int r = 0; r < reps; ++r) problem.jacobian(x, 1.0 + 1e-9 * r, J);
   const double jacobian = t.seconds() / reps;
   double factor = 0;
@@ -68,14 +72,14 @@ int main(int argc, char** argv) {
   if (variants == "all")
     std::printf("default disc, EO 3, harmonics 0..%d: %d unknowns; residual %.4f s, Jacobian %.4f s, LU %.4f s\n", H,
                 n, residual, jacobian, factor);
-  else  // the dense Jacobian is neither formed nor factored
+  else  // the dense Jacobian is neither formed nor factored (krylov, krylov-vs-dense6)
     std::printf("default disc, EO 3, harmonics 0..%d: %d unknowns; residual %.4f s\n", H, n, residual);
 
   // GMRES on the Jacobian's blocks (Krylov), the dense LU with its factors kept (GMRES
   // preconditioned by the last LU), then an LU at every Newton step.
   using LinearSolver = continuation::ContinuationOptions::LinearSolver;
   const char* names[] = {"Krylov (GMRES on the Jacobian's blocks)", "dense, kept factors", "an LU at every Newton step"};
-  for (int variant = 0; variant < (variants == "all" ? 3 : 1); ++variant) {
+  auto trace = [&](response::ForcedResponseSetup& on, int variant, int harmonics) {
     const bool keep = variant == 1;
     disc::DiscSweepOptions sweep;
     sweep.harmonicsCheckTo = -1;
@@ -85,20 +89,30 @@ int main(int argc, char** argv) {
     sweep.continuation.linearSolver = variant == 0 ? LinearSolver::Krylov : LinearSolver::Dense;
     std::vector<std::string> warnings;
     t.restart();
-    const auto curve = disc::sweepDisc(setup, fromHz, toHz, sweep, warnings);
+    const auto curve = disc::sweepDisc(on, fromHz, toHz, sweep, warnings);
     const double secs = t.seconds();
     const auto& b = curve.branch;
     const auto& s = b.statistics;
-    std::printf("%s\n%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; "
+    std::printf("%s, H = %d\n%.1f..%.1f Hz: %zu points in %.2f s (%.4f s per point), %d Newton iterations, %d steps cut; "
                 "residuals %.2f s (%ld), Jacobians %.2f s (%ld), factorisations %.2f s (%ld), preconditioners %.2f s, "
                 "solves %.2f s (%ld steps with kept factors, %ld Krylov solves, %ld GMRES iterations); peak %.6g mm at "
                 "%.3f Hz; %s\n",
-                names[variant], fromHz, toHz, b.points.size(), secs,
+                names[variant], harmonics, fromHz, toHz, b.points.size(), secs,
                 secs / std::max<std::size_t>(1, b.points.size()), s.newtonIterations, s.rejectedSteps,
                 s.residualSeconds, s.residuals, s.jacobianSeconds, s.jacobians, s.factorSeconds, s.factorizations,
                 s.preconditionerSeconds, s.solveSeconds, s.reusedFactorizations, s.krylovSolves, s.krylovIterations,
                 curve.peak,
                 curve.peakOmega / (2 * M_PI), b.stopReason.c_str());
+    return secs / double(std::max<std::size_t>(1, b.points.size()));
+  };
+  const double perPoint = trace(setup, 0, H);
+  if (variants == "all")
+    for (int variant = 1; variant < 3; ++variant) trace(setup, variant, H);
+  if (variants == "krylov-vs-dense6") {
+    auto six = disc::makeDiscForcedResponse(mesh, reduced, demo_disc::demoDiscResponse(6, preload), fromHz);
+    const double sixPerPoint = trace(six, 1, 6);
+    std::printf("cost per curve point, Krylov with H = %d against the dense solve with H = 6: %.2fx\n", H,
+                perPoint / sixPerPoint);
   }
   return 0;
 }

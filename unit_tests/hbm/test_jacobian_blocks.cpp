@@ -1,7 +1,8 @@
 // The Jacobian kept as blocks (JacobianBlocks) against the system's formed Jacobian:
 // its products are the dense matrix's, in the matrix form (a cyclic sector with a 3D
 // friction contact to the next sector, a Jenkins element and a cubic spring) and in
-// the dynamic-stiffness receptance form of the same system; the preconditioner's
+// the dynamic-stiffness receptance form of the same system and of a model in Woodbury's
+// parts (a residual part plus modes, as a hybrid reduced model's); the preconditioner's
 // blocks are the dense matrix's harmonic-diagonal blocks, and it inverts them (to its
 // single-precision factors' accuracy).
 #include <gtest/gtest.h>
@@ -11,7 +12,9 @@
 
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/JacobianBlocks.hpp"
+#include "cyclone/hbm/ProjectedReceptance.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
+#include "ModalTestModel.hpp"
 #include "RingSector.hpp"
 
 using namespace cyclone;
@@ -120,4 +123,61 @@ TEST(JacobianBlocks, ComplianceFormHasNone) {
   HarmonicBalanceSystem s(receptance, HarmonicSet::upTo(2), 16);
   EXPECT_FALSE(s.hasJacobianBlocks());
   EXPECT_ANY_THROW(s.jacobianBlocks(Eigen::VectorXd::Zero(s.numUnknowns()), 1.0));
+}
+
+namespace {
+
+// 5 base DOFs with 3 modes and a residual part, seen through 3 coordinates: a reduced
+// model's receptance, whose dynamic stiffness has Woodbury's parts for every phase.
+std::shared_ptr<const ProjectedReceptance> woodburyModel() {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g;
+  Eigen::MatrixXd T(3, 5);
+  for (Eigen::Index i = 0; i < T.size(); ++i) T.data()[i] = g(rng);
+  return std::make_shared<ProjectedReceptance>(std::make_shared<test_support::ModalTestModel>(5, 3, 7, true), T);
+}
+
+HarmonicBalanceSystem woodburySystem() {
+  HarmonicBalanceSystem s(woodburyModel(), HarmonicSet({0, 1, 2, 3, 5, 9}), 64);
+  CyclicCoupling c;
+  c.sectors = 7, c.engineOrder = 2;  // harmonics 2 and 9 share phase 4, 1 and 5 do not
+  s.setCyclic(c);
+  s.useDynamicStiffness(true);
+  addRingElements(s);
+  return s;
+}
+
+}  // namespace
+
+TEST(JacobianBlocks, WoodburyReceptanceForm) {
+  const HarmonicBalanceSystem s = woodburySystem();
+  ASSERT_NE(s.modalStiffnessBlocks(1.7), nullptr) << "the model's parts were not taken";
+  expectBlocksAreTheJacobian(s, 1.7);
+}
+
+// The residual with the linear part applied in Woodbury's parts against each harmonic's
+// plain inverse of the model's compliance (no parts used).
+TEST(JacobianBlocks, WoodburyResidualIsThePlainInverses) {
+  const HarmonicBalanceSystem s = woodburySystem();
+  const double omega = 1.7;
+  const Eigen::VectorXd X = motion(s);
+  Eigen::VectorXd R, F;
+  s.residual(X, omega, R, nullptr);
+  s.nonlinearForces(X, omega, F, nullptr);
+  const auto& H = s.aft().harmonics();
+  const int n = s.numDofs(), nc = s.numCoefficients();
+  Eigen::VectorXd expected = F;
+  for (int h : H.harmonics()) {
+    const int c = H.cosIndex(h);
+    Eigen::VectorXcd x(n);
+    for (int a = 0; a < n; ++a) x(a) = h == 0 ? std::complex<double>(X(a * nc + c), 0) : std::complex<double>(X(a * nc + c), -X(a * nc + c + 1));
+    const Eigen::MatrixXcd Z = h == 0 ? Eigen::MatrixXcd(s.receptance()->meanCompliance().inverse().cast<std::complex<double>>())
+                                      : Eigen::MatrixXcd(s.receptance()->compliance(h * omega, s.phaseIndex(h)).inverse());
+    const Eigen::VectorXcd y = Z * x;
+    for (int a = 0; a < n; ++a) {
+      expected(a * nc + c) += y(a).real();
+      if (h != 0) expected(a * nc + c + 1) -= y(a).imag();
+    }
+  }
+  EXPECT_LE((R - expected).norm(), 1e-10 * expected.norm());
 }

@@ -186,12 +186,15 @@ public:
 
   // One period from the slider state z (updated). With dz, the sensitivities are
   // carried through it: its first wCols columns d/dvec(W) (0 or m), the others
-  // d/d(the period's starting slider).
+  // d/d(the period's starting slider). Recording with sensitivities keeps the force
+  // samples' sensitivities to W (and to the starting slider when dz has those columns)
+  // for coefficientJacobian.
   void period(Eigen::VectorXd& z, Eigen::MatrixXd* dz, int wCols, bool record) {
     StepSensitivity sens{&dwt_, &dn_, dz, &df_, &dTrial_};
     if (dz) dwt_.setZero(dt_, dz->cols()), dn_.setZero(dz->cols()), df_.setZero(d_, dz->cols());
     if (dz) dTrial_.resize(dt_, dz->cols());
-    if (record && jacobian_) dfSamples_.resize(N_, d_ * m());
+    const int startCols = dz && record ? int(dz->cols()) - m() : 0;  // d/d(starting slider) columns
+    if (record && jacobian_) dfSamples_.resize(N_, d_ * m()), dfStart_.resize(N_, d_ * startCols);
     fi_.resize(d_), wt_.resize(dt_);
     auto& fi = fi_;
     auto& wt = wt_;
@@ -205,13 +208,23 @@ public:
       if (!record) continue;
       f_.row(i) = fi.transpose();
       if (jacobian_)
-        for (int c = 0; c < d_; ++c) dfSamples_.block(i, c * m(), 1, m()) = df_.row(c).head(m());
+        for (int c = 0; c < d_; ++c) {
+          dfSamples_.block(i, c * m(), 1, m()) = df_.row(c).head(m());
+          if (startCols > 0) dfStart_.block(i, c * startCols, 1, startCols) = df_.row(c).tail(startCols);
+        }
     }
-    // The coefficient Jacobian, P times the sampled force sensitivities, by an FFT per
-    // sensitivity column (at H = 30 and 512 samples the dense product was about half of
-    // a contact's Jacobian time). The Jacobian is zero before the one recorded period.
-    if (record && jacobian_)
-      for (int c = 0; c < d_; ++c) aft_.toFrequencyColumns(dfSamples_.middleCols(c * m(), m()), jacobian_->middleRows(c * nc_, nc_));
+  }
+
+  // The recorded period's coefficient Jacobian into *jacobian, the slider's start moving
+  // with W as dzStart (dt x m; empty: the recorded sensitivities hold it already): P times
+  // the sampled force sensitivities, by an FFT per sensitivity column (at H = 30 and 512
+  // samples the dense product was about half of a contact's Jacobian time).
+  void coefficientJacobian(const Eigen::MatrixXd& dzStart) {
+    for (int c = 0; c < d_; ++c) {
+      if (dzStart.size() != 0)
+        dfSamples_.middleCols(c * m(), m()).noalias() += dfStart_.middleCols(c * dt_, dt_) * dzStart;
+      aft_.toFrequencyColumns(dfSamples_.middleCols(c * m(), m()), jacobian_->middleRows(c * nc_, nc_));
+    }
   }
 
   // The fixed point of the period map z -> Phi(z) from y, by Newton on its dt
@@ -270,6 +283,7 @@ private:
   const int N_, nc_, d_, dt_;
   Eigen::MatrixXd dwt_, df_, dTrial_;  // work: the step's sensitivities
   Eigen::MatrixXd dfSamples_;          // the recorded period's df, a row per sample
+  Eigen::MatrixXd dfStart_;            // its sensitivity to the period's starting slider
   Eigen::RowVectorXd dn_;
   Eigen::VectorXd fi_, wt_;
 };
@@ -299,13 +313,12 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   // from point to point and Newton that cannot converge. There the fixed point of
   // the period map is found by Newton (PeriodMarch::settle).
   Eigen::VectorXd z = Eigen::VectorXd::Zero(dt);
-  Eigen::MatrixXd dz;
-  if (jacobian) dz.setZero(dt, m), jacobian->setZero(m, m);
+  if (jacobian) jacobian->setZero(m, m);
   const int marchedPeriods = 3;
   bool periodic = false;
   for (int k = 0; k < marchedPeriods && !periodic; ++k) {
     const Eigen::VectorXd start = z;
-    march.period(z, jacobian ? &dz : nullptr, m, false);
+    march.period(z, nullptr, m, false);
     periodic = (z - start).norm() <= settled;
   }
   if (!periodic) {
@@ -322,9 +335,29 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
     }
     if (!periodic) periodic = march.settle(z, settled);
     if (!periodic) ++unsettled;
-    if (jacobian) dz = march.sliderSensitivity(z);
   }
-  march.period(z, jacobian ? &dz : nullptr, m, true);
+  if (!jacobian) {
+    march.period(z, nullptr, m, true);
+    return;
+  }
+  // The recorded period carries the sensitivities to W and to its starting slider at
+  // once; the start is the period map's fixed point, so it moves with W as
+  // dz*/dW = (I - dPhi/dz)^-1 dPhi/dW (implicit function), both read off this same
+  // period's end: one period with sensitivities instead of one per marched period.
+  Eigen::MatrixXd sensitivity = Eigen::MatrixXd::Zero(dt, m + dt);
+  sensitivity.rightCols(dt).setIdentity();
+  const Eigen::VectorXd start = z;
+  march.period(z, &sensitivity, m, true);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(dt, dt) - sensitivity.rightCols(dt));
+  Eigen::MatrixXd dzStart = lu.solve(sensitivity.leftCols(m));
+  if (!lu.isInvertible() || !dzStart.allFinite()) {
+    // A neutral direction of the period map: the sensitivity marched over periods instead.
+    z = start;
+    dzStart = march.sliderSensitivity(z);
+    march.period(z, &dzStart, m, true);
+    dzStart.resize(0, 0);
+  }
+  march.coefficientJacobian(dzStart);
 }
 
 Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,

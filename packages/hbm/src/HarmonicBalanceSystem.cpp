@@ -83,7 +83,7 @@ void HarmonicBalanceSystem::setCyclic(CyclicCoupling coupling) {
                                      std::to_string(n));
   }
   cyclic_ = std::move(coupling);
-  blocks_ = HarmonicBlocks{};  // the phases changed
+  blocks_ = HarmonicBlocks{}, woodbury_.reset(), woodburyOmega_ = -1, woodburyHeld_ = -1;  // the phases changed
   if (receptance_ && mean_.size() == 0) kappa_ = 0;
   Cnext0_ = cyclic_.Cnext;
   cyclic_.Cnext *= dampingScale_;
@@ -227,7 +227,7 @@ void HarmonicBalanceSystem::useDynamicStiffness(bool on) {
     meanStiffness_ = lu.inverse();
   }
   stiffnessForm_ = on;
-  blocks_ = HarmonicBlocks{};
+  blocks_ = HarmonicBlocks{}, woodbury_.reset(), woodburyOmega_ = -1, woodburyHeld_ = -1;
 }
 
 const HarmonicBalanceSystem::HarmonicBlocks& HarmonicBalanceSystem::harmonicBlocks(double omega, bool inverse) const {
@@ -254,11 +254,60 @@ const HarmonicBalanceSystem::HarmonicBlocks& HarmonicBalanceSystem::harmonicBloc
   return blocks_;
 }
 
+std::shared_ptr<const ModalStiffnessBlocks> HarmonicBalanceSystem::modalStiffnessBlocks(double omega) const {
+  if (!receptance_ || !stiffnessForm_ || !(omega > 0) || woodburyHeld_ == 0) return nullptr;
+  if (woodbury_ && omega == woodburyOmega_) return woodbury_;
+  const auto& H = aft_->harmonics();
+  std::vector<const ModalStiffness*> parts;
+  std::vector<double> frequencies;
+  for (int h : H.harmonics()) {
+    const ModalStiffness* p = h == 0 ? nullptr : receptance_->modalStiffness(phaseIndex(h));
+    if (h != 0 && !p) {
+      woodburyHeld_ = 0;
+      return nullptr;
+    }
+    parts.push_back(p), frequencies.push_back(h * omega);
+  }
+  woodburyHeld_ = 1;
+  woodbury_ = std::make_shared<const ModalStiffnessBlocks>(std::move(parts), frequencies);
+  woodburyOmega_ = omega;
+  return woodbury_;
+}
+
 // X = c - i s, U = A X: c_U = Re A c + Im A s, s_U = -Im A c + Re A s (the same for Z = A^-1).
 void HarmonicBalanceSystem::applyHarmonicOperator(double omega, bool inverse, const Eigen::VectorXd& X,
                                                   Eigen::VectorXd& Y) const {
   const int n = numDofs(), nc = numCoefficients();
   const auto& H = aft_->harmonics();
+  if (inverse) {
+    if (const auto woodbury = modalStiffnessBlocks(omega)) {
+      // Z in Woodbury's parts: the harmonics' complex coefficients as columns, no block formed.
+      const std::size_t count = H.harmonics().size();
+      Eigen::MatrixXcd Xc = Eigen::MatrixXcd::Zero(n, Eigen::Index(count)), Yc = Xc;
+      for (std::size_t i = 0; i < count; ++i) {
+        const int h = H.harmonics()[i];
+        if (h == 0) continue;
+        const int c = H.cosIndex(h), s = H.sinIndex(h);
+        for (int a = 0; a < n; ++a) Xc(a, Eigen::Index(i)) = {X(a * nc + c), -X(a * nc + s)};
+      }
+      woodbury->apply(Xc, Yc);
+      Y.setZero(n * nc);
+      for (std::size_t i = 0; i < count; ++i) {
+        const int h = H.harmonics()[i];
+        const int c = H.cosIndex(h);
+        if (h == 0) {
+          Eigen::VectorXd x0(n);
+          for (int a = 0; a < n; ++a) x0(a) = X(a * nc + c);
+          const Eigen::VectorXd y0 = meanStiffness_ * x0;
+          for (int a = 0; a < n; ++a) Y(a * nc + c) = y0(a);
+          continue;
+        }
+        const int s = H.sinIndex(h);
+        for (int a = 0; a < n; ++a) Y(a * nc + c) = Yc(a, Eigen::Index(i)).real(), Y(a * nc + s) = -Yc(a, Eigen::Index(i)).imag();
+      }
+      return;
+    }
+  }
   const HarmonicBlocks& b = harmonicBlocks(omega, inverse);
   Y.setZero(n * nc);
   using Strided = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>;

@@ -44,13 +44,24 @@ bool complexStructured(const Eigen::MatrixXd& P, Eigen::MatrixXcd& A) {
 JacobianBlocks::JacobianBlocks(const HarmonicBalanceSystem& system, double omega, std::vector<ElementBlock> elements)
     : system_(system), omega_(omega), elements_(std::move(elements)) {
   const auto& H = system_.aft().harmonics();
+  woodbury_ = system_.modalStiffnessBlocks(omega_);
   for (std::size_t i = 0; i < H.harmonics().size(); ++i) {
     slots_.push_back(slotsOf(H, i));
+    if (woodbury_ && woodbury_->covers(i)) {
+      linear_.emplace_back(), linearComplex_.emplace_back();
+      continue;
+    }
     Eigen::MatrixXd block = system_.linearHarmonicBlock(omega_, i);
     Eigen::MatrixXcd complexBlock;
     if (slots_.back().size() == 2 && complexStructured(block, complexBlock)) block.resize(0, 0);
     linear_.push_back(std::move(block));
     linearComplex_.push_back(std::move(complexBlock));
+  }
+  sparseElements_.resize(elements_.size());
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const Eigen::MatrixXd& J = elements_[e].jacobian;
+    const Eigen::Index nonzeros = (J.array() != 0).count();
+    if (nonzeros * 4 < J.size()) sparseElements_[e] = J.sparseView(0.0, 0.0);
   }
 }
 
@@ -75,7 +86,24 @@ void JacobianBlocks::blendRows(const std::vector<int>& rows, double scale, doubl
 void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
   const int n = system_.numDofs(), nc = system_.numCoefficients();
   y.resize(v.size());
+  if (woodbury_) {  // the covered harmonics together, X = c - i s as columns
+    woodburyIn_.setZero(n, Eigen::Index(slots_.size()));
+    woodburyOut_.resize(n, Eigen::Index(slots_.size()));
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (!woodbury_->covers(i)) continue;
+      const std::vector<int>& slots = slots_[i];
+      for (int a = 0; a < n; ++a) woodburyIn_(a, Eigen::Index(i)) = {v(a * nc + slots[0]), -v(a * nc + slots[1])};
+    }
+    woodbury_->apply(woodburyIn_, woodburyOut_);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (!woodbury_->covers(i)) continue;
+      const std::vector<int>& slots = slots_[i];
+      for (int a = 0; a < n; ++a)
+        y(a * nc + slots[0]) = woodburyOut_(a, Eigen::Index(i)).real(), y(a * nc + slots[1]) = -woodburyOut_(a, Eigen::Index(i)).imag();
+    }
+  }
   for (std::size_t i = 0; i < slots_.size(); ++i) {
+    if (woodbury_ && woodbury_->covers(i)) continue;
     if (linearComplex_[i].size() != 0) {  // X = c - i s, Y = A X: y_c = Re Y, y_s = -Im Y
       const std::vector<int>& slots = slots_[i];
       complexIn_.resize(n);
@@ -94,7 +122,8 @@ void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
   const Eigen::MatrixXd& S = system_.nextSectorMap();
   const auto& connections = system_.elements();
   Eigen::MatrixXd &w = w_, &wNext = wNext_, &f = f_;
-  for (const ElementBlock& e : elements_) {
+  for (std::size_t ei = 0; ei < elements_.size(); ++ei) {
+    const ElementBlock& e = elements_[ei];
     const auto& c = connections[e.element];
     const int d = c.element->dimension();
     const bool across = c.Wnext.size() != 0;
@@ -108,8 +137,12 @@ void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
     }
     if (across) w.noalias() += S * wNext;
     f.resize(nc, d);
-    Eigen::Map<Eigen::VectorXd>(f.data(), nc * d).noalias() =
-        e.jacobian * Eigen::Map<const Eigen::VectorXd>(w.data(), nc * d);
+    if (sparseElements_[ei].size() != 0)
+      Eigen::Map<Eigen::VectorXd>(f.data(), nc * d).noalias() =
+          sparseElements_[ei] * Eigen::Map<const Eigen::VectorXd>(w.data(), nc * d);
+    else
+      Eigen::Map<Eigen::VectorXd>(f.data(), nc * d).noalias() =
+          e.jacobian * Eigen::Map<const Eigen::VectorXd>(w.data(), nc * d);
     if (across) wNext.noalias() = S.transpose() * f;
     for (int a : e.support)
       for (int k = 0; k < d; ++k) {
@@ -129,8 +162,9 @@ Eigen::MatrixXd JacobianBlocks::harmonicBlock(std::size_t i) const {
   const std::vector<int>& slots = slots_[i];
   const int m = int(slots.size()), nc = system_.numCoefficients();
   Eigen::MatrixXd P = linear_[i];
-  if (linearComplex_[i].size() != 0) {
-    const Eigen::MatrixXcd& A = linearComplex_[i];
+  const bool covered = woodbury_ && woodbury_->covers(i);
+  if (covered || linearComplex_[i].size() != 0) {
+    const Eigen::MatrixXcd A = covered ? woodbury_->block(i) : linearComplex_[i];
     P.resize(2 * A.rows(), 2 * A.cols());
     for (Eigen::Index b = 0; b < A.cols(); ++b)
       for (Eigen::Index a = 0; a < A.rows(); ++a) {

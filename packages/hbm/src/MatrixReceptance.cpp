@@ -20,6 +20,8 @@ Eigen::MatrixXcd ReceptanceModel::dynamicStiffness(double frequency, long phaseI
 
 std::optional<ModalRealization> ReceptanceModel::modalRealization(long) const { return std::nullopt; }
 
+const ModalStiffness* ReceptanceModel::modalStiffness(long) const { return nullptr; }
+
 MatrixReceptance::MatrixReceptance(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, int sectors,
                                    Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext, Eigen::MatrixXd Knext)
     : M_(std::move(M)), C_(std::move(C)), K_(std::move(K)), sectors_(sectors) {

@@ -36,6 +36,7 @@ ModalStiffness::ModalStiffness(const ModalRealization& r) : r_(r) {
   G_ = Rinv_ * r.U;
   Hv_ = r.V.transpose() * Rinv_;
   K_ = r.V.transpose() * G_;
+  Z0_ = structuralFactor(r) * Rinv_;
   usable_ = true;
   const double top = std::sqrt(r.eigenvalues.cwiseAbs().maxCoeff());
   for (double w : {0.37 * top, 1.13 * top}) {
@@ -48,9 +49,16 @@ Eigen::MatrixXcd ModalStiffness::operator()(double w) const {
   const std::complex<double> s = structuralFactor(r_);
   Eigen::MatrixXcd M = s * K_;
   M.diagonal() += inverseWeights(r_, w);
-  Eigen::MatrixXcd Z = s * Rinv_;
+  Eigen::MatrixXcd Z = Z0_;
   Z.noalias() -= (s * s) * (G_ * M.partialPivLu().solve(Hv_));
   return Z;
+}
+
+void ModalStiffness::core(double w, Eigen::MatrixXcd& C) const {
+  const std::complex<double> s = structuralFactor(r_);
+  Eigen::MatrixXcd M = s * K_;
+  M.diagonal() += inverseWeights(r_, w);
+  C = (s * s) * M.partialPivLu().inverse();
 }
 
 }  // namespace cyclone::hbm

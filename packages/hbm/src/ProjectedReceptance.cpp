@@ -71,6 +71,11 @@ Eigen::MatrixXcd ProjectedReceptance::dynamicStiffness(double frequency, long p)
   return ReceptanceModel::dynamicStiffness(frequency, p);
 }
 
+const ModalStiffness* ProjectedReceptance::modalStiffness(long p) const {
+  const Projected& pr = projected(p);
+  return pr.stiffness.usable() ? &pr.stiffness : nullptr;
+}
+
 Eigen::MatrixXd ProjectedReceptance::meanCompliance() const {
   const Eigen::MatrixXd T0 = T_ + Tnext_;
   return T0 * base_->meanCompliance() * T0.transpose();

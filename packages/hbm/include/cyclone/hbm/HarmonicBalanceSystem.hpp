@@ -26,6 +26,7 @@
 
 #include "cyclone/hbm/Aft.hpp"
 #include "cyclone/hbm/JacobianBlocks.hpp"
+#include "cyclone/hbm/ModalStiffnessBlocks.hpp"
 #include "cyclone/hbm/NonlinearElement.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/hbm/ScalarElement.hpp"
@@ -112,6 +113,10 @@ public:
   /// system, which must outlive them.
   std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega) const;
   bool hasJacobianBlocks() const { return !receptance_ || stiffnessForm_; }
+  /// The dynamic-stiffness form's Z(omega) for every harmonic h >= 1 in Woodbury's parts
+  /// (ModalStiffnessBlocks), when the model has them for every phase those harmonics use;
+  /// else nullptr (the blocks are then formed). Kept for the last frequency asked.
+  std::shared_ptr<const ModalStiffnessBlocks> modalStiffnessBlocks(double omega) const;
   /// Harmonic index i's block of Z(omega) (the harmonic's 1 or 2 coefficients of every
   /// DOF; local index a m + j, m = 1 for the mean, 2 otherwise).
   Eigen::MatrixXd linearHarmonicBlock(double omega, std::size_t i) const;
@@ -172,6 +177,9 @@ private:
     std::vector<Eigen::MatrixXd> re, im;
   };
   mutable HarmonicBlocks blocks_;
+  mutable std::shared_ptr<const ModalStiffnessBlocks> woodbury_;  // modalStiffnessBlocks' last
+  mutable double woodburyOmega_ = -1;
+  mutable int woodburyHeld_ = -1;  // whether the model has the parts: -1 not yet asked
   const HarmonicBlocks& harmonicBlocks(double omega, bool inverse) const;
   /// Y = B X with B the per-harmonic operator, applied block by block (never formed).
   void applyHarmonicOperator(double omega, bool inverse, const Eigen::VectorXd& X, Eigen::VectorXd& Y) const;

@@ -5,7 +5,10 @@
 // dense over that element's own coordinates and harmonics. A product with it costs
 // about (H + 1) n^2 + sum_e (d_e (2H + 1))^2, where the dense matrix holds
 // (n (2H + 1))^2 entries and its LU costs their 3/2 power: what lets a Newton step
-// carry tens of harmonics on hundreds of contact coordinates (issue 47).
+// carry tens of harmonics on hundreds of contact coordinates (issue 47). A hybrid
+// model's linear part is applied in Woodbury's parts (ModalStiffnessBlocks), and an
+// element block with few nonzeros as a sparse matrix: what a product reads is what
+// sets its time (docs/solvers.md).
 //
 // The preconditioner is the Jacobian's own block diagonal by harmonic: per harmonic h,
 // the linear part's block plus every element's (h, h) block (its coupling of harmonic h
@@ -14,8 +17,11 @@
 // What it leaves out is the elements' coupling between different harmonics, the part
 // that grows where a contact opens and closes within the period.
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
+
+#include "cyclone/hbm/ModalStiffnessBlocks.hpp"
 
 namespace cyclone::hbm {
 
@@ -61,6 +67,10 @@ private:
   const HarmonicBalanceSystem& system_;
   double omega_;
   std::vector<ElementBlock> elements_;
+  // Per element: its Jacobian's nonzeros when they are few (a contact stuck or open all
+  // period: kt and kn on the diagonal and the mean's rows), else empty and the dense
+  // block is applied. Exact: the same products on a fraction of the memory.
+  std::vector<Eigen::SparseMatrix<double, Eigen::RowMajor>> sparseElements_;
   std::vector<std::vector<int>> slots_;  // per harmonic index: its coefficient slots (cos[, sin])
   std::vector<Eigen::MatrixXd> linear_;  // per harmonic index: the linear part's block (copied: the
                                          // system's per-frequency cache moves with its residuals)
@@ -68,6 +78,10 @@ private:
   std::vector<int> blendedRows_;  // blendRows: rows i are blendScale_ J_i + blendShift_ e_i^T
   double blendScale_ = 1, blendShift_ = 0;
   std::vector<Eigen::MatrixXcd> linearComplex_;  // the same where it is complex-structured (linear_ then empty)
+  // The dynamic-stiffness form's harmonics in Woodbury's parts where the model has them
+  // (then linear_ and linearComplex_ are empty for the indices it covers).
+  std::shared_ptr<const ModalStiffnessBlocks> woodbury_;
+  mutable Eigen::MatrixXcd woodburyIn_, woodburyOut_;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXf>> blockLu_;  // single precision (solveBlock)
   // Work vectors of precondition() (one harmonic's coefficients): no allocation per call.
   // Per block width (index 0: the mean's n coefficients, 1: a harmonic's 2n), so that

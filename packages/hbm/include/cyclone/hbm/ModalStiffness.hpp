@@ -20,12 +20,20 @@ public:
   bool usable() const { return usable_; }
   /// Z(w) for w > 0 (only when usable()).
   Eigen::MatrixXcd operator()(double w) const;
+  /// Z(w) = Z0 - G C(w) Hv in its parts (only when usable()): the constant Z0 = s R^-1
+  /// (n x n), G and Hv (n x m, m x n), and the m x m core C(w) = s^2 (D^-1 + s K)^-1 made
+  /// into C (its storage kept). ModalStiffnessBlocks applies Z without forming it.
+  const Eigen::MatrixXcd& constantPart() const { return Z0_; }
+  const Eigen::MatrixXcd& G() const { return G_; }
+  const Eigen::MatrixXcd& Hv() const { return Hv_; }
+  int numModes() const { return r_.numModes(); }
+  void core(double w, Eigen::MatrixXcd& C) const;
   /// A(w) from the realization, for w > 0.
   static Eigen::MatrixXcd compliance(const ModalRealization& r, double w);
 
 private:
   ModalRealization r_;
-  Eigen::MatrixXcd Rinv_, G_, Hv_, K_;
+  Eigen::MatrixXcd Rinv_, G_, Hv_, K_, Z0_;
   bool usable_ = false;
 };
 

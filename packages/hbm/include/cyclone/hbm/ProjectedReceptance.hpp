@@ -30,6 +30,8 @@ public:
   Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const override;
   /// Whether dynamicStiffness takes Woodbury's identity for phase p.
   bool usesWoodbury(long phaseIndex) const { return projected(phaseIndex).stiffness.usable(); }
+  /// Woodbury's parts where usesWoodbury(p) (kept with the projection), else nullptr.
+  const ModalStiffness* modalStiffness(long phaseIndex) const override;
   /// T_0 A_mean T_0^T, T_0 = T + T_next (the mean motion is the same in every sector).
   Eigen::MatrixXd meanCompliance() const override;
   /// The base model's realization projected: R' = T_p R T_p^H, U' = T_p U, V' = conj(T_p) V

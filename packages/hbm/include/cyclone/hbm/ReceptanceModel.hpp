@@ -16,6 +16,8 @@
 
 namespace cyclone::hbm {
 
+class ModalStiffness;
+
 /// The compliance of one phase index as modes plus a constant part, what Hill's
 /// method needs of a receptance (it has no M, C, K):
 ///   A(w) = R / (1 + i eta) + U diag(1 / ((1 + i eta) l_j + i c_j w - w^2)) V^T   for w > 0,
@@ -50,6 +52,10 @@ public:
   /// The modal realization of phase p (see ModalRealization), or none when the model
   /// has no modal form (then Hill's method cannot be applied to it).
   virtual std::optional<ModalRealization> modalRealization(long phaseIndex) const;
+  /// The dynamic stiffness of phase p in Woodbury's parts (ModalStiffness: a constant plus
+  /// a low-rank modal part) where the model has them and they hold, else nullptr; owned by
+  /// the model. dynamicStiffness(w, p) is then that ModalStiffness's Z(w).
+  virtual const ModalStiffness* modalStiffness(long phaseIndex) const;
 };
 
 /// The receptance of a matrix system (and its cyclic coupling, as in
