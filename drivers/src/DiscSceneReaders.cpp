@@ -288,6 +288,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
                                                        ": must be >= 0 (0: no check of the reduced models)");
   plan.rebuildCache = cache == "rebuild" && !plan.cacheDir.empty();
   r.rejectUnknownKeys();
+  disc::checkReducedModelCache(mesh, plan.modelSpec, plan.nds, plan.cacheDir);  // before the modes' and static work
   return plan;
 }
 

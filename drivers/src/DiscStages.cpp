@@ -143,23 +143,23 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   if (solved.headline.found()) {
     summary.computed.insert(summary.computed.begin(), solved.headline.text);
     if (solved.beyondSmallDisplacements()) {
-      const std::string why = "warning: disc_frc: the peak's motion, " + numberText(solved.headline.peak.value) +
+      const std::string why = "disc_frc: the peak's motion, " + numberText(solved.headline.peak.value) +
                               " mm, is " + numberText(100 * solved.headline.peak.value / solved.sectorSize, 3) +
                               " % of the sector's size (its bounding box's diagonal, " +
                               numberText(solved.sectorSize, 4) +
                               " mm): beyond the small displacements the linear reduced models hold (check "
                               "disc_response/excitation/amplitude)";
-      log::warn(why);
-      summary.computed.insert(summary.computed.begin() + 1, why);
+      log::warn(why);  // log::warn puts "warning: " before it
+      summary.computed.insert(summary.computed.begin() + 1, "warning: " + why);
     }
   } else {
     // No peak is the run's main answer missing: said first, with what stopped it.
-    std::string why = "warning: disc_frc: no friction-damped peak was found (" + reference.harmonicsCheck.text + ")";
+    std::string why = "disc_frc: no friction-damped peak was found (" + reference.harmonicsCheck.text + ")";
     if (plan.modelSpec.lossFactor == 0)
       why += "; the reduced model has no damping (reduced_model/loss_factor: 0), so where the contacts stay stuck "
              "the response grows without bound";
     log::warn(why);
-    summary.computed.insert(summary.computed.begin(), why);
+    summary.computed.insert(summary.computed.begin(), "warning: " + why);
   }
   return solved;
 }

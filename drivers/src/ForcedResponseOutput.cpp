@@ -52,6 +52,19 @@ std::string stiffContactsText(const response::ForcedResponseSetup& setup) {
                                    "cannot place: lower it"
                                  : "it only makes the balance stiff: lower it");
   }
+  // A cubic spring stiffer at the linear response than the system by far (k3 = 1e300):
+  // its response lies at a scale the start, made on the linear response, does not reach.
+  const double omega = setup.parameter == response::ForcedResponseSetup::Parameter::Omega
+                           ? setup.continuation.from * setup.omegaUnit
+                           : setup.omega;
+  for (const auto& s : response::stiffCubicSprings(setup, omega, 1e6)) {
+    const auto i = std::size_t(s.element);
+    text << "; nonlinear_elements/" << (i < setup.elementNames.size() ? setup.elementNames[i] : std::to_string(i))
+         << "/k3 (" << numberText(s.value) << ") is a stiffness 3 k3 x^2 of " << numberText(s.stiffness, 3)
+         << " at the linear response's amplitude along its direction (" << numberText(s.amplitude, 4) << "), "
+         << numberText(s.ratio(), 3) << " times the system's there (" << numberText(s.systemStiffness, 4)
+         << "): the response lies at a scale the start does not reach; check k3's value and units";
+  }
   return text.str();
 }
 

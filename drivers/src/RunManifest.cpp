@@ -31,11 +31,17 @@ std::string utcNow() {
   return text;
 }
 
-// What a SIGTERM, SIGINT or SIGHUP writes: the manifest saying "interrupted", composed while the
+// What a stop signal (kStopSignals) writes: the manifest saying "interrupted", composed while the
 // run starts, since a signal handler may only make system calls (open, write, rename:
 // async-signal-safe). One run per process, so one of each.
 char gInterruptedText[4096], gInterruptedTemp[4096], gManifestPath[4096];
 std::size_t gInterruptedLength = 0;
+
+// The signals whose default action ends the process and that a run is stopped by from
+// outside: a batch system's stop (TERM) and its warnings before a limit (USR1, USR2),
+// Ctrl-C (INT), a closed terminal or ssh session (HUP), a CPU-time or file-size limit
+// (XCPU, XFSZ), an alarm (ALRM). SIGHUP, SIGXCPU and SIGUSR1 left "running" (fifth probe).
+constexpr int kStopSignals[] = {SIGTERM, SIGINT, SIGHUP, SIGXCPU, SIGXFSZ, SIGUSR1, SIGUSR2, SIGALRM};
 
 extern "C" void markInterrupted(int signal) {
   const int fd = ::open(gInterruptedTemp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -129,26 +135,21 @@ RunManifest::RunManifest(const std::string& outDir, const std::string& scene, st
     previousUnfinished += (previousUnfinished.empty() ? "" : "; ") + removed.str();
   }
   write("running", "");
-  // SIGTERM, SIGINT and SIGHUP (a batch system's stop, Ctrl-C, a closed terminal or ssh
-  // session: SIGHUP left "running", a fifth probe) mark the run interrupted; its
-  // checkpoints stay for --resume. SIGKILL cannot be caught: the manifest says running.
+  // The stop signals (kStopSignals) mark the run interrupted; its checkpoints stay for
+  // --resume. SIGKILL cannot be caught: the manifest says running.
   std::ostringstream text;
   text << "status: interrupted\nscene: " << scene_ << "\npid: " << ::getpid() << "\nstarted: " << started_
-       << "\nerror: stopped by a signal (SIGTERM, SIGINT or SIGHUP); run again with --resume to continue from its "
-          "checkpoints\n";
+       << "\nerror: stopped by a signal (a stop, interrupt, hang-up, time or size limit); run again with --resume to "
+          "continue from its checkpoints\n";
   keep(gInterruptedText, sizeof gInterruptedText, text.str());
   gInterruptedLength = std::strlen(gInterruptedText);
   keep(gInterruptedTemp, sizeof gInterruptedTemp, manifest + ".interrupted.tmp");
   keep(gManifestPath, sizeof gManifestPath, manifest);
-  std::signal(SIGTERM, markInterrupted);
-  std::signal(SIGINT, markInterrupted);
-  std::signal(SIGHUP, markInterrupted);
+  for (int signal : kStopSignals) std::signal(signal, markInterrupted);
 }
 
 RunManifest::~RunManifest() {
-  std::signal(SIGTERM, SIG_DFL);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGHUP, SIG_DFL);
+  for (int signal : kStopSignals) std::signal(signal, SIG_DFL);
   if (!finished_) {
     try {
       write("failed", "error: stopped before the end\n");

@@ -23,6 +23,33 @@ namespace {
 bool isEmptyList(const Teuchos::ParameterList& list, const std::string& key) {
   return list.isType<std::string>(key) && list.get<std::string>(key) == kEmptyList;
 }
+
+// YAML's special floats (.nan, .inf, -.inf in any of their spellings) reach the scene as
+// text: said as what they are, not as "got 'string'" (a fifth probe).
+std::string specialFloat(const std::string& text) {
+  std::string t;
+  for (char c : text) t += char(std::tolower(static_cast<unsigned char>(c)));
+  if (t == ".nan") return "YAML's not-a-number";
+  if (t == ".inf" || t == "+.inf" || t == "-.inf") return "YAML's infinity";
+  return "";
+}
+
+// Why the value under `key` is not the number(s) asked for.
+std::string notNumbers(const Teuchos::ParameterList& list, const std::string& key, const std::string& expected) {
+  auto said = [&](const std::string& text) {
+    const std::string special = specialFloat(text);
+    return special.empty() ? "the text '" + text + "'"
+                           : text + " (" + special + "; an input here is a finite number)";
+  };
+  if (list.isType<std::string>(key)) return "expected " + expected + ", got " + said(list.get<std::string>(key));
+  if (list.isType<Teuchos::Array<std::string>>(key)) {
+    const auto& a = list.get<Teuchos::Array<std::string>>(key);
+    for (std::size_t i = 0; i < std::size_t(a.size()); ++i)
+      if (!specialFloat(a[i]).empty())
+        return "expected " + expected + ", got " + said(a[i]) + " at position " + std::to_string(i);
+  }
+  return "expected " + expected + ", got '" + list.getEntry(key).getAny().typeName() + "'";
+}
 }  // namespace
 
 SceneSection::SceneSection(const Teuchos::ParameterList& list, std::string file, std::string path)
@@ -52,7 +79,7 @@ double SceneSection::getDouble(const std::string& key, double fallback) {
   if (!has(key)) return fallback;
   if (list_.isType<double>(key)) return list_.get<double>(key);
   if (list_.isType<int>(key)) return list_.get<int>(key);
-  throw InputError(where(key), "expected a number, got '" + list_.getEntry(key).getAny().typeName() + "'");
+  throw InputError(where(key), notNumbers(list_, key, "a number"));
 }
 
 std::string SceneSection::requiredText(const std::string& key) const {
@@ -133,7 +160,7 @@ std::vector<double> SceneSection::getDoubleList(const std::string& key, const st
   }
   if (list_.isType<double>(key)) return {list_.get<double>(key)};
   if (list_.isType<int>(key)) return {double(list_.get<int>(key))};
-  throw InputError(where(key), "expected a list of numbers, e.g. [0.0, 5000.0]");
+  throw InputError(where(key), notNumbers(list_, key, "a list of numbers (e.g. [0.0, 5000.0])"));
 }
 
 std::array<double, 3> SceneSection::getVector3(const std::string& key, const std::array<double, 3>& fallback) {

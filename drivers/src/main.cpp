@@ -1,6 +1,7 @@
 // The cyclone program: runs scenes (YAML) and the embedded demo.
 #include <Tpetra_Core.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -107,10 +108,23 @@ int main(int argc, char** argv) {
                                                              overrides, comm)
                              : cyclone::scenes::runSceneFile(scenePath, overrides, comm);
     if (comm->getRank() == 0) {
-      std::printf("\nsummary (%.1f s on %d rank%s)\n", timer.seconds(), comm->getSize(), comm->getSize() > 1 ? "s" : "");
-      for (const auto& line : summary.computed) std::printf("  %s\n", line.c_str());
-      std::printf("written:\n");
-      for (const auto& path : summary.written) std::printf("  %s\n", path.c_str());
+      const double seconds = timer.seconds();
+      auto print = [&](std::FILE* to) {
+        std::fprintf(to, "\nsummary (%.1f s on %d rank%s)\n", seconds, comm->getSize(), comm->getSize() > 1 ? "s" : "");
+        for (const auto& line : summary.computed) std::fprintf(to, "  %s\n", line.c_str());
+        std::fprintf(to, "written:\n");
+        for (const auto& path : summary.written) std::fprintf(to, "  %s\n", path.c_str());
+        return std::fflush(to) == 0 && !std::ferror(to);
+      };
+      // Standard output closed or full (a reader gone, /dev/full): the products are whole
+      // and the run succeeded, but its summary must not vanish: it goes to stderr then.
+      errno = 0;
+      if (!print(stdout)) {
+        const int why = errno;
+        std::fprintf(stderr, "cyclone: standard output could not be written (%s): the summary follows here\n",
+                     why != 0 ? std::strerror(why) : "write error");
+        print(stderr);
+      }
     }
     return 0;
   } catch (const cyclone::InputError& e) {

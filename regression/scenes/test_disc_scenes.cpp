@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/LogSink.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscParameterStudy.hpp"
 #include "cyclone/disc/DiscPeakFollowing.hpp"
@@ -142,12 +143,28 @@ TEST(Scenes, TooFewModesForTheRangeAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "disc_frc.csv"));
 }
 
+// Warnings captured as the log writes them (it puts "warning: " before each): one that
+// itself began with "warning:" was printed as "warning: warning: ...".
+struct CapturedWarnings {
+  std::vector<std::string> lines;
+  CapturedWarnings() {
+    log::setSink([this](log::Level level, const std::string& m) {
+      if (level == log::Level::Warning) lines.push_back(m);
+    });
+  }
+  ~CapturedWarnings() { log::setSink({}); }
+  void expectNoDoubledPrefix() const {
+    for (const auto& l : lines) EXPECT_NE(l.rfind("warning:", 0), 0u) << "printed as 'warning: " << l << "'";
+  }
+};
+
 // No damping but friction's and the contacts held stuck by a large preload: the response
 // at the stuck resonance grows without bound and the curve has no peak. The run said
 // nothing of it (exit 0, no headline line); now its summary starts with the warning and
 // names the loss factor.
 TEST(Scenes, ACurveWithoutAPeakSaysSoFirst) {
   log::setQuiet(true);
+  const CapturedWarnings warnings;
   const auto dir = freshDir("disc_no_peak");
   std::string scene = discResponseScene();
   scene.replace(scene.find("    prestress: linear\n"), 0, "    loss_factor: 0.0\n");
@@ -160,6 +177,7 @@ TEST(Scenes, ACurveWithoutAPeakSaysSoFirst) {
   const auto& first = summary.computed.front();
   EXPECT_EQ(first.rfind("warning: disc_frc: no friction-damped peak was found", 0), 0u) << first;
   EXPECT_NE(first.find("reduced_model/loss_factor: 0"), std::string::npos) << first;
+  warnings.expectNoDoubledPrefix();
 }
 
 // An excitation of 1e5 N gave a peak of 550 mm on the default disc's 60 mm blade, exit 0,
@@ -168,6 +186,7 @@ TEST(Scenes, ACurveWithoutAPeakSaysSoFirst) {
 // 7 times the sector's size, is said second, after the headline.
 TEST(Scenes, AMotionBeyondSmallDisplacementsIsSaid) {
   log::setQuiet(true);
+  const CapturedWarnings warnings;
   const auto dir = freshDir("disc_large_motion");
   std::string scene = discResponseScene();
   scene.replace(scene.find("amplitude: 20.0"), 15, "amplitude: 1.0e5");
@@ -180,6 +199,7 @@ TEST(Scenes, AMotionBeyondSmallDisplacementsIsSaid) {
   EXPECT_EQ(summary.computed[0].rfind("friction-damped peak", 0), 0u) << summary.computed[0];
   EXPECT_EQ(summary.computed[1].rfind("warning: disc_frc: the peak's motion, ", 0), 0u) << summary.computed[1];
   EXPECT_NE(summary.computed[1].find("beyond the small displacements"), std::string::npos) << summary.computed[1];
+  warnings.expectNoDoubledPrefix();
 }
 
 // A direction is a direction at any length: [0, 0, 1e200] made a zero force (its squared

@@ -82,7 +82,10 @@ TEST(Scenes, ARunMarksItsDirectoryAndAConcurrentRunIsRefused) {
 // manifest saying "interrupted".
 void stopMidCurveAndResume(int signal, const std::string& manifestStatus) {
   const std::string scene = std::string(CYCLONE_SCENE_DIR) + "/friction3d_rotating.yaml";
-  const std::string tag = signal == SIGKILL ? "killed" : signal == SIGHUP ? "hung_up" : "terminated";
+  const std::string tag = signal == SIGKILL   ? "killed"
+                          : signal == SIGHUP  ? "hung_up"
+                          : signal == SIGXCPU ? "cpu_limit"
+                                              : "terminated";
   const auto whole = freshDir("resume_whole_" + tag), killed = freshDir("resume_" + tag);
   fs::create_directories(killed);
   auto cyclone = [&](const fs::path& out, const std::string& extra, const fs::path& log) {
@@ -172,6 +175,10 @@ TEST(Scenes, ATerminatedRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SI
 // fifth probe of the shipped build): an interruption like SIGTERM's now.
 TEST(Scenes, AHungUpRunSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGHUP, "interrupted"); }
 
+// A CPU-time limit (ulimit -t, a batch queue's) ends the run by SIGXCPU: it left the
+// manifest "running" (a fifth probe); an interruption like SIGTERM's now.
+TEST(Scenes, ARunAtItsCpuLimitSaysInterruptedAndResumes) { stopMidCurveAndResume(SIGXCPU, "interrupted"); }
+
 // A run whose stdout reader goes away (`cyclone run s.yaml | head -1`): it was killed by
 // SIGPIPE at its second log line, exit 141, its manifest left "running" (issue 49 probe).
 // The run goes on to the end without its progress lines.
@@ -190,6 +197,21 @@ TEST(Scenes, AClosedStdoutDoesNotEndTheRun) {
   const std::string manifest((std::istreambuf_iterator<char>(manifestFile)), std::istreambuf_iterator<char>());
   EXPECT_EQ(manifest.rfind("status: complete", 0), 0u) << manifest;
   EXPECT_TRUE(fs::exists(dir / "frc.csv"));
+}
+
+// Standard output full (/dev/full) or closed: the run's products were whole, exit 0, and
+// its summary went nowhere (a fifth probe). The summary now follows on stderr, said so.
+TEST(Scenes, AFullStdoutGivesTheSummaryOnStderr) {
+  const auto dir = freshDir("full_stdout");
+  const fs::path err = dir.string() + ".err";
+  const std::string command = std::string(CYCLONE_EXE) + " run " + CYCLONE_SCENE_DIR + "/duffing.yaml --output " +
+                              dir.string() + " > /dev/full 2> " + err.string();
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(err);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("standard output could not be written (No space left on device)"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nsummary ("), std::string::npos) << text;
+  EXPECT_NE(text.find("frc.csv"), std::string::npos) << text;
 }
 
 // The report is this run's: an earlier run's study figure and table in the same output

@@ -548,9 +548,24 @@ TEST(Scenes, AZeroForceAndTooFewSamplesAreRefused) {
          "    parameter: force_scale\n    omega: 1.2\n    from: 1.0e-10\n    to: 1.0e10",
          "'cyclone/continuation/from': a force scale of 1e-10 is solved to the tolerance over it"},
         {"      type: cubic\n      direction: \\[1.0\\]\n      k3: 0.1",
-         "      type: unilateral\n      direction: [1.0]\n      k: -100.0", "'cyclone/nonlinear_elements/hardening': "}}) {
+         "      type: unilateral\n      direction: [1.0]\n      k: -100.0", "'cyclone/nonlinear_elements/hardening': "},
+        // YAML's .nan and .inf reach the scene as text: "expected a number, got 'string'".
+        {"k3: 0.1", "k3: .nan", "'cyclone/nonlinear_elements/hardening/k3': expected a number, got .nan (YAML's not-a-number"},
+        {"C: \\[0.05\\]", "C: [.inf]", "'cyclone/system/C': expected a list of numbers (e.g. [0.0, 5000.0]), got .inf (YAML's infinity; an input here is a finite number) at position 0"},
+        {"cos: 0.18", "cos: abc", "'cyclone/excitation/force/cos': expected a number, got the text 'abc'"}}) {
     const std::string msg = failure(duffingSceneWith(pattern, replacement), dir);
     EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  }
+  // k3 = 1e300 found no start and named nothing (a fifth probe): the failure (a solver's,
+  // the input being valid) now names it first.
+  scenes::SceneOverrides o;
+  o.outputDirectory = (dir / "k3").string();
+  try {
+    scenes::runSceneText(duffingSceneWith("k3: 0.1", "k3: 1.0e300"), "k3.yaml", o, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "k3 = 1e300 traced";
+  } catch (const SolverError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("nonlinear_elements/hardening/k3 (1e+300) is a stiffness 3 k3 x^2 of "), std::string::npos) << msg;
   }
 }
 

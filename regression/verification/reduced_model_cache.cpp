@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
@@ -205,4 +206,38 @@ TEST(ReducedModelCache, ADiametersModelIsTheSameWhateverIsBuiltBeside) {
     const Eigen::MatrixXcd A = alone.models.at(3)->compliance(w), B = beside.models.at(3)->compliance(w);
     EXPECT_EQ((A - B).cwiseAbs().maxCoeff(), 0.0) << "at " << w << " rad/s; relative " << (A - B).norm() / A.norm();
   }
+}
+
+// A model's file name taken by a directory was refused only when the built model was
+// written, after the work (a fifth probe); the cache directory's name taken by a file
+// gave the filesystem's "File exists". Both are refused before any model is built,
+// naming reduced_model/cache and the path.
+TEST(ReducedModelCache, ACacheNameTakenIsRefusedBeforeAnyWork) {
+  log::setQuiet(true);
+  const auto c = unprestressedCase("cyclone_reduced_model_cache_taken");
+  const std::vector<int> nds{1};
+  const std::string path = disc::reducedModelCachePath(c.mesh, c.spec, 1, c.dir.string());
+  EXPECT_EQ(c.build(nds).files.at(1), path) << "the path named is not the file the build writes";
+  fs::remove_all(c.dir);
+  fs::create_directories(path);
+  auto refusal = [&]() -> std::string {
+    try {
+      c.build(nds);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  std::string why = refusal();
+  EXPECT_NE(why.find("reduced_model/cache"), std::string::npos) << why;
+  EXPECT_NE(why.find(path), std::string::npos) << why;
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(c.dir)) entries += e.path() != fs::path(path);
+  EXPECT_EQ(entries, 0u) << "something was written before the refusal";
+  fs::remove_all(c.dir);
+  std::ofstream(c.dir.string()) << "not a directory";
+  why = refusal();
+  EXPECT_NE(why.find("reduced_model/cache"), std::string::npos) << why;
+  EXPECT_NE(why.find("is not a directory"), std::string::npos) << why;
+  fs::remove(c.dir);
 }

@@ -72,4 +72,25 @@ TEST(IsotropicElastic, ValidateRejectsNonPhysicalParameters) {
   expectRejected(m, "density");
 }
 
+// A nearly incompressible nu is refused as implausible for the displacement elements (a
+// fifth probe ran nu = 0.49999 with no word), naming nu; a set the code cannot name
+// (units: other) takes it, and 0.45 passes.
+TEST(IsotropicElastic, PlausibilityRefusesANearlyIncompressibleNu) {
+  IsotropicElastic m;
+  m.nu = 0.49999;
+  EXPECT_NO_THROW(m.validate("scene.yaml"));
+  try {
+    m.checkPlausible("cyclone/material");
+    ADD_FAILURE() << "nu = 0.49999 accepted";
+  } catch (const cyclone::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Poisson's ratio nu"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nearly incompressible"), std::string::npos) << e.what();
+  }
+  m.nu = 0.45;
+  EXPECT_NO_THROW(m.checkPlausible("cyclone/material"));
+  m.nu = 0.49999;
+  m.units = cyclone::fe::UnitSystem::Other;
+  EXPECT_NO_THROW(m.checkPlausible("cyclone/material"));
+}
+
 }  // namespace

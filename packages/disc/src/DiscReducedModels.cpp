@@ -166,6 +166,30 @@ std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, cons
                                     : cyclic::solveNonlinearPrestress(mesh, k0, spec.material, spec.rpm, axis, comm);
 }
 
+std::string reducedModelCachePath(const mesh::Mesh& mesh, const DiscModelSpec& spec, int nodalDiameter,
+                                  const std::string& cacheDirectory) {
+  return cacheDirectory + "/rom_nd" + std::to_string(nodalDiameter) + "_" +
+         modelHash(mesh, spec, nodalDiameter).substr(0, 20) + ".h5";
+}
+
+void checkReducedModelCache(const mesh::Mesh& mesh, const DiscModelSpec& spec, const std::vector<int>& nodalDiameters,
+                            const std::string& cacheDirectory) {
+  namespace fs = std::filesystem;
+  if (cacheDirectory.empty() || spec.kind == ReducedModelKind::FullFe) return;
+  std::error_code ec;
+  if (fs::exists(cacheDirectory, ec) && !fs::is_directory(cacheDirectory, ec))
+    throw InputError("reduced_model/cache", cacheDirectory +
+                                                " is not a directory, where the reduced models are kept: move it, or "
+                                                "set cache: off");
+  for (int k : nodalDiameters) {
+    const std::string path = reducedModelCachePath(mesh, spec, k, cacheDirectory);
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+      throw InputError("reduced_model/cache", path + ", the file of nodal diameter " + std::to_string(k) +
+                                                  "'s model, is taken by something that is not a file (a directory?): "
+                                                  "move it, or set cache: off");
+  }
+}
+
 namespace {
 
 // A cached model of nodal diameter k read back into `out` (false: none, or damaged and
@@ -370,11 +394,11 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
   bool prestressed = false;
   // Every reduced kind has an HDF5 form; the full FE model is the reference and is rebuilt.
   const bool cache = !cacheDirectory.empty() && spec.kind != ReducedModelKind::FullFe;
+  if (cache) checkReducedModelCache(mesh, spec, nodalDiameters, cacheDirectory);
   if (cache && comm->getRank() == 0) std::filesystem::create_directories(cacheDirectory);
   for (int k : nodalDiameters) {
     const std::string inputs = modelHash(mesh, spec, k);
-    const std::string path =
-        cache ? cacheDirectory + "/rom_nd" + std::to_string(k) + "_" + inputs.substr(0, 20) + ".h5" : std::string();
+    const std::string path = cache ? reducedModelCachePath(mesh, spec, k, cacheDirectory) : std::string();
     if (readCachedModel(path, k, spec, inputs, out)) continue;
     if (!prestressed) {
       prestress = discPrestress(mesh, out.sector, spec, comm);

@@ -63,6 +63,14 @@ void IsotropicElastic::checkPlausible(const std::string& where) const {
     throw InputError(where, describe(name, "Young's modulus E", E) + " is no solid's" + set + stressUnitName(units) +
                                 "; from " + (mm ? "1e2 to 2e6" : "1e8 to 2e12") +
                                 "): a value in other units? Give units: SI, mm-N-s-t or other");
+  // Towards nu = 0.5 the displacement-only elements lock: their volumetric stiffness grows
+  // as 1 / (1 - 2 nu) and the answers come out too stiff without a word (a fifth probe ran
+  // nu = 0.49999). A disc alloy's nu lies near 0.3; 0.45 leaves room for polymers.
+  if (nu > 0.45)
+    throw InputError(where, describe(name, "Poisson's ratio nu", nu) +
+                                " is nearly incompressible: the displacement elements (tet4, tet10, hex8, hex20) lock "
+                                "there (their volumetric stiffness grows as 1 / (1 - 2 nu)) and would give too stiff an "
+                                "answer; a disc alloy's nu lies near 0.3 (units: other takes any nu below 0.5)");
   if (!(rho == 0 || (rho >= rhoLow && rho <= rhoHigh)))  // 0: a static analysis without mass
     throw InputError(where, describe(name, "density rho", rho) + " is no solid's" + set +
                                 (mm ? "t/mm^3; from 1e-10 to 3e-8" : "kg/m^3; from 1e2 to 3e4") +

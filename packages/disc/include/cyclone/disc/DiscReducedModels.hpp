@@ -95,6 +95,17 @@ struct DiscReducedModels {
 /// The nodal diameters harmonics `harmonics` of engine order `engineOrder` live on (h EO mod N folded to 0..N/2).
 std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics);
 
+/// The file the model of nodal diameter `nodalDiameter` is cached in under cacheDirectory
+/// (its name carries the digest of the model's inputs).
+std::string reducedModelCachePath(const mesh::Mesh& mesh, const DiscModelSpec& spec, int nodalDiameter,
+                                  const std::string& cacheDirectory);
+
+/// InputError naming reduced_model/cache where the cache cannot be used as it is: the
+/// directory's name taken by a file, or a model's file name by a directory (found only
+/// when its model was written, after the models were built). Before any work.
+void checkReducedModelCache(const mesh::Mesh& mesh, const DiscModelSpec& spec, const std::vector<int>& nodalDiameters,
+                            const std::string& cacheDirectory);
+
 /// Builds (or reads from `cacheDirectory` when its inputs match) the models of the
 /// nodal diameters asked for. An empty cacheDirectory writes and reuses nothing.
 DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModelSpec& spec,

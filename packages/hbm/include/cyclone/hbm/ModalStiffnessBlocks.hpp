@@ -6,8 +6,9 @@
 // harmonic's block reads each phase's n x n constant part once for all the harmonics on
 // that phase (a matrix product over their columns) instead of forming a dense block per
 // harmonic and streaming each. With EO 3 on 24 sectors, 30 harmonics fall on 8 phases:
-// what a GMRES product reads of the linear part drops about fourfold, and a residual at
-// a new frequency no longer forms 30 dense blocks (issue 47: H = 30 on the default disc).
+// what a GMRES product reads of the linear part drops about fourfold (issue 47: H = 30
+// on the default disc). The residual keeps the formed blocks
+// (HarmonicBalanceSystem::applyHarmonicOperator says why).
 #include <Eigen/Dense>
 #include <vector>
 
