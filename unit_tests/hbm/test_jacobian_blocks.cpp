@@ -26,20 +26,22 @@ using test_support::addRingElements;
 using test_support::ringMatrices;
 
 // A motion with every harmonic present, large enough that the contact slips and opens.
-Eigen::VectorXd motion(const HarmonicBalanceSystem& s) {
+Eigen::VectorXd motion(const HarmonicBalanceSystem& s, double size = 0.3) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Eigen::VectorXd X(s.numUnknowns());
-  for (Eigen::Index i = 0; i < X.size(); ++i) X(i) = u(rng) * 0.3;
+  for (Eigen::Index i = 0; i < X.size(); ++i) X(i) = u(rng) * size;
   return X;
 }
 
-void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega) {
-  const Eigen::VectorXd X = motion(s);
+void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega, double size = 0.3,
+                                int sparseElements = 0) {
+  const Eigen::VectorXd X = motion(s, size);
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   s.residual(X, omega, R, &J);
   auto blocks = s.jacobianBlocks(X, omega);
+  EXPECT_EQ(blocks->sparseElements(), sparseElements);
   const Eigen::MatrixXd D = blocks->dense();
   EXPECT_LE((D - J).norm(), 1e-12 * J.norm()) << "the blocks' products are not the formed Jacobian";
 
@@ -104,6 +106,18 @@ TEST(JacobianBlocks, MatrixFormCyclicSector) {
   expectBlocksAreTheJacobian(s, 1.7);
 }
 
+// A motion small enough that the friction contact stays stuck and closed all period: its
+// block (kt and kn on the diagonal, the mean's rows) is held sparse, the same products.
+TEST(JacobianBlocks, StuckContactHeldSparse) {
+  const auto m = ringMatrices();
+  HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(5), 64);
+  CyclicCoupling c;
+  c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
+  s.setCyclic(c);
+  addRingElements(s);
+  expectBlocksAreTheJacobian(s, 1.7, 1e-3, 1);
+}
+
 TEST(JacobianBlocks, DynamicStiffnessReceptanceForm) {
   const auto m = ringMatrices();
   auto receptance = std::make_shared<MatrixReceptance>(m.M, m.C, m.K, 7, m.Mn, m.Cn, m.Kn);
@@ -155,9 +169,9 @@ TEST(JacobianBlocks, WoodburyReceptanceForm) {
   expectBlocksAreTheJacobian(s, 1.7);
 }
 
-// The residual with the linear part applied in Woodbury's parts against each harmonic's
-// plain inverse of the model's compliance (no parts used).
-TEST(JacobianBlocks, WoodburyResidualIsThePlainInverses) {
+// The residual of a model in Woodbury's parts (its blocks formed from them) against each
+// harmonic's plain inverse of the model's compliance (no parts used).
+TEST(JacobianBlocks, WoodburyModelResidualIsThePlainInverses) {
   const HarmonicBalanceSystem s = woodburySystem();
   const double omega = 1.7;
   const Eigen::VectorXd X = motion(s);

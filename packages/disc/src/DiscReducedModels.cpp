@@ -177,7 +177,8 @@ void checkReducedModelCache(const mesh::Mesh& mesh, const DiscModelSpec& spec, c
   namespace fs = std::filesystem;
   if (cacheDirectory.empty() || spec.kind == ReducedModelKind::FullFe) return;
   std::error_code ec;
-  if (fs::exists(cacheDirectory, ec) && !fs::is_directory(cacheDirectory, ec))
+  if (!fs::exists(cacheDirectory, ec)) return;  // nothing can take a name in it (and no hashing)
+  if (!fs::is_directory(cacheDirectory, ec))
     throw InputError("reduced_model/cache", cacheDirectory +
                                                 " is not a directory, where the reduced models are kept: move it, or "
                                                 "set cache: off");

@@ -67,6 +67,12 @@ JacobianBlocks::JacobianBlocks(const HarmonicBalanceSystem& system, double omega
 
 int JacobianBlocks::size() const { return system_.numUnknowns(); }
 
+int JacobianBlocks::sparseElements() const {
+  int count = 0;
+  for (const auto& e : sparseElements_) count += e.size() != 0;
+  return count;
+}
+
 void JacobianBlocks::scaleRows(Eigen::VectorXd s) {
   if (s.size() != size()) throw Error("JacobianBlocks: a row scale of the wrong size");
   rowScale_ = std::move(s);
@@ -161,10 +167,12 @@ void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
 Eigen::MatrixXd JacobianBlocks::harmonicBlock(std::size_t i) const {
   const std::vector<int>& slots = slots_[i];
   const int m = int(slots.size()), nc = system_.numCoefficients();
-  Eigen::MatrixXd P = linear_[i];
+  // A harmonic the products apply in Woodbury's parts: its block as the system forms it
+  // (its residual at this frequency has formed them already).
   const bool covered = woodbury_ && woodbury_->covers(i);
-  if (covered || linearComplex_[i].size() != 0) {
-    const Eigen::MatrixXcd A = covered ? woodbury_->block(i) : linearComplex_[i];
+  Eigen::MatrixXd P = covered ? system_.linearHarmonicBlock(omega_, i) : linear_[i];
+  if (!covered && linearComplex_[i].size() != 0) {
+    const Eigen::MatrixXcd& A = linearComplex_[i];
     P.resize(2 * A.rows(), 2 * A.cols());
     for (Eigen::Index b = 0; b < A.cols(); ++b)
       for (Eigen::Index a = 0; a < A.rows(); ++a) {

@@ -41,11 +41,4 @@ void ModalStiffnessBlocks::apply(const Eigen::MatrixXcd& X, Eigen::MatrixXcd& Y)
   }
 }
 
-Eigen::MatrixXcd ModalStiffnessBlocks::block(std::size_t i) const {
-  if (!covers(i)) throw Error("ModalStiffnessBlocks::block: harmonic index not covered");
-  Eigen::MatrixXcd Z = parts_[i]->constantPart();
-  Z.noalias() -= parts_[i]->G() * (cores_[i] * parts_[i]->Hv());
-  return Z;
-}
-
 }  // namespace cyclone::hbm

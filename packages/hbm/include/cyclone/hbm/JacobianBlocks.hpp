@@ -56,6 +56,8 @@ public:
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   /// The dense matrix (tests: the blocks against the system's dense Jacobian).
   Eigen::MatrixXd dense() const;
+  /// How many element blocks are held sparse (few nonzeros: a contact stuck or open all period).
+  int sparseElements() const;
   /// Harmonic index i's diagonal block (the preconditioner's block before factoring;
   /// local index a m + j for DOF a and its j-th coefficient of the harmonic, m = 1 or 2).
   Eigen::MatrixXd harmonicBlock(std::size_t i) const;

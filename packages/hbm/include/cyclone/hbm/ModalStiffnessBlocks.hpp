@@ -28,8 +28,6 @@ public:
   /// harmonic index i's complex coefficients (c - i s) of every DOF; other columns of Y
   /// are left as they are. Not for concurrent calls (work storage kept between calls).
   void apply(const Eigen::MatrixXcd& X, Eigen::MatrixXcd& Y) const;
-  /// Z_i formed (n x n), i covered.
-  Eigen::MatrixXcd block(std::size_t i) const;
 
 private:
   struct Group {
