@@ -94,29 +94,24 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega, do
   EXPECT_LE((Pb * z - r).norm(), singleLu * r.norm()) << "the blended preconditioner is not the blended block diagonal's inverse";
 }
 
-}  // namespace
-
-TEST(JacobianBlocks, MatrixFormCyclicSector) {
+// The ring's matrix-form sector with its elements.
+HarmonicBalanceSystem matrixFormSector() {
   const auto m = ringMatrices();
   HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(5), 64);
   CyclicCoupling c;
   c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
   s.setCyclic(c);
   addRingElements(s);
-  expectBlocksAreTheJacobian(s, 1.7);
+  return s;
 }
+
+}  // namespace
+
+TEST(JacobianBlocks, MatrixFormCyclicSector) { expectBlocksAreTheJacobian(matrixFormSector(), 1.7); }
 
 // A motion small enough that the friction contact stays stuck and closed all period: its
 // block (kt and kn on the diagonal, the mean's rows) is held sparse, the same products.
-TEST(JacobianBlocks, StuckContactHeldSparse) {
-  const auto m = ringMatrices();
-  HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(5), 64);
-  CyclicCoupling c;
-  c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
-  s.setCyclic(c);
-  addRingElements(s);
-  expectBlocksAreTheJacobian(s, 1.7, 1e-3, 1);
-}
+TEST(JacobianBlocks, StuckContactHeldSparse) { expectBlocksAreTheJacobian(matrixFormSector(), 1.7, 1e-3, 1); }
 
 TEST(JacobianBlocks, DynamicStiffnessReceptanceForm) {
   const auto m = ringMatrices();
