@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
   const double preload = argc > 6 ? std::atof(argv[6]) : 500.0;
   const std::string variants = argc > 7 ? argv[7] : "all";  // all | krylov (no dense LU: large H) | krylov-vs-dense6
   const bool krylovOnly = variants == "krylov" || variants == "krylov-vs-dense6";
+  if (!krylovOnly && variants != "all") {
+    std::fprintf(stderr, "disc_hbm_benchmark: variants '%s': all, krylov or krylov-vs-dense6\n", variants.c_str());
+    return 2;
+  }
 
   mesh::ShroudedSectorParameters p;
   p.meshSize = meshSize;
