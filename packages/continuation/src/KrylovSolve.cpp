@@ -236,12 +236,14 @@ void BorderedKrylovSolve::preconditionBordered(const Eigen::VectorXd& r, Eigen::
   z(n) = y;
 }
 
-Eigen::VectorXd BorderedKrylovSolve::solve(const Eigen::VectorXd& rhs) const {
+Eigen::VectorXd BorderedKrylovSolve::solve(const Eigen::VectorXd& rhs, double tolerance) const {
   if (!J_) throw Error("BorderedKrylovSolve: no operator");
   const VectorFunction apply = [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { applyBordered(v, y); };
   const VectorFunction precondition = [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { preconditionBordered(r, z); };
   Eigen::VectorXd x;
-  const KrylovResult r = solveKrylov(apply, precondition, rhs, x, options_);
+  KrylovOptions options = options_;
+  if (tolerance > 0) options.tolerance = tolerance;
+  const KrylovResult r = solveKrylov(apply, precondition, rhs, x, options);
   iterations_ += r.iterations;
   if (!r.converged) {
     ++failures_;

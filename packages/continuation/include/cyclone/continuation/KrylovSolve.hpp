@@ -45,8 +45,9 @@ public:
                       KrylovOptions options = {});
   bool empty() const { return !J_; }
   int size() const { return J_ ? J_->size() + 1 : 0; }
-  /// The solution, or NaNs where GMRES did not converge.
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+  /// The solution, or NaNs where GMRES did not converge: to the options' tolerance, or to
+  /// `tolerance` where given (> 0; an inexact Newton step's forcing term).
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs, double tolerance = 0) const;
   long iterations() const { return iterations_; }
   int failures() const { return failures_; }
 
