@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <random>
 
@@ -17,6 +19,7 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/HillStability.hpp"
 #include "cyclone/hbm/JenkinsElement.hpp"
+#include "cyclone/hbm/ModalReceptance.hpp"
 #include "cyclone/hbm/ReceptanceModel.hpp"
 #include "cyclone/hbm/TimeIntegration.hpp"
 #include "RingSector.hpp"
@@ -299,4 +302,39 @@ TEST(ReceptanceFormVerification, HillVerdictMatchesTimeIntegration) {
               st.periods, back);
   EXPECT_TRUE(st.converged);
   EXPECT_LT(back, 1e-2);  // H = 3 truncation and the time step, not the 1e-3 perturbation grown
+}
+
+// Every phase's static compliance: the matrix model's K_p^-1 against the closed form
+// K_p = K + K_next e^{-i a} + K_next^T e^{i a}, and the default (from the modal
+// realization, R + U diag(1 / l) V^T) of a model given by those realizations.
+TEST(ReceptanceForm, StaticComplianceOfEveryPhase) {
+  const Matrices m = ringMatrices();
+  const int N = 6;
+  const MatrixReceptance matrix(m.M, m.C, m.K, N, m.Mn, m.Cn, m.Kn);
+  std::map<long, ModalRealization> realizations;
+  for (long p = 0; p < N; ++p) realizations[p] = *matrix.modalRealization(p);
+  const ModalReceptance modal(N, realizations);
+  for (long p = 0; p < N; ++p) {
+    const double a = 2 * M_PI * double(p) / N;
+    const std::complex<double> e(std::cos(a), -std::sin(a));
+    const Eigen::MatrixXcd Kp = m.K.cast<std::complex<double>>() + e * m.Kn.cast<std::complex<double>>() +
+                                std::conj(e) * m.Kn.transpose().cast<std::complex<double>>();
+    const Eigen::MatrixXcd S = Kp.inverse();
+    const double eMatrix = (matrix.staticCompliance(p) - S).norm() / S.norm();
+    const double eModal = (modal.staticCompliance(p) - S).norm() / S.norm();
+    std::printf("phase %ld: matrix %.1e, from the modal realization %.1e\n", p, eMatrix, eModal);
+    EXPECT_LT(eMatrix, 1e-12) << p;
+    EXPECT_LT(eModal, 1e-12) << p;
+  }
+  EXPECT_LT((matrix.staticCompliance(0).real() - matrix.meanCompliance()).norm(), 1e-14);
+  // A model without a modal form has no static compliance of a phase other than 0.
+  class NoModes final : public ReceptanceModel {
+  public:
+    int numDofs() const override { return 1; }
+    int sectors() const override { return 3; }
+    Eigen::MatrixXcd compliance(double, long) const override { return Eigen::MatrixXcd::Ones(1, 1); }
+    Eigen::MatrixXd meanCompliance() const override { return Eigen::MatrixXd::Ones(1, 1); }
+  } none;
+  EXPECT_NO_THROW(none.staticCompliance(0));
+  EXPECT_THROW(none.staticCompliance(1), InputError);
 }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -21,6 +22,20 @@ Eigen::MatrixXcd ReceptanceModel::dynamicStiffness(double frequency, long phaseI
 std::optional<ModalRealization> ReceptanceModel::modalRealization(long) const { return std::nullopt; }
 
 const ModalStiffness* ReceptanceModel::modalStiffness(long) const { return nullptr; }
+
+Eigen::MatrixXcd ReceptanceModel::staticCompliance(long phaseIndex) const {
+  const int N = std::max(sectors(), 1);
+  const long p = ((phaseIndex % N) + N) % N;
+  if (p == 0) return meanCompliance().cast<std::complex<double>>();
+  const auto r = modalRealization(p);
+  if (!r)
+    throw InputError("receptance", "no static compliance for phase index " + std::to_string(p) +
+                                       ": the model has no modal realization of it");
+  if ((r->eigenvalues.array() <= 0).any())
+    throw InputError("receptance", "no static compliance for phase index " + std::to_string(p) +
+                                       ": its modal realization has a rigid-body mode");
+  return r->R + r->U * r->eigenvalues.cwiseInverse().cast<std::complex<double>>().asDiagonal() * r->V.transpose();
+}
 
 MatrixReceptance::MatrixReceptance(Eigen::MatrixXd M, Eigen::MatrixXd C, Eigen::MatrixXd K, int sectors,
                                    Eigen::MatrixXd Mnext, Eigen::MatrixXd Cnext, Eigen::MatrixXd Knext)
@@ -55,6 +70,14 @@ Eigen::MatrixXd MatrixReceptance::meanCompliance() const {
   const Eigen::MatrixXd K0 = K_ + Knext_ + Knext_.transpose();
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(K0);
   if (!lu.isInvertible()) throw InputError("receptance", "K is singular: no static compliance for the mean");
+  return lu.inverse();
+}
+
+Eigen::MatrixXcd MatrixReceptance::staticCompliance(long p) const {
+  const Eigen::MatrixXcd Kp = phased(K_, Knext_, p);
+  const Eigen::FullPivLU<Eigen::MatrixXcd> lu(Kp);
+  if (!lu.isInvertible())
+    throw InputError("receptance", "K of phase index " + std::to_string(p) + " is singular: no static compliance");
   return lu.inverse();
 }
 

@@ -137,4 +137,13 @@ std::optional<hbm::ModalRealization> SectorReceptance::modalRealization(long pha
 
 Eigen::MatrixXd SectorReceptance::meanCompliance() const { return model(0).zeroFrequencyCompliance(); }
 
+Eigen::MatrixXcd SectorReceptance::staticCompliance(long phaseIndex) const {
+  const auto [k, sign] = nodalDiameter(sectors_, phaseIndex);
+  const Eigen::MatrixXd A = model(k).zeroFrequencyCompliance();
+  if (copies(sectors_, k) == 1) return A.cast<std::complex<double>>();
+  const int n = dofs_;
+  return A.topLeftCorner(n, n).cast<std::complex<double>>() +
+         std::complex<double>(0, sign) * A.bottomLeftCorner(n, n).cast<std::complex<double>>();
+}
+
 }  // namespace cyclone::rom

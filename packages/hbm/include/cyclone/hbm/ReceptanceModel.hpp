@@ -49,6 +49,12 @@ public:
   virtual Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const;
   /// The undamped static compliance of the phase-0 (nodal diameter 0) motion: harmonic 0.
   virtual Eigen::MatrixXd meanCompliance() const = 0;
+  /// The undamped static compliance of phase p (complex Hermitian; phase 0's is
+  /// meanCompliance()): what harmonic 0 of a ring assembled from the sector's phases needs
+  /// (mistuning::RingReceptance). By default meanCompliance() for phase 0 and, for another
+  /// phase, R + U diag(1 / l) V^T of its modal realization; InputError naming
+  /// "receptance" where there is none.
+  virtual Eigen::MatrixXcd staticCompliance(long phaseIndex) const;
   /// The modal realization of phase p (see ModalRealization), or none when the model
   /// has no modal form (then Hill's method cannot be applied to it).
   virtual std::optional<ModalRealization> modalRealization(long phaseIndex) const;
@@ -71,6 +77,8 @@ public:
   int sectors() const override { return sectors_; }
   Eigen::MatrixXcd compliance(double frequency, long phaseIndex) const override;
   Eigen::MatrixXd meanCompliance() const override;
+  /// K_p^{-1} (InputError where K_p is singular).
+  Eigen::MatrixXcd staticCompliance(long phaseIndex) const override;
   /// Modes of (K_p, M_p) with U = Phi, V = conj(Phi); none unless Phi^H C_p Phi is
   /// diagonal (modal damping) and M_p positive definite.
   std::optional<ModalRealization> modalRealization(long phaseIndex) const override;

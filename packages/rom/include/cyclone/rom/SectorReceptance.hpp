@@ -36,6 +36,9 @@ public:
   Eigen::MatrixXcd dynamicStiffness(double frequency, long phaseIndex) const override;
   /// Nodal diameter 0's zero-frequency compliance (InputError if that model is missing).
   Eigen::MatrixXd meanCompliance() const override;
+  /// The nodal diameter's zero-frequency compliance as the phase's travelling wave
+  /// (P + i sign Q of its real form, as compliance()).
+  Eigen::MatrixXcd staticCompliance(long phaseIndex) const override;
   /// From the nodal diameter's modal form (none for the full FE model): R the undamped
   /// constant part, U, V the travelling-wave combination of the real-form modes. A
   /// pair's two real-form copies give one travelling-wave mode (their rank-one sum),
