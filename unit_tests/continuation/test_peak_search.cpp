@@ -114,6 +114,35 @@ TEST(PeakSearch, StopsAtAFoldWithoutJumpingToAnotherBranch) {
   EXPECT_LT(r.value, 1.01 * Afold);  // still on the lower branch (the upper one is above 2 here)
 }
 
+// The same walk carried past the fold (findPeakPastFold): the arclength trace from the
+// walk's start rounds the jump-up fold, climbs the unstable middle branch to the jump-down
+// fold and comes back along the upper branch over its top, the closed-form peak of the
+// upper branch (s = c^2 / (2 m)).
+TEST(PeakSearch, PastAFoldTheUpperBranchPeakIsFound) {
+  const double g = 0.1, sPeak = c * c / (2 * m);
+  double Wpeak = 1.2, Apeak = 0;
+  for (int i = 0; i < 500; ++i) {
+    Apeak = P / std::sqrt(sPeak * sPeak + c * c * Wpeak * Wpeak);
+    Wpeak = std::sqrt((k + 0.75 * g * Apeak * Apeak - sPeak) / m);
+  }
+  continuation::PeakSearchOptions o;
+  o.step = 5e-3, o.maxStep = 2e-2, o.minStep = 1e-7, o.window = 0.6;
+  const auto walk = continuation::findLocalPeak(oscillator(g), linearGuess(1.5), 1.5, amplitude, o);
+  ASSERT_FALSE(walk.found);
+  const auto r = continuation::findPeakPastFold(oscillator(g), walk, amplitude, o, 400);
+  std::printf("Duffing past the lower branch's fold at W = %.6f: peak %.9f at W = %.9f (closed form %.9f at %.9f), "
+              "%d solves\n",
+              walk.parameter, r.value, r.parameter, Apeak, Wpeak, r.solves);
+  ASSERT_TRUE(r.found) << r.reason;
+  EXPECT_NEAR(r.parameter, Wpeak, 1e-4);
+  EXPECT_NEAR(r.value / Apeak, 1.0, 1e-7);
+  // A trace that cannot reach the top (a window that ends before it) says so, not found.
+  o.window = 0.5 * (1.5 - walk.parameter);
+  const auto walkShort = continuation::findLocalPeak(oscillator(g), linearGuess(1.5), 1.5, amplitude, o);
+  const auto none = continuation::findPeakPastFold(oscillator(g), walkShort, amplitude, o, 400);
+  EXPECT_FALSE(none.found) << none.value << " at " << none.parameter;
+}
+
 // Beyond a fold Newton may converge to a solution of another branch: here
 // F = (x^2 - p)(x + 1) has the branch x = sqrt(p), which ends at p = 0, and the
 // branch x = -1 everywhere. Walking down from p = 1 with the measure -x rising, the

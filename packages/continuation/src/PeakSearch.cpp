@@ -174,4 +174,42 @@ PeakSearchResult findLocalPeak(const ContinuationProblem& problem, const Eigen::
   return PeakSearch(problem, p0, measure, o).run(x0);
 }
 
+PeakSearchResult findPeakPastFold(const ContinuationProblem& problem, const PeakSearchResult& search,
+                                  const std::function<double(const Eigen::VectorXd&)>& measure,
+                                  const PeakSearchOptions& o, int maxPoints) {
+  if (search.found || search.path.empty()) return search;
+  const auto& [p0, x0] = search.path.front();
+  if (search.parameter == p0) return search;  // no walk: no direction to trace
+  ContinuationProblem traced = problem;
+  traced.measure = measure;
+  ContinuationOptions options;
+  options.from = p0;
+  options.to = p0 + (search.parameter < p0 ? -o.window : o.window);
+  options.tolerance = o.tolerance;
+  options.maxSteps = maxPoints;
+  Branch branch;
+  try {
+    branch = traceBranch(traced, x0, options);
+  } catch (const Error&) {
+    return search;
+  }
+  PeakSearchResult out = search;
+  out.solves += branch.statistics.newtonIterations;
+  std::size_t best = 0;
+  double value = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < branch.points.size(); ++i) {
+    const double g = measure(branch.points[i].x);
+    if (g > value) value = g, best = i;
+    out.path.emplace_back(branch.points[i].parameter, branch.points[i].x);
+  }
+  if (branch.points.size() < 3 || best == 0 || best + 1 == branch.points.size()) {
+    out.reason += "; traced on by arclength (" + std::to_string(branch.points.size()) + " points), no top inside";
+    return out;
+  }
+  out.found = true;
+  out.parameter = branch.points[best].parameter, out.value = value, out.x = branch.points[best].x;
+  out.reason.clear();
+  return out;
+}
+
 }  // namespace cyclone::continuation

@@ -16,6 +16,12 @@
 
 namespace cyclone::response {
 
+namespace {
+// The arclength trace past a fold in a level's peak search (findPeakPastFold): a bound on its
+// points, so that a level whose path wanders costs a bounded share of the check.
+constexpr int kPastFoldPoints = 400;
+}  // namespace
+
 SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
   const auto [w, scale] = setup.apply(pt.parameter);
   const auto& hb = *setup.system;
@@ -179,7 +185,10 @@ continuation::PeakSearchResult searchPeak(const hbm::HarmonicBalanceSystem& syst
   const auto measure = [&](const Eigen::VectorXd& x) {
     return hbm::peakMagnitude(H, Eigen::VectorXd(x.segment(dof * nc, nc)));
   };
-  return continuation::findLocalPeak(problem, X, hz, measure, o);
+  // A search stopped by a fold (the hammering shroud's curves fold near their tops) is
+  // traced on past it by arclength.
+  return continuation::findPeakPastFold(problem, continuation::findLocalPeak(problem, X, hz, measure, o), measure, o,
+                                        kPastFoldPoints);
 }
 
 // The solution X of the level below, carried to `system` (the harmonics `newHarmonics`

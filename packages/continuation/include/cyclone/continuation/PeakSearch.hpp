@@ -6,7 +6,7 @@
 // corners of a nonsmooth path (friction, AFT) that stall an arclength corrector,
 // and the search needs a handful of solves, not a curve. It cannot pass a fold:
 // a search that meets one stops there and says so, the value it reached a
-// lower bound of the peak, not the peak.
+// lower bound of the peak, not the peak (findPeakPastFold then traces past it).
 #include <Eigen/Dense>
 #include <functional>
 #include <string>
@@ -43,5 +43,16 @@ struct PeakSearchResult {
 PeakSearchResult findLocalPeak(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0,
                                const std::function<double(const Eigen::VectorXd&)>& measure,
                                const PeakSearchOptions& options);
+
+/// A search that stopped at a fold (not found, its path known) carried past it: the path
+/// traced by arclength (traceBranch, the measure's local maxima located on it) from the
+/// search's first point, the way it walked and within its window, so that it rounds the
+/// fold and comes back over the top (an overhanging peak, or a branch folded below its
+/// top); the largest value of the measure on that trace is the peak where it lies inside
+/// the trace, not at its first or last point. At most `maxPoints` points. Returns the
+/// search's result (its reason extended) where no top is found.
+PeakSearchResult findPeakPastFold(const ContinuationProblem& problem, const PeakSearchResult& search,
+                                  const std::function<double(const Eigen::VectorXd&)>& measure,
+                                  const PeakSearchOptions& options, int maxPoints);
 
 }  // namespace cyclone::continuation
