@@ -282,11 +282,13 @@ class DiscResponse:
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
                     mu=0.4, law="per_area", patches=0, amplitude=1.0, direction=(0.0, 0.0, 1.0),
                     excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
-                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0):
+                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None):
     """The friction-damped response of the disc under engine order `engine_order`, the scenes'
     disc_response keys: the shroud contacts' law (kn, kt per unit area and the interface's
     preload, per_area; or per pair), the excitation (N per node on harmonic 1), the range
-    (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1)."""
+    (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1),
+    gap: gap elements in place of friction contacts at some pairs, a dict as the scenes'
+    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)}."""
     spec = _core.DiscResponseSpec()
     spec.engine_order = int(engine_order)
     spec.harmonics = [int(h) for h in harmonics]
@@ -295,6 +297,15 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
     spec.set_contact(dict(law=law, kn=arrays.finite_number(kn, "kn"), kt=arrays.finite_number(kt, "kt"),
                           mu=arrays.finite_number(mu, "mu"), preload=arrays.finite_number(preload, "preload"),
                           patches=int(patches)))
+    if gap is not None:
+        unknown = set(gap) - {"pairs", "kn", "clearance"}
+        if unknown:
+            raise InputError("gap", f"unknown keys {sorted(unknown)}: known are pairs, kn, clearance")
+        pairs = np.atleast_1d(np.asarray(gap.get("pairs", []))).ravel()
+        if pairs.size == 0 or not np.issubdtype(pairs.dtype, np.integer):
+            raise InputError("gap/pairs", "needs the contact pairs that are gap elements (integers, 0-based)")
+        spec.set_gap(dict(pairs=[int(i) for i in pairs], kn=arrays.finite_number(gap.get("kn", 1e4), "gap/kn"),
+                          clearance=arrays.finite_number(gap.get("clearance", 0.0), "gap/clearance")))
     spec.set_excitation(dict(node_set=excitation_node_set, direction=arrays.vector(direction, "direction", 3),
                              amplitude=arrays.finite_number(amplitude, "amplitude")))
     from_hz, to_hz = (0.0, 0.0) if frequency_range_hz is None else (

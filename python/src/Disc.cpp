@@ -181,6 +181,12 @@ void bindDiscResponse(py::module_& m) {
             contact.mu = c["mu"].cast<double>(), contact.preload = c["preload"].cast<double>();
             contact.patches = c["patches"].cast<int>();
           })
+      .def("set_gap",
+          [](S& s, const py::dict& g) {  // the scenes' disc_response/gap: gap elements at these pairs
+            s.gap.pairs = g["pairs"].cast<std::vector<int>>();
+            if (s.gap.pairs.empty()) throw InputError("gap/pairs", "needs the contact pairs that are gap elements");
+            s.gap.kn = g["kn"].cast<double>(), s.gap.clearance = g["clearance"].cast<double>();
+          })
       .def("set_excitation",
           [](S& s, const py::dict& e) {
             s.excitation.nodeSet = e["node_set"].cast<std::string>();

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "cyclone/continuation/PeakSearch.hpp"
 
@@ -66,15 +67,23 @@ TEST(PeakSearch, LinearOscillatorPeakMatchesClosedForm) {
   }
 }
 
-// Hardening Duffing (g = 0.1): walking up the upper branch from W = 1 finds the peak
-// s = c^2 / (2 m) (dA/dW = 0), which lies before the fold where the branch ends.
-TEST(PeakSearch, DuffingUpperBranchPeakMatchesClosedForm) {
-  const double g = 0.1, sPeak = c * c / (2 * m);
+// The hardening Duffing's upper-branch peak in closed form: s = c^2 / (2 m) (dA/dW = 0),
+// W and A by fixed point. Returns {W, A}.
+static std::pair<double, double> upperBranchPeak(double g) {
+  const double sPeak = c * c / (2 * m);
   double Wpeak = 1.2, Apeak = 0;
   for (int i = 0; i < 500; ++i) {
     Apeak = P / std::sqrt(sPeak * sPeak + c * c * Wpeak * Wpeak);
     Wpeak = std::sqrt((k + 0.75 * g * Apeak * Apeak - sPeak) / m);
   }
+  return {Wpeak, Apeak};
+}
+
+// Hardening Duffing (g = 0.1): walking up the upper branch from W = 1 finds the peak
+// s = c^2 / (2 m) (dA/dW = 0), which lies before the fold where the branch ends.
+TEST(PeakSearch, DuffingUpperBranchPeakMatchesClosedForm) {
+  const double g = 0.1;
+  const auto [Wpeak, Apeak] = upperBranchPeak(g);
   continuation::PeakSearchOptions o;
   o.step = 5e-3, o.maxStep = 2e-2, o.window = 0.6, o.parameterTolerance = 1e-7;
   const auto r = continuation::findLocalPeak(oscillator(g), linearGuess(1.0), 1.0, amplitude, o);
@@ -119,12 +128,8 @@ TEST(PeakSearch, StopsAtAFoldWithoutJumpingToAnotherBranch) {
 // fold and comes back along the upper branch over its top, the closed-form peak of the
 // upper branch (s = c^2 / (2 m)).
 TEST(PeakSearch, PastAFoldTheUpperBranchPeakIsFound) {
-  const double g = 0.1, sPeak = c * c / (2 * m);
-  double Wpeak = 1.2, Apeak = 0;
-  for (int i = 0; i < 500; ++i) {
-    Apeak = P / std::sqrt(sPeak * sPeak + c * c * Wpeak * Wpeak);
-    Wpeak = std::sqrt((k + 0.75 * g * Apeak * Apeak - sPeak) / m);
-  }
+  const double g = 0.1;
+  const auto [Wpeak, Apeak] = upperBranchPeak(g);
   continuation::PeakSearchOptions o;
   o.step = 5e-3, o.maxStep = 2e-2, o.minStep = 1e-7, o.window = 0.6;
   const auto walk = continuation::findLocalPeak(oscillator(g), linearGuess(1.5), 1.5, amplitude, o);
