@@ -10,7 +10,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <limits>
+#include <cstdlib>
 #include <memory>
 
 #include "../hbm/RingSector.hpp"
@@ -18,6 +18,7 @@
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/ModalStiffness.hpp"
 #include "cyclone/mistuning/BladeMistuning.hpp"
+#include "cyclone/mistuning/ReducedSectorRing.hpp"
 #include "cyclone/mistuning/RingReceptance.hpp"
 #include "cyclone/mistuning/SubsetOfNominalModes.hpp"
 
@@ -160,4 +161,53 @@ TEST(BladeMistuning, ValidatesAndNamesTheKey) {
   const auto a = mistuning::randomBladeMistuning(24, 0.01, 7), b = mistuning::randomBladeMistuning(24, 0.01, 7);
   EXPECT_EQ(a.youngsFactors, b.youngsFactors) << "seeded: reproducible";
   EXPECT_NE(a.youngsFactors, mistuning::randomBladeMistuning(24, 0.01, 8).youngsFactors);
+}
+
+// The mistuned ring's harmonic balance (ringOfSectors with the SNM model, every mode kept:
+// the sector's contact to the next sector, a Jenkins element, a cubic spring, the
+// travelling excitation and a static load attached as in the tuned ring) against the
+// matrix-form ring with the blade scatter added to its K: the same residual, Jacobian and
+// stuck response.
+TEST(SubsetOfNominalModes, MistunedRingSystemEqualsAssembledRing) {
+  const auto m = test_support::ringMatrices();
+  const int N = 6, eo = 2, samples = 96;
+  const std::vector<double> delta{0.05, -0.03, 0.02, -0.04, 0.01, 0.035};
+  const auto harmonics = hbm::HarmonicSet::upTo(2);
+  const auto nom = nominal(N, m);
+  hbm::HarmonicBalanceSystem sector(nom.sector, harmonics, samples);
+  hbm::CyclicCoupling c;
+  c.sectors = N, c.engineOrder = eo;
+  sector.setCyclic(c);
+  sector.useDynamicStiffness(true);
+  test_support::addRingElements(sector);
+  sector.addExcitation(1, 1, 0.8, 0.1);
+  sector.addStaticLoad(2, 0.3);
+
+  const mistuning::RingReceptance tunedModel(nom.sector);
+  auto snm = std::make_shared<mistuning::MistunedRingReceptance>(
+      *tunedModel.modalRealization(0), mistuning::subsetOfNominalModesStiffness(nom.modesPerPhase, nom.projection, delta));
+  const auto ring = mistuning::ringOfSectors(sector, snm);
+  const auto tuned = mistuning::ringOfSectors(sector);
+  const auto direct = assembledRing(N, m, delta);
+  hbm::HarmonicBalanceSystem reference(direct.M, direct.C, direct.K, harmonics, samples);
+  for (const auto& e : tuned->elements()) reference.addElement(e.element, e.W);
+  reference.addExcitationCoefficients(tuned->excitation());
+  reference.addStaticLoadCoefficients(tuned->staticLoad());
+  ASSERT_EQ(ring->numUnknowns(), reference.numUnknowns());
+  for (double w : {1.1, 2.9}) {
+    std::srand(7);
+    const Eigen::VectorXd X = 0.5 * Eigen::VectorXd::Random(ring->numUnknowns());
+    Eigen::VectorXd R, Rref;
+    Eigen::MatrixXd J, Jref;
+    ring->residual(X, w, R, &J);
+    reference.residual(X, w, Rref, &Jref);
+    const double eR = (R - Rref).norm() / Rref.norm(), eJ = (J - Jref).norm() / Jref.norm();
+    const Eigen::VectorXd Xl = ring->linearizedSolution(w), Xlref = reference.linearizedSolution(w);
+    const double eL = (Xl - Xlref).norm() / Xlref.norm();
+    std::printf("mistuned ring, w %.1f: residual %.1e, Jacobian %.1e, stuck response %.1e\n", w, eR, eJ, eL);
+    EXPECT_LT(eR, 1e-10) << w;
+    EXPECT_LT(eJ, 1e-10) << w;
+    EXPECT_LT(eL, 1e-10) << w;
+  }
+  EXPECT_THROW(mistuning::ringOfSectors(sector, nom.sector), InputError) << "a cyclic model is not a ring's";
 }
