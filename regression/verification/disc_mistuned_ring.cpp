@@ -47,6 +47,7 @@
 #include "cyclone/rom/SectorReceptance.hpp"
 #include "cyclone/solvers/DirectSolver.hpp"
 #include "cyclone/solvers/ModalSolver.hpp"
+#include "SmallRingDisc.hpp"
 
 using namespace cyclone;
 using cd = std::complex<double>;
@@ -64,16 +65,9 @@ double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
 TEST(DiscMistunedRing, SubsetOfNominalModesAgainstRingFe) {
   Timer total;
   const auto comm = Tpetra::getDefaultComm();
-  mesh::ShroudedSectorParameters geometry;
-  geometry.sectors = kSectors;
-  geometry.meshSize = 14.0;    // coarse
-  geometry.boreRadius = 70.0;  // a thin disc ring: a small sector
+  const auto geometry = regression::smallRingGeometry(kSectors);
   const auto mesh = mesh::generateShroudedSector(geometry);
-
-  disc::DiscModelSpec modelSpec;  // hybrid models, at rest (no prestress), cantilever
-  modelSpec.sectors = kSectors;
-  modelSpec.modes = 10;
-  modelSpec.retainedNodeSets = {"mid_blade"};
+  const auto modelSpec = regression::smallRingModelSpec(kSectors, {"mid_blade"});
   Timer t;
   const auto models = disc::buildDiscReducedModels(mesh, modelSpec, mistuning::everyNodalDiameter(kSectors), "", comm);
   const double romSeconds = t.seconds();
@@ -89,6 +83,20 @@ TEST(DiscMistunedRing, SubsetOfNominalModesAgainstRingFe) {
   const double snmSeconds = t.seconds();
   std::printf("SNM: %d ring modes, full shapes and blade projection %.1f s\n", int(snmModes.eigenvalues.size()),
               snmSeconds);
+
+  // Zero scatter: the tuned ring (dK identically zero).
+  {
+    const auto tunedPattern = mistuning::youngsModulusFactors(std::vector<double>(kSectors, 1.0), kSectors);
+    const auto zero = mistuning::makeDiscMistunedRing(mesh, nominal, modelSpec.material, blade, tunedPattern);
+    double worst = 0;
+    for (double hz : {150.0, 155.8, 400.0}) {
+      const Eigen::MatrixXcd a = zero.mistuned->compliance(2 * M_PI * hz, 0), b = zero.tuned->compliance(2 * M_PI * hz, 0);
+      worst = std::max(worst, (a - b).norm() / b.norm());
+    }
+    std::printf("zero scatter against the tuned ring: %.1e\n", worst);
+    EXPECT_EQ(zero.mistuned->stiffnessPerturbation().cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_LT(worst, 1e-10);
+  }
 
   // The realization from the full shapes against the hybrid models, every phase.
   {
@@ -127,6 +135,8 @@ TEST(DiscMistunedRing, SubsetOfNominalModesAgainstRingFe) {
   options.numModes = kSectors + 2;
   const auto fe = solvers::solveModes(*K, *M, options);
   const double feModalSeconds = t.seconds();
+  std::printf("ring FE: %lld nodes, %lld free DOFs; %d modes in %.1f s\n", (long long)full.mesh.numNodes(),
+              (long long)dofs.numFree(), options.numModes, feModalSeconds);
 
   // Ring retained DOFs: sector j's mid-blade node, x y z in sector j's frame.
   const auto mid = models.retainedNodes;
