@@ -8,7 +8,7 @@
 // (cyclic::replicateSector), every element's stiffness at its own E (blade j's at f_j E),
 // assembled as one model; its lowest modes by shift-invert (Anasazi, CHOLMOD) and its
 // response to the engine-order excitation by a sparse complex LU per frequency. Measured:
-//   - the first blade family's N natural frequencies (relative error),
+//   - the first two blade families' 2 N natural frequencies (relative error),
 //   - their MAC at the ring's retained DOFs (each sector's mid-blade node in its own frame),
 //   - each blade's amplitude under engine order 3 (unit axial force on every mid-blade node,
 //     delayed by j 2 pi EO / N; structural damping eta) over a sweep across the family's
@@ -132,7 +132,7 @@ TEST(DiscMistunedRing, SubsetOfNominalModesAgainstRingFe) {
   });
   const auto M = assembler.mass(modelSpec.material);
   solvers::ModalOptions options;
-  options.numModes = kSectors + 2;
+  options.numModes = 2 * kSectors + 2;
   const auto fe = solvers::solveModes(*K, *M, options);
   const double feModalSeconds = t.seconds();
   std::printf("ring FE: %lld nodes, %lld free DOFs; %d modes in %.1f s\n", (long long)full.mesh.numNodes(),
@@ -164,17 +164,17 @@ TEST(DiscMistunedRing, SubsetOfNominalModesAgainstRingFe) {
   for (double d : pattern.deviations()) deltaMax = std::max(deltaMax, std::abs(d));
   double worstFrequency = 0, lowestFrequency = 0, worstMac = 1;
   std::printf(" mode   FE (Hz)   SNM (Hz)   SNM - FE (relative)   1 - MAC\n");
-  for (int i = 0; i < kSectors; ++i) {
+  for (int i = 0; i < 2 * kSectors; ++i) {
     const double fFe = fe.frequenciesHz[i], fSnm = std::sqrt(snmModes.eigenvalues(i)) / (2 * M_PI);
     const double e = (fSnm - fFe) / fFe;
     const double m = mac(retained(*fe.modes, std::size_t(i)).cast<cd>(), snmModes.retained.col(i));
-    std::printf(" %4d  %8.3f  %8.3f   %9.1e            %.1e\n", i, fFe, fSnm, e, 1 - m);
+    std::printf(" %4d  %8.3f  %8.3f   %9.1e            %.1e   (family %d)\n", i, fFe, fSnm, e, 1 - m, 1 + i / kSectors);
     worstFrequency = std::max(worstFrequency, std::abs(e)), lowestFrequency = std::min(lowestFrequency, e);
     worstMac = std::min(worstMac, m);
   }
   const double spread = (fe.frequenciesHz[kSectors - 1] - fe.frequenciesHz[0]) / fe.frequenciesHz[0];
-  std::printf("first family: frequencies within %.1e (relative; the family spans %.1e), MAC diagonal >= %.5f\n",
-              worstFrequency, spread, worstMac);
+  std::printf("first two families: frequencies within %.1e (relative; the first spans %.1e), 1 - MAC <= %.1e\n",
+              worstFrequency, spread, 1 - worstMac);
 
   // Engine order 3 on every blade: per blade amplitude across the family's band.
   t.restart();
