@@ -10,10 +10,9 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 
-#include "../hbm/RingSector.hpp"
+#include "RingSystems.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/ModalStiffness.hpp"
@@ -174,14 +173,8 @@ TEST(SubsetOfNominalModes, MistunedRingSystemEqualsAssembledRing) {
   const std::vector<double> delta{0.05, -0.03, 0.02, -0.04, 0.01, 0.035};
   const auto harmonics = hbm::HarmonicSet::upTo(2);
   const auto nom = nominal(N, m);
-  hbm::HarmonicBalanceSystem sector(nom.sector, harmonics, samples);
-  hbm::CyclicCoupling c;
-  c.sectors = N, c.engineOrder = eo;
-  sector.setCyclic(c);
-  sector.useDynamicStiffness(true);
-  test_support::addRingElements(sector);
-  sector.addExcitation(1, 1, 0.8, 0.1);
-  sector.addStaticLoad(2, 0.3);
+  const auto sectorPtr = test_support::receptanceRingSector(nom.sector, harmonics, samples, N, eo);
+  const auto& sector = *sectorPtr;
 
   const mistuning::RingReceptance tunedModel(nom.sector);
   auto snm = std::make_shared<mistuning::MistunedRingReceptance>(
@@ -193,21 +186,6 @@ TEST(SubsetOfNominalModes, MistunedRingSystemEqualsAssembledRing) {
   for (const auto& e : tuned->elements()) reference.addElement(e.element, e.W);
   reference.addExcitationCoefficients(tuned->excitation());
   reference.addStaticLoadCoefficients(tuned->staticLoad());
-  ASSERT_EQ(ring->numUnknowns(), reference.numUnknowns());
-  for (double w : {1.1, 2.9}) {
-    std::srand(7);
-    const Eigen::VectorXd X = 0.5 * Eigen::VectorXd::Random(ring->numUnknowns());
-    Eigen::VectorXd R, Rref;
-    Eigen::MatrixXd J, Jref;
-    ring->residual(X, w, R, &J);
-    reference.residual(X, w, Rref, &Jref);
-    const double eR = (R - Rref).norm() / Rref.norm(), eJ = (J - Jref).norm() / Jref.norm();
-    const Eigen::VectorXd Xl = ring->linearizedSolution(w), Xlref = reference.linearizedSolution(w);
-    const double eL = (Xl - Xlref).norm() / Xlref.norm();
-    std::printf("mistuned ring, w %.1f: residual %.1e, Jacobian %.1e, stuck response %.1e\n", w, eR, eJ, eL);
-    EXPECT_LT(eR, 1e-10) << w;
-    EXPECT_LT(eJ, 1e-10) << w;
-    EXPECT_LT(eL, 1e-10) << w;
-  }
+  test_support::expectSameRing(*ring, reference, "mistuned ring");
   EXPECT_THROW(mistuning::ringOfSectors(sector, nom.sector), InputError) << "a cyclic model is not a ring's";
 }
