@@ -42,8 +42,10 @@ inline const std::string kBladeElementSet = "blade";
 
 /// The mesh's elements (global indices, ascending) whose centroid (mean of the element's
 /// nodes) is farther than `radius` from the axis: for the built-in shrouded sector with
-/// radius = ShroudedSectorParameters::rimRadius, the blade and its shroud. InputError
-/// naming "blade_elements" when none or every element is found.
+/// radius = ShroudedSectorParameters::rimRadius, the blade and its shroud (its mesh conforms
+/// to the rim cylinder the blade is fused onto, so no element straddles it: checked in
+/// disc_mistuned_ring). InputError naming "blade_elements" when none or every element is
+/// found.
 std::vector<mesh::Index> bladeElementsAboveRadius(const mesh::Mesh& mesh, const mesh::RotationAxis& axis,
                                                   double radius);
 
