@@ -30,6 +30,7 @@
 #include "cyclone/hbm/ModalStiffness.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
 #include "cyclone/mistuning/ReducedSectorRing.hpp"
+#include "SmallRingDisc.hpp"
 
 using namespace cyclone;
 
@@ -119,16 +120,8 @@ double relative(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a 
 TEST(DiscReducedRing, TunedRingGivesTheCyclicSectorOnEveryBlade) {
   Timer total;
   const auto comm = Tpetra::getDefaultComm();
-  mesh::ShroudedSectorParameters geometry;
-  geometry.sectors = kSectors;
-  geometry.meshSize = 14.0;    // coarse
-  geometry.boreRadius = 70.0;  // a thin disc ring: a small sector
-  auto mesh = mesh::generateShroudedSector(geometry);
-
-  disc::DiscModelSpec modelSpec;  // hybrid models, at rest (no prestress), cantilever
-  modelSpec.sectors = kSectors;
-  modelSpec.modes = 10;
-  modelSpec.retainedNodeSets = {"ring_contact_left", "ring_contact_right", "mid_blade"};
+  auto mesh = mesh::generateShroudedSector(regression::smallRingGeometry(kSectors));
+  auto modelSpec = regression::smallRingModelSpec(kSectors, {"ring_contact_left", "ring_contact_right", "mid_blade"});
   ASSERT_NO_FATAL_FAILURE(chooseContacts(mesh, modelSpec.axis));
   Timer t;
   const auto models =

@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "../hbm/RingSector.hpp"
+#include "RingSystems.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/ModalStiffness.hpp"
@@ -86,17 +86,11 @@ TEST(RingReceptance, RingSystemEqualsExpandedMatrixRing) {
   const int N = 6, eo = 2, samples = 96;
   const auto harmonics = hbm::HarmonicSet::upTo(2);
   auto model = std::make_shared<hbm::MatrixReceptance>(m.M, m.C, m.K, N, m.Mn, m.Cn, m.Kn);
-  hbm::HarmonicBalanceSystem sector(model, harmonics, samples);
-  hbm::CyclicCoupling c;
-  c.sectors = N, c.engineOrder = eo;
-  sector.setCyclic(c);
-  sector.useDynamicStiffness(true);
-  test_support::addRingElements(sector);
-  sector.addExcitation(1, 1, 0.8, 0.1);
-  sector.addExcitation(2, 1, 0.2);
-  sector.addStaticLoad(2, 0.3);
+  const auto sector = test_support::receptanceRingSector(model, harmonics, samples, N, eo);
 
   hbm::HarmonicBalanceSystem matrix(m.M, m.C, m.K, harmonics, samples);
+  hbm::CyclicCoupling c;
+  c.sectors = N, c.engineOrder = eo;
   c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
   matrix.setCyclic(c);
   test_support::addRingElements(matrix);
@@ -105,23 +99,8 @@ TEST(RingReceptance, RingSystemEqualsExpandedMatrixRing) {
   matrix.addStaticLoad(2, 0.3);
   const auto reference = hbm::expandToFullRing(matrix);
 
-  const auto ring = mistuning::ringOfSectors(sector);
-  ASSERT_EQ(ring->numUnknowns(), reference->numUnknowns());
-  for (double w : {1.1, 2.9}) {
-    std::srand(7);
-    const Eigen::VectorXd X = 0.5 * Eigen::VectorXd::Random(ring->numUnknowns());
-    Eigen::VectorXd R, Rref;
-    Eigen::MatrixXd J, Jref;
-    ring->residual(X, w, R, &J);
-    reference->residual(X, w, Rref, &Jref);
-    const double eR = (R - Rref).norm() / Rref.norm(), eJ = (J - Jref).norm() / Jref.norm();
-    const Eigen::VectorXd Xl = ring->linearizedSolution(w), Xlref = reference->linearizedSolution(w);
-    const double eL = (Xl - Xlref).norm() / Xlref.norm();
-    std::printf("w %.1f: residual %.1e, Jacobian %.1e, stuck (linearised) response %.1e\n", w, eR, eJ, eL);
-    EXPECT_LT(eR, 1e-10) << w;
-    EXPECT_LT(eJ, 1e-10) << w;
-    EXPECT_LT(eL, 1e-10) << w;
-  }
+  const auto ring = mistuning::ringOfSectors(*sector);
+  test_support::expectSameRing(*ring, *reference, "ring of sectors");
 }
 
 namespace {

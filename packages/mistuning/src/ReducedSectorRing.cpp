@@ -15,15 +15,31 @@ std::vector<int> everyNodalDiameter(int sectors) {
   return out;
 }
 
-std::unique_ptr<hbm::HarmonicBalanceSystem> ringOfSectors(const hbm::HarmonicBalanceSystem& s) {
+namespace {
+
+void checkRingSector(const hbm::HarmonicBalanceSystem& s) {
   if (!s.isCyclic()) throw InputError("ring", "the sector's system is not cyclic");
   if (!s.isReceptance())
     throw InputError("ring", "the sector's system is in the matrix form (hbm::expandToFullRing expands it)");
-  const int N = s.cyclic().sectors, n = s.numDofs();
-  if (s.receptance()->sectors() != N)
+  if (s.receptance()->sectors() != s.cyclic().sectors)
     throw InputError("ring", "the sector's model has " + std::to_string(s.receptance()->sectors()) +
-                                 " sectors, its system " + std::to_string(N));
-  auto model = std::make_shared<RingReceptance>(s.receptance());
+                                 " sectors, its system " + std::to_string(s.cyclic().sectors));
+}
+
+}  // namespace
+
+std::unique_ptr<hbm::HarmonicBalanceSystem> ringOfSectors(const hbm::HarmonicBalanceSystem& s) {
+  checkRingSector(s);
+  return ringOfSectors(s, std::make_shared<RingReceptance>(s.receptance()));
+}
+
+std::unique_ptr<hbm::HarmonicBalanceSystem> ringOfSectors(const hbm::HarmonicBalanceSystem& s,
+                                                          std::shared_ptr<const hbm::ReceptanceModel> model) {
+  checkRingSector(s);
+  const int N = s.cyclic().sectors, n = s.numDofs();
+  if (!model || model->sectors() != 1 || model->numDofs() != N * n)
+    throw InputError("ring", "the ring's model must be one non-cyclic model of " + std::to_string(N * n) +
+                                 " DOFs (N sectors' " + std::to_string(n) + ")");
   auto ring = std::make_unique<hbm::HarmonicBalanceSystem>(model, s.aft().harmonics(), s.aft().numSamples());
   ring->useDynamicStiffness(s.usesDynamicStiffness());
   for (const auto& c : s.elements())

@@ -28,6 +28,12 @@ std::vector<int> everyNodalDiameter(int sectors);
 /// or compliance). InputError naming "ring" for a system not cyclic or in the matrix form
 /// (hbm::expandToFullRing expands that one).
 std::unique_ptr<hbm::HarmonicBalanceSystem> ringOfSectors(const hbm::HarmonicBalanceSystem& sector);
+/// The same with `ringModel` as the ring's linear part in place of the RingReceptance over
+/// the sector's model: a mistuned ring (MistunedRingReceptance), its DOFs in the same order
+/// (sector j's at j n ..), so the sector's elements and excitation attach as in the tuned
+/// ring. InputError naming "ring" for a model that is cyclic or of another size.
+std::unique_ptr<hbm::HarmonicBalanceSystem> ringOfSectors(const hbm::HarmonicBalanceSystem& sector,
+                                                          std::shared_ptr<const hbm::ReceptanceModel> ringModel);
 
 /// The disc's ring and the cyclic sector it comes from.
 struct DiscRing {
