@@ -42,22 +42,32 @@ Percentile percentileOf(std::vector<double> values, double level) {
   return p;
 }
 
-AmplificationStatistics monteCarloAmplification(const LumpedRing& ring, double sigma, int patterns,
-                                                std::uint64_t seed, const std::vector<double>& omegas) {
+AmplificationStatistics monteCarloAmplification(int blades, const PatternPeaks& peaks, double sigma, int patterns,
+                                                std::uint64_t seed) {
   if (patterns < 1) throw InputError("patterns", "must be at least 1");
   AmplificationStatistics out;
-  const std::vector<double> tuned(std::size_t(ring.blades), 0.0);
-  out.tunedPeak = bladePeaks(ring, tuned, omegas).largest();
+  out.tunedPeak = peaks(std::vector<double>(std::size_t(blades), 0.0)).largest();
   for (int i = 0; i < patterns; ++i) {
-    const auto delta = randomPattern(ring.blades, sigma, seed + std::uint64_t(i));
-    out.factors.push_back(bladePeaks(ring, delta, omegas).largest() / out.tunedPeak);
+    const auto p = peaks(randomPattern(blades, sigma, seed + std::uint64_t(i)));
+    out.factors.push_back(p.largest() / out.tunedPeak);
+    out.localisation.push_back(p.localisation);
   }
-  double sum = 0;
-  for (double f : out.factors) sum += f, out.largest = std::max(out.largest, f);
+  double sum = 0, ipr = 0;
+  for (int i = 0; i < patterns; ++i)
+    sum += out.factors[std::size_t(i)], ipr += out.localisation[std::size_t(i)],
+        out.largest = std::max(out.largest, out.factors[std::size_t(i)]);
   out.mean = sum / patterns;
+  out.meanLocalisation = ipr / patterns;
   out.p95 = percentileOf(out.factors, 0.95);
   out.p99 = percentileOf(out.factors, 0.99);
   return out;
+}
+
+AmplificationStatistics monteCarloAmplification(const LumpedRing& ring, double sigma, int patterns,
+                                                std::uint64_t seed, const std::vector<double>& omegas) {
+  return monteCarloAmplification(
+      ring.blades, [&](const std::vector<double>& delta) { return bladePeaks(ring, delta, omegas); }, sigma, patterns,
+      seed);
 }
 
 }  // namespace cyclone::mistuning

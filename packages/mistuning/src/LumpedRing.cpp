@@ -57,17 +57,26 @@ double tunedResonance(const LumpedRing& ring) {
 
 BladePeaks bladePeaks(const LumpedRing& ring, const std::vector<double>& delta, const std::vector<double>& omegas) {
   if (omegas.empty()) throw InputError("frequencies", "the sweep needs at least one frequency");
+  Eigen::MatrixXcd X(ring.blades, Eigen::Index(omegas.size()));
+  for (std::size_t k = 0; k < omegas.size(); ++k) X.col(Eigen::Index(k)) = ringResponse(ring, delta, omegas[k]);
+  return bladePeaksOf(X, omegas);
+}
+
+BladePeaks bladePeaksOf(const Eigen::MatrixXcd& responses, const std::vector<double>& omegas) {
+  if (omegas.empty()) throw InputError("frequencies", "the sweep needs at least one frequency");
+  const int N = int(responses.rows());
   BladePeaks out;
-  out.amplitude.assign(std::size_t(ring.blades), 0.0);
-  out.omega.assign(std::size_t(ring.blades), omegas.front());
-  for (double w : omegas) {
-    const Eigen::VectorXcd x = ringResponse(ring, delta, w);
-    for (int n = 0; n < ring.blades; ++n)
-      if (std::abs(x(n)) > out.amplitude[std::size_t(n)])
-        out.amplitude[std::size_t(n)] = std::abs(x(n)), out.omega[std::size_t(n)] = w;
-  }
-  for (int n = 0; n < ring.blades; ++n)
+  out.amplitude.assign(std::size_t(N), 0.0);
+  out.omega.assign(std::size_t(N), omegas.front());
+  std::vector<Eigen::Index> at(std::size_t(N), 0);
+  for (Eigen::Index k = 0; k < responses.cols(); ++k)
+    for (int n = 0; n < N; ++n)
+      if (std::abs(responses(n, k)) > out.amplitude[std::size_t(n)])
+        out.amplitude[std::size_t(n)] = std::abs(responses(n, k)), out.omega[std::size_t(n)] = omegas[std::size_t(k)],
+        at[std::size_t(n)] = k;
+  for (int n = 0; n < N; ++n)
     if (out.amplitude[std::size_t(n)] > out.amplitude[std::size_t(out.worstBlade)]) out.worstBlade = n;
+  out.localisation = inverseParticipationRatio(responses.col(at[std::size_t(out.worstBlade)]));
   return out;
 }
 

@@ -4,6 +4,7 @@
 // 99th percentiles (with a distribution-free 95 % confidence interval from the order
 // statistics), and the largest.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cyclone/mistuning/LumpedRing.hpp"
@@ -21,7 +22,19 @@ struct AmplificationStatistics {
   double mean = 0, largest = 0;
   Percentile p95, p99;
   double tunedPeak = 0;  ///< the tuned blade peak over the same sweep
+  std::vector<double> localisation;  ///< per pattern, the inverse participation ratio at its worst peak
+  double meanLocalisation = 0;
 };
+
+/// A ring's blade peaks over its sweep for a pattern of deviations (the tuned ring for all
+/// zero): what the statistics need of a ring, lumped (bladePeaks) or of reduced sectors
+/// (MistunedRingSweep::peaks).
+using PatternPeaks = std::function<BladePeaks(const std::vector<double>& delta)>;
+
+/// `patterns` random patterns of `blades` deviations of standard deviation `sigma` (seeds
+/// seed, seed + 1, ...), each pattern's largest blade peak over the tuned one.
+AmplificationStatistics monteCarloAmplification(int blades, const PatternPeaks& peaks, double sigma, int patterns,
+                                                std::uint64_t seed);
 
 /// `patterns` random patterns of standard deviation `sigma` (seeds seed, seed + 1, ...),
 /// each ring's blade peaks over `omegas` against the tuned peak over the same sweep.

@@ -44,9 +44,13 @@ struct BladePeaks {
   std::vector<double> amplitude;  ///< per blade, the largest |x_n| over the sweep
   std::vector<double> omega;      ///< per blade, where
   int worstBlade = 0;             ///< the blade with the largest peak
+  /// The inverse participation ratio of the response at the worst blade's peak frequency.
+  double localisation = 0;
   double largest() const { return amplitude[std::size_t(worstBlade)]; }
 };
 BladePeaks bladePeaks(const LumpedRing& ring, const std::vector<double>& delta, const std::vector<double>& omegas);
+/// The same from any ring's blade responses (N x omegas.size(), column k at omegas[k]).
+BladePeaks bladePeaksOf(const Eigen::MatrixXcd& responses, const std::vector<double>& omegas);
 
 /// Inverse participation ratio of a response, sum |x_n|^4 / (sum |x_n|^2)^2: 1 / N for a
 /// travelling wave spread over every blade, 1 for one blade alone (localisation).
