@@ -16,7 +16,10 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/ModalStiffness.hpp"
+#include "cyclone/mistuning/AmplificationStatistics.hpp"
 #include "cyclone/mistuning/BladeMistuning.hpp"
+#include "cyclone/mistuning/MistunedRingSweep.hpp"
+#include "cyclone/mistuning/MistuningPattern.hpp"
 #include "cyclone/mistuning/ReducedSectorRing.hpp"
 #include "cyclone/mistuning/RingReceptance.hpp"
 #include "cyclone/mistuning/SubsetOfNominalModes.hpp"
@@ -188,4 +191,97 @@ TEST(SubsetOfNominalModes, MistunedRingSystemEqualsAssembledRing) {
   reference.addStaticLoadCoefficients(tuned->staticLoad());
   test_support::expectSameRing(*ring, reference, "mistuned ring");
   EXPECT_THROW(mistuning::ringOfSectors(sector, nom.sector), InputError) << "a cyclic model is not a ring's";
+}
+
+// The linear forced response of the mistuned ring over a sweep (MistunedRingSweep.hpp),
+// with the sector's viscous damping (an LU per frequency) and with the structural loss
+// factor alone (one eigendecomposition per pattern).
+namespace {
+
+hbm::ModalRealization structuralOnly(hbm::ModalRealization r) {
+  r.viscous = Eigen::VectorXd::Zero(r.numModes());
+  r.lossFactor = 0.01;
+  return r;
+}
+
+}  // namespace
+
+TEST(MistunedRingSweep, ZeroScatterIsTheTunedCyclicResponse) {
+  const auto m = test_support::ringMatrices();
+  const int N = 6, eo = 2, dof = 1;
+  const auto nom = nominal(N, m);
+  const mistuning::RingReceptance ring(nom.sector);
+  const auto tuned = *ring.modalRealization(0);
+  const mistuning::MistunedRingSweep sweep(tuned, N, 3, nom.modesPerPhase, nom.projection, eo, dof, dof);
+  const std::vector<double> omegas{0.7, 2.6, 2.95, 3.3, 5.0};
+  const Eigen::MatrixXcd X = sweep.responses(std::vector<double>(N, 0.0), omegas);
+  double worst = 0;
+  for (std::size_t k = 0; k < omegas.size(); ++k) {
+    // The cyclic sector at phase EO, unit force on the excitation DOF, turned to blade j.
+    const cd x0 = nom.sector->compliance(omegas[k], eo)(dof, dof);
+    for (int j = 0; j < N; ++j) {
+      const double a = -2 * M_PI * eo * j / N;
+      worst = std::max(worst, std::abs(X(j, Eigen::Index(k)) - x0 * cd(std::cos(a), std::sin(a))) / std::abs(x0));
+    }
+  }
+  std::printf("zero scatter against the cyclic sector: %.1e\n", worst);
+  EXPECT_LT(worst, 1e-11);
+  // Amplification 1 on every pattern of zero scatter.
+  std::vector<double> band;
+  for (int k = 0; k <= 200; ++k) band.push_back(2.0 + 2.0 * k / 200);
+  const auto stats = mistuning::monteCarloAmplification(
+      N, [&](const std::vector<double>& d) { return sweep.peaks(d, band); }, 0.0, 3, 7);
+  for (double f : stats.factors) EXPECT_NEAR(f, 1.0, 1e-12);
+}
+
+TEST(MistunedRingSweep, AgainstTheMistunedRingCompliance) {
+  const auto m = test_support::ringMatrices();
+  const int N = 6, eo = 1, dof = 2, resp = 1;
+  const auto nom = nominal(N, m);
+  const mistuning::RingReceptance ring(nom.sector);
+  const std::vector<double> delta{0.05, -0.03, 0.02, -0.04, 0.01, 0.035};
+  const std::vector<double> omegas{0.7, 2.6, 2.95, 3.3, 5.0};
+  for (bool viscous : {true, false}) {
+    const auto tuned = viscous ? *ring.modalRealization(0) : structuralOnly(*ring.modalRealization(0));
+    const mistuning::MistunedRingSweep sweep(tuned, N, 3, nom.modesPerPhase, nom.projection, eo, dof, resp,
+                                             cd(0.8, 0.1));
+    const mistuning::MistunedRingReceptance snm(
+        tuned, mistuning::subsetOfNominalModesStiffness(nom.modesPerPhase, nom.projection, delta));
+    EXPECT_LT(relative(sweep.stiffnessPerturbation(delta), snm.stiffnessPerturbation()), 1e-14);
+    const Eigen::MatrixXcd X = sweep.responses(delta, omegas);
+    double worst = 0;
+    for (std::size_t k = 0; k < omegas.size(); ++k) {
+      const Eigen::VectorXcd x = snm.compliance(omegas[k], 0) * sweep.load();
+      Eigen::VectorXcd ref(N);
+      for (int j = 0; j < N; ++j) ref(j) = x(3 * j + resp);
+      worst = std::max(worst, (X.col(Eigen::Index(k)) - ref).norm() / ref.norm());
+    }
+    std::printf("%s: blade responses against the mistuned compliance applied to the load: %.1e\n",
+                viscous ? "viscous" : "structural", worst);
+    EXPECT_LT(worst, 1e-11);
+  }
+  EXPECT_THROW(mistuning::MistunedRingSweep(*ring.modalRealization(0), N, 3, nom.modesPerPhase, nom.projection, N,
+                                            dof, dof),
+               InputError);
+}
+
+TEST(MistunedRingSweep, CircularShiftsGiveTheSameAmplification) {
+  const auto m = test_support::ringMatrices();
+  const int N = 6, eo = 2, dof = 1;
+  const auto nom = nominal(N, m);
+  const mistuning::RingReceptance ring(nom.sector);
+  const mistuning::MistunedRingSweep sweep(structuralOnly(*ring.modalRealization(0)), N, 3, nom.modesPerPhase,
+                                           nom.projection, eo, dof, dof);
+  std::vector<double> band;
+  for (int k = 0; k <= 400; ++k) band.push_back(2.0 + 2.0 * k / 400);
+  const auto delta = mistuning::randomPattern(N, 0.03, 11);
+  const auto base = sweep.peaks(delta, band);
+  double worst = 0;
+  for (int s = 1; s < N; ++s) {
+    const auto p = sweep.peaks(mistuning::shiftedPattern(delta, s), band);
+    worst = std::max(worst, std::abs(p.largest() - base.largest()) / base.largest());
+    EXPECT_EQ(p.worstBlade, (base.worstBlade + s) % N);
+  }
+  std::printf("circular shifts: largest peak within %.1e\n", worst);
+  EXPECT_LT(worst, 1e-12);
 }
