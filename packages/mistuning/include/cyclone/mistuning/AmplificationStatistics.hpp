@@ -2,7 +2,8 @@
 // Monte Carlo over mistuning patterns: per pattern the amplification factor (the largest
 // blade peak over the tuned peak), and its statistics over the patterns: mean, 95th and
 // 99th percentiles (with a distribution-free 95 % confidence interval from the order
-// statistics), and the largest.
+// statistics), and the largest. Any ring whose blade peaks a pattern gives (PatternPeaks):
+// the lumped ring, the disc's mistuned ring of reduced sectors (MistunedRingSweep.hpp).
 #include <cstdint>
 #include <functional>
 #include <vector>
