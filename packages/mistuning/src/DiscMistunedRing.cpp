@@ -111,7 +111,7 @@ Eigen::MatrixXcd bladeModalProjection(const mesh::Mesh& mesh, const std::vector<
   Eigen::MatrixXcd S(shapes.empty() ? 0 : shapes[0].rows(), m);
   Eigen::Index c = 0;
   for (const auto& s : shapes) S.middleCols(c, s.cols()) = s, c += s.cols();
-  Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(m, m);
+  Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(m, m), Se;  // Se: one element's rows of the shapes, reused
   for (const auto g : bladeElements) {
     const auto [b, e] = mesh.locateElement(g);
     const auto& block = mesh.blocks[b];
@@ -121,7 +121,7 @@ Eigen::MatrixXcd bladeModalProjection(const mesh::Mesh& mesh, const std::vector<
     for (int a = 0; a < nn; ++a)
       for (int d = 0; d < 3; ++d) X(a, d) = mesh.coords[nodes[a]][d];
     const Eigen::MatrixXd Ke = fe::elementStiffness(block.type, X, material);
-    Eigen::MatrixXcd Se(3 * nn, m);
+    Se.resize(3 * nn, m);  // no reallocation while the element type stays the same
     for (int a = 0; a < nn; ++a) Se.middleRows(3 * a, 3) = S.middleRows(3 * Eigen::Index(nodes[a]), 3);
     B.noalias() += Se.adjoint() * (Ke * Se);
   }

@@ -68,19 +68,22 @@ Eigen::MatrixXcd MistunedRingSweep::responses(const std::vector<double>& delta,
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> eig(0.5 * (H + H.adjoint()));
     const Eigen::MatrixXcd UY = Ur_ * eig.eigenvectors();
     const Eigen::VectorXcd h = eig.eigenvectors().adjoint() * g_;
+    Eigen::VectorXcd q(h.size());  // one per call, not per frequency
     for (std::size_t k = 0; k < omegas.size(); ++k) {
       const double w2 = omegas[k] * omegas[k];
-      Eigen::VectorXcd q(h.size());
       for (Eigen::Index i = 0; i < h.size(); ++i) q(i) = h(i) / (damped * eig.eigenvalues()(i) - w2);
       X.col(Eigen::Index(k)) = r + UY * q;
     }
     return X;
   }
+  Eigen::MatrixXcd S(H.rows(), H.cols());
+  Eigen::PartialPivLU<Eigen::MatrixXcd> lu(H.rows());
   for (std::size_t k = 0; k < omegas.size(); ++k) {
     const double w = omegas[k];
-    Eigen::MatrixXcd S = damped * H;
+    S = damped * H;
     for (Eigen::Index i = 0; i < S.rows(); ++i) S(i, i) += cd(0, w * c_(i)) - w * w;
-    X.col(Eigen::Index(k)) = r + Ur_ * S.partialPivLu().solve(g_);
+    lu.compute(S);
+    X.col(Eigen::Index(k)) = r + Ur_ * lu.solve(g_);
   }
   return X;
 }
