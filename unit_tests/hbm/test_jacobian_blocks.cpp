@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 
+#include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/JacobianBlocks.hpp"
 #include "cyclone/hbm/ProjectedReceptance.hpp"
@@ -40,7 +41,7 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega, do
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   s.residual(X, omega, R, &J);
-  auto blocks = s.jacobianBlocks(X, omega);
+  auto blocks = s.jacobianBlocks(X, omega, /*formed=*/true);
   EXPECT_EQ(blocks->sparseElements(), sparseElements);
   const Eigen::MatrixXd D = blocks->dense();
   EXPECT_LE((D - J).norm(), 1e-12 * J.norm()) << "the blocks' products are not the formed Jacobian";
@@ -94,6 +95,40 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega, do
   EXPECT_LE((Pb * z - r).norm(), singleLu * r.norm()) << "the blended preconditioner is not the blended block diagonal's inverse";
 }
 
+// The blocks with the 3D contact applied by its tangent per sample (ElementLinearization)
+// against the formed Jacobian: the same products to rounding, with row scales and
+// blended rows; the preconditioner's blocks are the tangent's own. `exactBlocks`: the
+// contact has no memory (frictionless), so its instantaneous tangent's (h, h) blocks
+// are the Jacobian's.
+void expectTangentProductsAreTheJacobian(const HarmonicBalanceSystem& s, double omega, bool exactBlocks) {
+  const Eigen::VectorXd X = motion(s);
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  s.residual(X, omega, R, &J);
+  auto blocks = s.jacobianBlocks(X, omega);
+  EXPECT_EQ(blocks->sparseElements(), 0);
+  EXPECT_LE((blocks->dense() - J).norm(), 1e-12 * J.norm()) << "the tangent's products are not the formed Jacobian";
+  auto formed = s.jacobianBlocks(X, omega, /*formed=*/true);
+  Eigen::VectorXd scale(s.numUnknowns());
+  for (Eigen::Index i = 0; i < scale.size(); ++i) scale(i) = 1.0 + 0.1 * double(i % 5);
+  blocks->scaleRows(scale);
+  EXPECT_LE((blocks->dense() - scale.asDiagonal() * J).norm(), 1e-12 * J.norm());
+  double blockDifference = 0, blockSize = 0;
+  for (std::size_t i = 0; i < s.aft().harmonics().harmonics().size(); ++i) {
+    blockDifference = std::max(blockDifference, (blocks->harmonicBlock(i) - formed->harmonicBlock(i)).norm());
+    blockSize = std::max(blockSize, formed->harmonicBlock(i).norm());
+  }
+  if (exactBlocks)
+    EXPECT_LE(blockDifference, 1e-12 * blockSize);
+  else  // the slider's memory left out: the blocks differ (else this checks nothing)
+    EXPECT_GT(blockDifference, 1e-3 * blockSize);
+  std::vector<int> rows{0, 3, 5};
+  blocks->blendRows(rows, 0.3, 2.5);
+  Eigen::MatrixXd Jb = scale.asDiagonal() * J;
+  for (int i : rows) Jb.row(i) *= 0.3, Jb(i, i) += 2.5;
+  EXPECT_LE((blocks->dense() - Jb).norm(), 1e-12 * Jb.norm());
+}
+
 // The ring's matrix-form sector with its elements.
 HarmonicBalanceSystem matrixFormSector() {
   const auto m = ringMatrices();
@@ -112,6 +147,29 @@ TEST(JacobianBlocks, MatrixFormCyclicSector) { expectBlocksAreTheJacobian(matrix
 // A motion small enough that the friction contact stays stuck and closed all period: its
 // block (kt and kn on the diagonal, the mean's rows) is held sparse, the same products.
 TEST(JacobianBlocks, StuckContactHeldSparse) { expectBlocksAreTheJacobian(matrixFormSector(), 1.7, 1e-3, 1); }
+
+// A slipping and opening 3D contact (the motion makes it do both) applied by its tangent
+// per sample: exactly the formed Jacobian's products.
+TEST(JacobianBlocks, ContactTangentProductsAreTheFormedJacobian) {
+  expectTangentProductsAreTheJacobian(matrixFormSector(), 1.7, false);
+}
+
+// A frictionless contact whose normal load varies and opens: no memory, so even the
+// preconditioner's blocks of the tangent per sample are the Jacobian's.
+TEST(JacobianBlocks, FrictionlessContactTangentBlocksAreExact) {
+  const auto m = ringMatrices();
+  HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(5), 64);
+  CyclicCoupling c;
+  c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
+  s.setCyclic(c);
+  FrictionContactParameters p;
+  p.tangentialDirections = 2, p.kt = 5.0, p.kn = 6.0, p.mu = 0.0, p.preload = 0.5;
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 3), Wn = Eigen::MatrixXd::Zero(3, 3);
+  W(1, 0) = 1, W(0, 1) = 0.3, W(2, 2) = 1;
+  Wn(1, 0) = -1, Wn(0, 1) = -0.3, Wn(2, 2) = -1;
+  s.addElement(std::make_shared<FrictionContact>(p), W, Wn);
+  expectTangentProductsAreTheJacobian(s, 1.7, true);
+}
 
 TEST(JacobianBlocks, DynamicStiffnessReceptanceForm) {
   const auto m = ringMatrices();

@@ -290,6 +290,148 @@ private:
 
 }  // namespace
 
+namespace {
+
+// The slider's state z at the period's start that the period map returns to. Marching
+// periods reaches it in one or two for 1D slip or an opening contact; circular slip in
+// 3D contracts only geometrically, and near the onset of slip by a factor close to one
+// per period, so a march of a bounded count would leave a state off the periodic one, a
+// residual that jumps from point to point and Newton that cannot converge. There the
+// fixed point of the period map is found by Newton (PeriodMarch::settle). False if it
+// did not settle (z is then the last state reached).
+bool periodicStart(const FrictionContactParameters& p, PeriodMarch& march, const Eigen::MatrixXd& w, Eigen::VectorXd& z) {
+  const int d = int(w.cols()), dt = p.tangentialDirections, m = march.m();
+  double scale = p.mu * std::abs(p.preload) / p.kt;
+  for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
+  const double settled = 1e-14 * std::max(scale, 1e-300);
+  z = Eigen::VectorXd::Zero(dt);
+  const int marchedPeriods = 3;
+  for (int k = 0; k < marchedPeriods; ++k) {
+    const Eigen::VectorXd start = z;
+    march.period(z, nullptr, m, false);
+    if ((z - start).norm() <= settled) return true;
+  }
+  // Just past the onset of circular slip the march from the relaxed state creeps
+  // (the slip per period vanishes there) and can end far from the periodic state,
+  // which lies near the least violating slider position: a force that jumps
+  // between nearby motions, a wall no Newton crosses. Start there first.
+  if (dt == 2 && p.mu > 0) {
+    const Eigen::VectorXd normal = (p.preload + p.kn * w.col(2).array()).matrix();
+    if (normal.minCoeff() > 0) {
+      Eigen::VectorXd y = detail::leastViolatingState(w.leftCols(2).transpose(), p.mu / p.kt * normal);
+      if (march.settle(y, settled)) {
+        z = y;
+        return true;
+      }
+    }
+  }
+  return march.settle(z, settled);
+}
+
+// The 3D contact's Jacobian (d = 3, dt = 2) as its tangent per sample (ElementLinearization): each step
+// of the recorded period maps the motion's and the slider's perturbations [dw_i; dz_i-1]
+// linearly to [df_i; dz_i], a (d + dt) square matrix read off contactStep itself (so the
+// products are the formed Jacobian's to rounding); the period's start moves with W as
+// dz_0 = (I - Phi_z)^-1 Phi_W dW (the fixed point of the period map, as sampledForce).
+class ContactTangent final : public ElementLinearization {
+public:
+  ContactTangent(const FrictionContactParameters& p, const Aft& aft, const Eigen::MatrixXd& w, Eigen::VectorXd z)
+      : aft_(aft), N_(aft.numSamples()), nc_(aft.numCoefficients()), d_(3), dt_(2) {
+    const int s = d_ + dt_;
+    steps_.resize(s, s * N_);
+    Eigen::MatrixXd dwt = Eigen::MatrixXd::Zero(dt_, s), dz(dt_, s), df(d_, s), dTrial(dt_, s);
+    dwt.leftCols(dt_).setIdentity();
+    Eigen::RowVectorXd dn = Eigen::RowVectorXd::Zero(s);
+    dn(dt_) = 1;
+    StepSensitivity sens{&dwt, &dn, &dz, &df, &dTrial};
+    Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(dt_, dt_);
+    Eigen::VectorXd fi(d_);
+    for (int i = 0; i < N_; ++i) {
+      dz.setZero();
+      dz.rightCols(dt_).setIdentity();
+      contactStep(p, w.row(i).head(dt_).transpose(), w(i, dt_), z, fi, &sens);
+      auto S = step(i);
+      S.topRows(d_) = df;
+      S.bottomRows(dt_) = dz;
+      phi = dz.rightCols(dt_) * phi;
+    }
+    start_.compute(Eigen::Matrix2d::Identity() - phi);
+    w_.resize(N_, d_), f_.resize(N_, d_);
+  }
+  // Whether the period's start is an isolated fixed point (I - Phi_z invertible); where
+  // it is not, the formed Jacobian's march over periods is used instead.
+  bool isolated() const { return start_.isInvertible(); }
+
+  void apply(const Eigen::MatrixXd& dW, Eigen::MatrixXd& dF) const override {
+    for (int c = 0; c < 3; ++c) aft_.toTime(dW.col(c).data(), w_.col(c).data());
+    Eigen::Matrix<double, 5, 1> in, out;
+    Eigen::Vector2d dz = Eigen::Vector2d::Zero();
+    for (int i = 0; i < N_; ++i) {  // the period's end from a fixed start: Phi_W dW
+      in << w_(i, 0), w_(i, 1), w_(i, 2), dz;
+      dz.noalias() = step(i).bottomRows<2>() * in;
+    }
+    dz = start_.solve(dz);
+    for (int i = 0; i < N_; ++i) {
+      in << w_(i, 0), w_(i, 1), w_(i, 2), dz;
+      out.noalias() = step(i) * in;
+      f_(i, 0) = out(0), f_(i, 1) = out(1), f_(i, 2) = out(2);
+      dz = out.tail<2>();
+    }
+    dF.resize(nc_, 3);
+    for (int c = 0; c < 3; ++c) aft_.toFrequency(f_.col(c).data(), dF.col(c).data());
+  }
+
+  Eigen::MatrixXd harmonicBlock(const std::vector<int>& slots) const override {
+    const int m = int(slots.size());
+    const Eigen::MatrixXd &E = aft_.timeFromCoefficients(), &P = aft_.coefficientsFromTime();
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(d_ * m, d_ * m);
+    for (int i = 0; i < N_; ++i) {
+      const auto T = step(i).topLeftCorner(d_, d_);
+      for (int k = 0; k < d_; ++k)
+        for (int l = 0; l < d_; ++l) {
+          if (T(k, l) == 0) continue;
+          for (int r = 0; r < m; ++r)
+            for (int q = 0; q < m; ++q) B(k * m + r, l * m + q) += P(slots[r], i) * T(k, l) * E(i, slots[q]);
+        }
+    }
+    return B;
+  }
+
+private:
+  // Sample i's step matrix: contiguous, columns 5 i .. of steps_.
+  using Step = Eigen::Matrix<double, 5, 5>;
+  Eigen::Map<const Step> step(int i) const { return Eigen::Map<const Step>(steps_.data() + Eigen::Index(i) * 25); }
+  Eigen::Map<Step> step(int i) { return Eigen::Map<Step>(steps_.data() + Eigen::Index(i) * 25); }
+
+  const Aft& aft_;
+  const int N_, nc_, d_, dt_;
+  Eigen::MatrixXd steps_;  // sample i's step matrix in columns i (d + dt) ..
+  Eigen::FullPivLU<Eigen::Matrix2d> start_;
+  mutable Eigen::MatrixXd w_, f_;  // apply()'s samples of the direction and of its force
+};
+
+}  // namespace
+
+std::unique_ptr<ElementLinearization> FrictionContact::linearization(const Aft& aft, const Eigen::MatrixXd& W,
+                                                                     double) const {
+  // The 2D contact's located law keeps its formed Jacobian.
+  if (p_.tangentialDirections != 2) return nullptr;
+  const int N = aft.numSamples(), d = dimension();
+  if (W.rows() != aft.numCoefficients() || W.cols() != d) return nullptr;  // harmonicForce names the mismatch
+  Eigen::MatrixXd w(N, d), f(N, d);
+  for (int c = 0; c < d; ++c) aft.toTime(W.col(c).data(), w.col(c).data());
+  // Open all period, or stuck all period: the formed Jacobian has few nonzeros and is
+  // held sparse (JacobianBlocks), cheaper than a march per product.
+  if ((p_.preload + p_.kn * w.col(2).array()).maxCoeff() <= 0) return nullptr;
+  if (stuckThroughout(aft, w, f, nullptr)) return nullptr;
+  PeriodMarch march(p_, aft, w, f, nullptr);
+  Eigen::VectorXd z;
+  if (!periodicStart(p_, march, w, z)) return nullptr;  // the formed path reports it unsettled
+  auto tangent = std::make_unique<ContactTangent>(p_, aft, w, z);
+  if (!tangent->isolated()) return nullptr;
+  return tangent;
+}
+
 void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eigen::MatrixXd& w, Eigen::MatrixXd& f,
                                    Eigen::MatrixXd* jacobian) const {
   const int N = aft.numSamples(), nc = aft.numCoefficients(), d = dimension(), dt = p_.tangentialDirections;
@@ -302,40 +444,11 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   if (stuckThroughout(aft, w, f, jacobian)) return;
   PeriodMarch march(p_, aft, w, f, jacobian);
   const int m = march.m();
-  double scale = p_.mu * std::abs(p_.preload) / p_.kt;
-  for (int c = 0; c < d; ++c) scale = std::max(scale, w.col(c).cwiseAbs().maxCoeff());
-  const double settled = 1e-14 * std::max(scale, 1e-300);
   // Settle the hysteresis loop: the slider's state at the period's start must be
-  // the one it returns to. Marching periods reaches it in one or two for 1D slip
-  // or an opening contact; circular slip in 3D contracts only geometrically, and
-  // near the onset of slip by a factor close to one per period, so a march of a
-  // bounded count would leave a state off the periodic one, a residual that jumps
-  // from point to point and Newton that cannot converge. There the fixed point of
-  // the period map is found by Newton (PeriodMarch::settle).
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(dt);
+  // the one it returns to (periodicStart).
+  Eigen::VectorXd z;
+  if (!periodicStart(p_, march, w, z)) ++unsettled;
   if (jacobian) jacobian->setZero(m, m);
-  const int marchedPeriods = 3;
-  bool periodic = false;
-  for (int k = 0; k < marchedPeriods && !periodic; ++k) {
-    const Eigen::VectorXd start = z;
-    march.period(z, nullptr, m, false);
-    periodic = (z - start).norm() <= settled;
-  }
-  if (!periodic) {
-    // Just past the onset of circular slip the march from the relaxed state creeps
-    // (the slip per period vanishes there) and can end far from the periodic state,
-    // which lies near the least violating slider position: a force that jumps
-    // between nearby motions, a wall no Newton crosses. Start there first.
-    if (dt == 2 && p_.mu > 0) {
-      const Eigen::VectorXd normal = (p_.preload + p_.kn * w.col(2).array()).matrix();
-      if (normal.minCoeff() > 0) {
-        Eigen::VectorXd y = detail::leastViolatingState(w.leftCols(2).transpose(), p_.mu / p_.kt * normal);
-        if (march.settle(y, settled)) z = y, periodic = true;
-      }
-    }
-    if (!periodic) periodic = march.settle(z, settled);
-    if (!periodic) ++unsettled;
-  }
   if (!jacobian) {
     march.period(z, nullptr, m, true);
     return;

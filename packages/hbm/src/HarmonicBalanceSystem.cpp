@@ -564,7 +564,8 @@ Eigen::MatrixXd HarmonicBalanceSystem::linearHarmonicBlock(double omega, std::si
   return P;
 }
 
-std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eigen::VectorXd& X, double omega) const {
+std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eigen::VectorXd& X, double omega,
+                                                                     bool formed) const {
   if (!hasJacobianBlocks())
     throw InputError("harmonic balance", "a Jacobian kept as blocks needs the matrix form or useDynamicStiffness");
   const int n = numDofs(), nc = numCoefficients();
@@ -581,7 +582,8 @@ std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eige
     if (across) Wc.noalias() += S * (Xm * c.Wnext);
     JacobianBlocks::ElementBlock b;
     b.element = i;
-    c.element->harmonicForce(*aft_, Wc, omega, F, &b.jacobian);
+    if (!formed) b.linearization = c.element->linearization(*aft_, Wc, omega);
+    if (!b.linearization) c.element->harmonicForce(*aft_, Wc, omega, F, &b.jacobian);
     for (int a = 0; a < n; ++a)
       if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) b.support.push_back(a);
     blocks.push_back(std::move(b));

@@ -60,6 +60,7 @@ JacobianBlocks::JacobianBlocks(const HarmonicBalanceSystem& system, double omega
   sparseElements_.resize(elements_.size());
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const Eigen::MatrixXd& J = elements_[e].jacobian;
+    if (elements_[e].linearization) continue;
     const Eigen::Index nonzeros = (J.array() != 0).count();
     if (nonzeros * 4 < J.size()) sparseElements_[e] = J.sparseView(0.0, 0.0);
   }
@@ -143,7 +144,9 @@ void JacobianBlocks::apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
     }
     if (across) w.noalias() += S * wNext;
     f.resize(nc, d);
-    if (sparseElements_[ei].size() != 0)
+    if (e.linearization)
+      e.linearization->apply(w, f);
+    else if (sparseElements_[ei].size() != 0)
       Eigen::Map<Eigen::VectorXd>(f.data(), nc * d).noalias() =
           sparseElements_[ei] * Eigen::Map<const Eigen::VectorXd>(w.data(), nc * d);
     else
@@ -191,10 +194,13 @@ Eigen::MatrixXd JacobianBlocks::harmonicBlock(std::size_t i) const {
     const bool across = c.Wnext.size() != 0;
     const int ns = int(e.support.size());
     Eigen::MatrixXd Jhh(d * m, d * m), E = Eigen::MatrixXd::Zero(d * m, ns * m);
-    for (int k = 0; k < d; ++k)
-      for (int l = 0; l < d; ++l)
-        for (int r = 0; r < m; ++r)
-          for (int q = 0; q < m; ++q) Jhh(k * m + r, l * m + q) = e.jacobian(k * nc + slots[r], l * nc + slots[q]);
+    if (e.linearization)
+      Jhh = e.linearization->harmonicBlock(slots);
+    else
+      for (int k = 0; k < d; ++k)
+        for (int l = 0; l < d; ++l)
+          for (int r = 0; r < m; ++r)
+            for (int q = 0; q < m; ++q) Jhh(k * m + r, l * m + q) = e.jacobian(k * nc + slots[r], l * nc + slots[q]);
     for (int bi = 0; bi < ns; ++bi) {
       const int b = e.support[bi];
       for (int k = 0; k < d; ++k) {

@@ -48,6 +48,12 @@ public:
   /// Newton from two starts): their force is that of a state off the periodic one.
   /// Callers report a count that grew (the forced-response scenes warn); never silent.
   static long unsettledEvaluations();
+  /// A 3D contact's Jacobian as the law's tangent per sample of the recorded period
+  /// (products equal to the formed Jacobian's to rounding). Null for a 2D contact (the
+  /// located law), one open or stuck all period (its formed Jacobian is sparse), and
+  /// where the period's start did not settle or is not an isolated fixed point.
+  std::unique_ptr<ElementLinearization> linearization(const Aft& aft, const Eigen::MatrixXd& W,
+                                                      double omega) const override;
   /// The sampled contact law itself (stick, slip and lift-off corners intact).
   Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const override;
   int stateSize() const override { return p_.tangentialDirections; }

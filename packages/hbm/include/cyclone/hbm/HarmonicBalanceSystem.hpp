@@ -110,8 +110,11 @@ public:
   /// preconditioned harmonic by harmonic, never formed), for the matrix form and the
   /// dynamic-stiffness receptance form (InputError in the compliance form, whose rows
   /// A dF_nl/dX couple every harmonic: see hasJacobianBlocks). The blocks refer to this
-  /// system, which must outlive them.
-  std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega) const;
+  /// system, which must outlive them. Elements with a linearization (a 3D friction
+  /// contact: ElementLinearization) are applied by their tangent per time sample unless
+  /// `formed` asks for every element's formed Jacobian (its (h, h) blocks then exact in
+  /// the preconditioner too).
+  std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega, bool formed = false) const;
   bool hasJacobianBlocks() const { return !receptance_ || stiffnessForm_; }
   /// The dynamic-stiffness form's Z(omega) for every harmonic h >= 1 in Woodbury's parts
   /// (ModalStiffnessBlocks), when the model has them for every phase those harmonics use;

@@ -13,7 +13,8 @@
 // The preconditioner is the Jacobian's own block diagonal by harmonic: per harmonic h,
 // the linear part's block plus every element's (h, h) block (its coupling of harmonic h
 // to itself: the contact's mean tangent and its 2h-th harmonic), each factored by LU in
-// single precision.
+// single precision. An element applied by its tangent per sample (ElementLinearization)
+// gives its instantaneous tangent's (h, h) block there instead of its Jacobian's.
 // What it leaves out is the elements' coupling between different harmonics, the part
 // that grows where a contact opens and closes within the period.
 #include <Eigen/Dense>
@@ -21,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "cyclone/hbm/ElementLinearization.hpp"
 #include "cyclone/hbm/ModalStiffnessBlocks.hpp"
 
 namespace cyclone::hbm {
@@ -33,7 +35,8 @@ public:
   /// the element's index in the system's elements().
   struct ElementBlock {
     std::size_t element = 0;
-    Eigen::MatrixXd jacobian;
+    Eigen::MatrixXd jacobian;  ///< empty where `linearization` stands for it
+    std::shared_ptr<const ElementLinearization> linearization;
     std::vector<int> support;  ///< the DOFs its W or W_next reach
   };
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cyclone/hbm/Aft.hpp"
+#include "cyclone/hbm/ElementLinearization.hpp"
 
 namespace cyclone::hbm {
 
@@ -33,6 +34,15 @@ public:
   /// c * nc + k). omega is the fundamental angular frequency (d/dt = omega d/dtau).
   virtual void harmonicForce(const Aft& aft, const Eigen::MatrixXd& W, double omega, Eigen::MatrixXd& F,
                              Eigen::MatrixXd* jacobian) const = 0;
+
+  /// The Jacobian at W kept as the law's tangent per time sample (ElementLinearization),
+  /// for products without the formed matrix; null where the element has none (then
+  /// harmonicForce's formed Jacobian is used).
+  virtual std::unique_ptr<ElementLinearization> linearization(const Aft& aft, const Eigen::MatrixXd& W,
+                                                              double omega) const {
+    (void)aft, (void)W, (void)omega;
+    return nullptr;
+  }
 
   /// The force at the Aft's time samples (numSamples x d) for the motion W:
   /// the time signal whose harmonics harmonicForce returns, before that
