@@ -41,7 +41,7 @@ void expectBlocksAreTheJacobian(const HarmonicBalanceSystem& s, double omega, do
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   s.residual(X, omega, R, &J);
-  auto blocks = s.jacobianBlocks(X, omega, /*formed=*/true);
+  auto blocks = s.jacobianBlocks(X, omega, ElementJacobians::Formed);
   EXPECT_EQ(blocks->sparseElements(), sparseElements);
   const Eigen::MatrixXd D = blocks->dense();
   EXPECT_LE((D - J).norm(), 1e-12 * J.norm()) << "the blocks' products are not the formed Jacobian";
@@ -105,10 +105,10 @@ void expectTangentProductsAreTheJacobian(const HarmonicBalanceSystem& s, double 
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   s.residual(X, omega, R, &J);
-  auto blocks = s.jacobianBlocks(X, omega);
+  auto blocks = s.jacobianBlocks(X, omega, ElementJacobians::Tangents);
   EXPECT_EQ(blocks->sparseElements(), 0);
   EXPECT_LE((blocks->dense() - J).norm(), 1e-12 * J.norm()) << "the tangent's products are not the formed Jacobian";
-  auto formed = s.jacobianBlocks(X, omega, /*formed=*/true);
+  auto formed = s.jacobianBlocks(X, omega, ElementJacobians::Formed);
   Eigen::VectorXd scale(s.numUnknowns());
   for (Eigen::Index i = 0; i < scale.size(); ++i) scale(i) = 1.0 + 0.1 * double(i % 5);
   blocks->scaleRows(scale);
@@ -169,6 +169,30 @@ TEST(JacobianBlocks, FrictionlessContactTangentBlocksAreExact) {
   Wn(1, 0) = -1, Wn(0, 1) = -0.3, Wn(2, 2) = -1;
   s.addElement(std::make_shared<FrictionContact>(p), W, Wn);
   expectTangentProductsAreTheJacobian(s, 1.7, true);
+}
+
+// The automatic choice keeps whichever holds fewer numbers: at H = 5 and 64 samples the
+// contact's formed Jacobian (33^2 = 1089 against the tangent's 25 x 64 = 1600), at H = 20
+// its tangent (123^2 = 15129 against 1600). Told apart by the preconditioner's blocks,
+// which are the formed Jacobian's only where it is kept.
+TEST(JacobianBlocks, AutomaticKeepsTheSmallerOfFormedAndTangent) {
+  for (const int H : {5, 20}) {
+    const auto m = ringMatrices();
+    HarmonicBalanceSystem s(m.M, m.C, m.K, HarmonicSet::upTo(H), 64);
+    CyclicCoupling c;
+    c.sectors = 7, c.engineOrder = 2, c.Mnext = m.Mn, c.Cnext = m.Cn, c.Knext = m.Kn;
+    s.setCyclic(c);
+    addRingElements(s);
+    const Eigen::VectorXd X = motion(s);
+    auto automatic = s.jacobianBlocks(X, 1.7);
+    auto formed = s.jacobianBlocks(X, 1.7, ElementJacobians::Formed);
+    const double difference = (automatic->harmonicBlock(1) - formed->harmonicBlock(1)).norm();
+    if (H == 5)
+      EXPECT_EQ(difference, 0.0) << "H = 5: the formed Jacobian holds fewer numbers";
+    else
+      EXPECT_GT(difference, 1e-3 * formed->harmonicBlock(1).norm()) << "H = 20: the tangent holds fewer numbers";
+    EXPECT_LE((automatic->dense() - formed->dense()).norm(), 1e-12 * formed->dense().norm());
+  }
 }
 
 TEST(JacobianBlocks, DynamicStiffnessReceptanceForm) {

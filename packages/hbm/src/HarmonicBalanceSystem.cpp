@@ -565,7 +565,7 @@ Eigen::MatrixXd HarmonicBalanceSystem::linearHarmonicBlock(double omega, std::si
 }
 
 std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eigen::VectorXd& X, double omega,
-                                                                     bool formed) const {
+                                                                     ElementJacobians elementJacobians) const {
   if (!hasJacobianBlocks())
     throw InputError("harmonic balance", "a Jacobian kept as blocks needs the matrix form or useDynamicStiffness");
   const int n = numDofs(), nc = numCoefficients();
@@ -582,7 +582,13 @@ std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eige
     if (across) Wc.noalias() += S * (Xm * c.Wnext);
     JacobianBlocks::ElementBlock b;
     b.element = i;
-    if (!formed) b.linearization = c.element->linearization(*aft_, Wc, omega);
+    if (elementJacobians != ElementJacobians::Formed) {
+      b.linearization = c.element->linearization(*aft_, Wc, omega);
+      const long formedNumbers = long(c.element->dimension()) * nc * c.element->dimension() * nc;
+      if (b.linearization && elementJacobians == ElementJacobians::Automatic &&
+          b.linearization->storedNumbers() >= formedNumbers)
+        b.linearization.reset();
+    }
     if (!b.linearization) c.element->harmonicForce(*aft_, Wc, omega, F, &b.jacobian);
     for (int a = 0; a < n; ++a)
       if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) b.support.push_back(a);

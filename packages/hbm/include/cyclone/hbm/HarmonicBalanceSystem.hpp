@@ -111,10 +111,11 @@ public:
   /// dynamic-stiffness receptance form (InputError in the compliance form, whose rows
   /// A dF_nl/dX couple every harmonic: see hasJacobianBlocks). The blocks refer to this
   /// system, which must outlive them. Elements with a linearization (a 3D friction
-  /// contact: ElementLinearization) are applied by their tangent per time sample unless
-  /// `formed` asks for every element's formed Jacobian (its (h, h) blocks then exact in
-  /// the preconditioner too).
-  std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega, bool formed = false) const;
+  /// contact: ElementLinearization) are applied by their tangent per time sample as
+  /// `elementJacobians` says (by default where it holds fewer numbers than the formed
+  /// Jacobian; the formed one's (h, h) blocks are exact in the preconditioner).
+  std::unique_ptr<JacobianBlocks> jacobianBlocks(const Eigen::VectorXd& X, double omega,
+                                                 ElementJacobians elementJacobians = ElementJacobians::Automatic) const;
   bool hasJacobianBlocks() const { return !receptance_ || stiffnessForm_; }
   /// The dynamic-stiffness form's Z(omega) for every harmonic h >= 1 in Woodbury's parts
   /// (ModalStiffnessBlocks), when the model has them for every phase those harmonics use;
