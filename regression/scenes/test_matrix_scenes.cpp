@@ -405,6 +405,26 @@ TEST(Scenes, HarmonicsByAnErrorTargetMeetACurveTracedWithTwoMore) {
   // what the curve's points resolve of its top.
   EXPECT_NEAR(result.peak / result.harmonicsCheck.levels.back().peak.value, 1.0, 1e-4);
 
+  // A target the levels cannot meet (1e-12 against the cubic's H 2 -> 3 change, at most
+  // H = 3): an estimate, and the curve traced again with H = 3, the highest level whose
+  // peak was found, not left at the first trace's H = 1; the same curve as one traced with
+  // H = 3 from the start, its largest point the level's peak search.
+  auto unmet = load("auto", "  harmonics_tolerance: 1.0e-12\n  harmonics_max: 3\n");
+  const auto estimate = response::solveForcedResponse(unmet);
+  EXPECT_EQ(estimate.harmonicsTarget.reached, -1) << estimate.harmonicsTarget.text;
+  EXPECT_TRUE(estimate.harmonicsTarget.retraced) << estimate.harmonicsTarget.text;
+  EXPECT_EQ(unmet.system->aft().harmonics().maxHarmonic(), 3);
+  EXPECT_TRUE(estimate.branch.finished) << estimate.branch.stopReason;
+  auto three = load("[0, 1, 2, 3]", "");
+  three.harmonicsCheckTo = -1;
+  const auto direct = response::solveForcedResponse(three);
+  std::printf("not met at 1e-12 up to H = 3: curve traced with H = %d, peak %.12f at %.9f; H = 3 traced alone %.12f at "
+              "%.9f; the level's search %.12f\n%s\n",
+              unmet.system->aft().harmonics().maxHarmonic(), estimate.peak, estimate.peakOmega, direct.peak,
+              direct.peakOmega, estimate.harmonicsCheck.levels.back().peak.value, estimate.harmonicsTarget.text.c_str());
+  EXPECT_NEAR(estimate.peak / direct.peak, 1.0, 1e-7);
+  EXPECT_NEAR(estimate.peak / estimate.harmonicsCheck.levels.back().peak.value, 1.0, 1e-4);
+
   // Bad combinations are named.
   auto refused = [&](const std::string& harmonics, const std::string& extra, const std::string& parameter) {
     try {

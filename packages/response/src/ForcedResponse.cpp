@@ -322,11 +322,57 @@ std::string othersNotMet(const ForcedResponseResult& r, double target) {
   return text.str();
 }
 
+// The curve traced again, whole, with a level's harmonics and samples (setup.system
+// becomes it; no second check: the levels are known), the traced curve's checks kept.
+ForcedResponseResult retraceWith(ForcedResponseSetup& setup, const HarmonicsLevel& level, const ForcedResponseResult& traced) {
+  setup.system = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(level.harmonics), level.samples);
+  const double tolerance = setup.harmonicsTolerance;
+  const int checkTo = setup.harmonicsCheckTo;
+  setup.harmonicsTolerance = 0, setup.harmonicsCheckTo = -1;
+  ForcedResponseResult result = solveForcedResponse(setup);
+  setup.harmonicsTolerance = tolerance, setup.harmonicsCheckTo = checkTo;
+  result.harmonicsCheck = traced.harmonicsCheck;
+  result.otherPeakChecks = traced.otherPeakChecks;
+  return result;
+}
+
+// Not met: the curve traced again with the highest level whose peak was found, where that
+// is above the curve's (the best estimate there is: the curve then shows the peak the
+// headline gives, not the first trace's, which with few harmonics can be twice it where
+// the shroud hammers), else the curve stays.
+ForcedResponseResult notMet(ForcedResponseSetup& setup, ForcedResponseResult traced, HarmonicsTarget target,
+                            std::ostringstream& text) {
+  const HarmonicsLevel* best = nullptr;
+  for (const auto& l : traced.harmonicsCheck.levels)
+    if (l.peak.found && (!best || l.maxHarmonic > best->maxHarmonic)) best = &l;
+  if (best && best->maxHarmonic > target.tracedHarmonic) {
+    Timer timer;
+    const HarmonicsLevel level = *best;
+    log::info("harmonics by error target: not met; the curve traced again with H = " + std::to_string(level.maxHarmonic) +
+              ", the highest whose peak was found");
+    ForcedResponseResult result = retraceWith(setup, level, traced);
+    target.retraced = true;
+    target.retraceSeconds = timer.seconds();
+    text << "; the curve traced whole with H = " << level.maxHarmonic << ", the highest whose peak was found ("
+         << result.branch.points.size() << " points, " << target.retraceSeconds << " s), its peak an estimate";
+    result.seconds += traced.seconds;
+    target.text = text.str();
+    log::warn(target.text);
+    result.harmonicsTarget = target;
+    return result;
+  }
+  text << "; the curve stays the one traced with H = " << target.tracedHarmonic << ", its peak an estimate";
+  target.text = text.str();
+  log::warn(target.text);
+  traced.harmonicsTarget = target;
+  return traced;
+}
+
 // setup.harmonicsTolerance on a traced curve: met when every followed peak's check
 // stopped where its last two raises met the tolerance; the curve is then traced again,
 // whole, with the highest of those levels (setup.system becomes it), and the peaks that
 // curve shows and no check followed (an internal resonance that only the raised
-// harmonics reach) are checked from there. Otherwise the curve stays, said.
+// harmonics reach) are checked from there. Otherwise notMet.
 ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedResponseResult traced) {
   HarmonicsTarget target;
   target.tolerance = setup.harmonicsTolerance;
@@ -342,11 +388,7 @@ ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedRespo
     else if (!levels.back().peak.found) text << ": H = " << levels.back().maxHarmonic << " not found";
     else text << " by H = " << levels.back().maxHarmonic << " (the largest tried)";
     text << othersNotMet(traced, target.tolerance);
-    text << "; the curve stays the one traced with H = " << target.tracedHarmonic << ", its peak an estimate";
-    target.text = text.str();
-    log::warn(target.text);
-    traced.harmonicsTarget = target;
-    return traced;
+    return notMet(setup, std::move(traced), target, text);
   }
   // The highest level any peak needed.
   const HarmonicsLevel* reached = &levels.back();
@@ -355,20 +397,14 @@ ForcedResponseResult meetHarmonicsTarget(ForcedResponseSetup& setup, ForcedRespo
   target.reached = reached->maxHarmonic;
   target.change = *std::max_element(changes.begin(), changes.end());
   Timer timer;
-  setup.system = hbm::withHarmonics(*setup.system, hbm::HarmonicSet(reached->harmonics), reached->samples);
   const double tolerance = setup.harmonicsTolerance;
-  const int checkTo = setup.harmonicsCheckTo;
-  setup.harmonicsTolerance = 0, setup.harmonicsCheckTo = -1;  // the levels are known: no second check
   std::ostringstream met;
   met << "harmonics by error target: the peak" << (traced.otherPeakChecks.empty() ? "" : "s") << " met "
       << 100 * tolerance << " % at H = " << target.reached << "; the curve traced again with it";
   log::info(met.str());
-  ForcedResponseResult result = solveForcedResponse(setup);
-  setup.harmonicsTolerance = tolerance, setup.harmonicsCheckTo = checkTo;
+  ForcedResponseResult result = retraceWith(setup, *reached, traced);
   target.retraced = true;
   target.retraceSeconds = timer.seconds();
-  result.harmonicsCheck = traced.harmonicsCheck;
-  result.otherPeakChecks = traced.otherPeakChecks;
   // Peaks of the retraced curve that no check followed, checked from its harmonics up.
   std::vector<double> followedHz{traced.harmonicsCheck.converged.hz};
   for (const auto& c : traced.otherPeakChecks) followedHz.push_back(c.converged.hz);
