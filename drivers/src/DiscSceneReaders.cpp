@@ -275,6 +275,14 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       what << "harmonics up to " << top << " on " << pairs << (spec.contact.patches > 0 ? " shroud contact patches" : " shroud contact pairs");
       response::checkElementJacobianCost(samples, set.numCoefficients(), std::vector<int>(std::size_t(pairs), 3),
                                          what.str(), d.where("harmonics"));
+      // A sample count far above the automatic one: said with its cost on the curve's harmonics.
+      if (spec.samples > 0) {
+        const hbm::HarmonicSet curve(spec.harmonics);
+        response::checkSamplesCost(spec.samples, std::max(256, curve.nonsmoothSamples()),
+                                   "that harmonics up to " + std::to_string(maxHarmonic) +
+                                       " and the friction contacts need (the automatic count)",
+                                   curve, std::vector<int>(std::size_t(pairs), 3), d.where("samples"));
+      }
     }
   } else {
     plan.nds = r.getIntList("nodal_diameters", {});

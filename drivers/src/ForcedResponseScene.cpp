@@ -247,6 +247,11 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
          << in.n * harmonics.numCoefficients() << " unknowns";
     response::checkElementJacobianCost(samples, harmonics.numCoefficients(), dimensions, what.str(),
                                        scene.where("harmonics"));
+    // Far above the default (what the harmonics and the elements need): said with its cost.
+    response::checkSamplesCost(samples, recommended,
+                               "that harmonics up to " + std::to_string(harmonics.maxHarmonic()) +
+                                   " and these elements need (the default here)",
+                               harmonics, dimensions, scene.where("samples"));
   }
   setup.dofNames = in.dofNames;
   for (int d = int(setup.dofNames.size()); d < in.n; ++d) setup.dofNames.push_back("dof" + std::to_string(d));
@@ -285,6 +290,8 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
                                         "checks are those of these DOFs (give at least one)");
   setup.stability = readStability(out);
   setup.harmonicsCheckTo = readHarmonicsCheckTo(out, harmonics.maxHarmonic(), harmonicsTarget);
+  setup.harmonicsCheckKey =
+      harmonicsTarget.tolerance > 0 ? scene.where("harmonics_max") : out.where("harmonics_check_to");
   setup.harmonicsTolerance = harmonicsTarget.tolerance;
   out.rejectUnknownKeys();
   for (int d : setup.outputDofs)

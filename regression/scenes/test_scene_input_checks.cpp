@@ -15,6 +15,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/LogSink.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
 #include "cyclone/mesh/ShroudedSectorGenerator.hpp"
@@ -775,6 +776,100 @@ TEST(Scenes, HarmonicBalancesTooLargeForMemoryAreRefused) {
   EXPECT_NE(slow.find("the elements' Jacobians alone take about"), std::string::npos) << slow;
   EXPECT_NE(slow.find("use fewer harmonics"), std::string::npos) << slow;
   EXPECT_LT(timer.seconds(), 4.0);
+}
+
+// The cost of a sample count far above the need, and of a harmonics check to a high level,
+// said before the trace (issue 49: samples 65536 and harmonics_check_to 100 were accepted
+// without a word). The log's lines are taken in order up to the trace's first point, and
+// the run stopped there (every line taken came before any curve work), so that the
+// expensive scenes take seconds here.
+namespace {
+
+struct TraceReached {};
+
+// The lines up to the first that contains `stop` (that one too), the run stopped there.
+std::vector<std::string> linesUntil(const std::string& yaml, const fs::path& dir,
+                                    const std::string& stop = "forced response: first point") {
+  std::vector<std::string> lines;
+  log::setQuiet(false);
+  log::setSink([&lines, stop](log::Level level, const std::string& m) {
+    lines.push_back((level == log::Level::Warning ? "warning: " : "") + m);
+    if (m.find(stop) != std::string::npos) throw TraceReached{};
+  });
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  try {
+    scenes::runSceneText(yaml, "cost.yaml", o, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "'" << stop << "' was not said";
+  } catch (const TraceReached&) {
+  }
+  log::setSink({});
+  log::setQuiet(true);
+  return lines;
+}
+
+// The first line containing `text` (lines.size(): none).
+std::size_t lineWith(const std::vector<std::string>& lines, const std::string& text) {
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].find(text) != std::string::npos) return i;
+  return lines.size();
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string all;
+  for (const auto& l : lines) all += l + "\n";
+  return all;
+}
+
+}  // namespace
+
+TEST(Scenes, SamplesFarAboveTheNeedAreEstimatedBeforeTheTrace) {
+  // H = 40 with 65536 samples: 407 times the 161 the harmonics need, the spring's Jacobian
+  // about 0.19 s a Newton iteration by the cost model: a warning, before the trace.
+  const auto many = linesUntil(duffingSceneWith("  harmonics: \\[7\\]\n  samples: 64\n",
+                                                         "  harmonics: [40]\n  samples: 65536\n"),
+                                        freshDir("samples_cost_many"));
+  const std::size_t said = lineWith(many, "cyclone/samples': 65536 time samples per period are 407 times the 161");
+  ASSERT_LT(said, many.size()) << joined(many);
+  EXPECT_EQ(many[said].rfind("warning: ", 0), 0u) << many[said];
+  EXPECT_NE(many[said].find("the elements' Jacobians about 0.19 s a Newton iteration against 0.00047 s with 161 (an "
+                            "estimate"),
+            std::string::npos)
+      << many[said];
+  EXPECT_LT(said, lineWith(many, "forced response: ")) << joined(many);
+  // H = 7 with 65536: 1024 times the 64 needed, the Jacobian about 0.0066 s: said, no warning.
+  const auto cheap = linesUntil(duffingSceneWith("samples: 64", "samples: 65536"), freshDir("samples_cost_cheap"));
+  const std::size_t stated = lineWith(cheap, "cyclone/samples': 65536 time samples per period are 1024 times the 64");
+  ASSERT_LT(stated, cheap.size()) << joined(cheap);
+  EXPECT_NE(cheap[stated].rfind("warning: ", 0), 0u) << cheap[stated];
+  EXPECT_LT(stated, lineWith(cheap, "forced response: ")) << joined(cheap);
+  // A disc's samples, said before any FE work (the reduced models, the modes).
+  const auto disc = linesUntil(discResponseScene() + "    samples: 65536\n", freshDir("samples_cost_disc"),
+                               "time samples per period are");
+  EXPECT_NE(disc.back().find("disc_response/samples': 65536 time samples per period are 256 times the 256 that "
+                             "harmonics up to 1 and the friction contacts need (the automatic count)"),
+            std::string::npos)
+      << joined(disc);
+  for (const auto& l : disc) EXPECT_EQ(l.find("reduced model"), std::string::npos) << l;
+  // The scene as shipped: nothing of the kind.
+  const auto normal = linesUntil(duffingSceneWith("samples: 64", "samples: 64"), freshDir("samples_cost_normal"));
+  EXPECT_EQ(lineWith(normal, "time samples per period are"), normal.size()) << joined(normal);
+  EXPECT_EQ(lineWith(normal, "the harmonics check up to"), normal.size()) << joined(normal);
+  EXPECT_LT(lineWith(normal, "forced response: "), normal.size()) << joined(normal);
+}
+
+TEST(Scenes, AHarmonicsCheckToAHighLevelIsEstimatedBeforeTheTrace) {
+  const auto dir = freshDir("check_to_cost");
+  const auto lines = linesUntil(
+      duffingSceneWith("    dofs: \\[0\\]", "    dofs: [0]\n    harmonics_check_to: 100"), dir);
+  const std::size_t said = lineWith(lines, "cyclone/output/harmonics_check_to': the harmonics check up to H = 100 "
+                                           "(15 levels from H = 7");
+  ASSERT_LT(said, lines.size()) << joined(lines);
+  EXPECT_NE(lines[said].find("101 harmonics on 1 DOFs, 201 unknowns with 201 samples: a Newton iteration there "
+                             "about"),
+            std::string::npos)
+      << lines[said];
+  EXPECT_NE(lines[said].find("the dense LU"), std::string::npos) << lines[said];
 }
 
 // --mesh-size on a scene without the built-in sector was ignored, exit 0 (issue 49 probe).

@@ -141,6 +141,8 @@ response::ForcedResponseResult sweepDisc(response::ForcedResponseSetup& setup, d
   setup.omegaUnit = 2 * M_PI * fromHz;
   setup.stability = options.stability;
   setup.harmonicsKey = "disc_response/harmonics";
+  setup.harmonicsCheckKey =
+      options.harmonicsTolerance > 0 ? "disc_response/harmonics_max" : "disc_response/harmonics_check_to";
   setup.harmonicsCheckTo = options.harmonicsCheckTo;
   setup.harmonicsTolerance = options.harmonicsTolerance;
   setup.continuation = options.continuation;

@@ -452,6 +452,7 @@ ForcedResponseResult solveForcedResponse(ForcedResponseSetup& setup) {
                               setup.parameter == ForcedResponseSetup::Parameter::Rebuilt;
   checkSolverSize(*setup.system, setup.harmonicsKey,
                   formsTheMatrix ? continuation::ContinuationOptions::LinearSolver::Dense : setup.continuation.linearSolver);
+  checkHarmonicsCheckCost(setup);  // its top level's size and cost, before the trace
   // Stability asked for on a system whose mass matrix Hill's method cannot invert: refused
   // before the trace, not after it (issue 49).
   if (setup.stability == Stability::Always && massSingularForHill(setup))

@@ -58,21 +58,51 @@ SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::Branch
 // Jacobian and LU took about 1 s at 2349 unknowns on the default disc). Krylov steps
 // (the Jacobian's blocks) hold per harmonic two matrices of its 1 or 2 coefficients of
 // every DOF (the linear block and its LU), the elements' own Jacobians and GMRES's basis.
+// Krylov's preconditioner factors the linear block of every harmonic, dense over the
+// DOFs: (2/3) (2 DOFs)^3 flops each (a 3000-DOF matrix scene at H = 7 spent minutes on
+// its first one without a word; issue 49). About 10 Gflop/s here in single precision.
+// Each element's Jacobian is its sampled sensitivities projected onto the harmonics, a
+// dense product of 2 N (d nc)^2 flops, at about 4.5 Gflop/s (the default disc's 43
+// contacts at H = 48, 1024 samples: 1.6 s).
+double elementJacobianSeconds(int samples, int numCoefficients, const std::vector<int>& elementDimensions) {
+  constexpr double kFlopsPerSecond = 4.5e9;
+  double flops = 0;
+  for (int d : elementDimensions) flops += 2 * double(samples) * std::pow(double(d) * numCoefficients, 2);
+  return flops / kFlopsPerSecond;
+}
+
+NewtonStepEstimate estimateNewtonStep(int dofs, const hbm::HarmonicSet& harmonics, int samples,
+                                      const std::vector<int>& elementDimensions, bool hasJacobianBlocks,
+                                      continuation::ContinuationOptions::LinearSolver solver) {
+  NewtonStepEstimate e;
+  const double nc = harmonics.numCoefficients(), n = double(dofs) * nc;
+  e.unknowns = n;
+  using S = continuation::ContinuationOptions::LinearSolver;
+  e.krylov = hasJacobianBlocks && solver != S::Dense &&
+             (solver == S::Krylov || n >= continuation::ContinuationOptions::krylovFrom);
+  e.gigabytes = 4 * 8 * n * n / 1e9;
+  double elements = 0;
+  for (int d : elementDimensions) elements += std::pow(double(d) * nc, 2);
+  e.jacobianSeconds = elementJacobianSeconds(samples, harmonics.numCoefficients(), elementDimensions);
+  if (e.krylov) {
+    e.gigabytes = 8 * (2 * 4 * double(dofs) * dofs * harmonics.size() + elements +
+                       (continuation::KrylovOptions{}.restart + 10) * n) / 1e9;
+    e.solveSeconds = harmonics.size() * (2.0 / 3.0) * std::pow(2.0 * dofs, 3) / 1e10;
+  } else {
+    e.solveSeconds = std::pow(n / 2349.0, 3);
+  }
+  return e;
+}
+
 void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& harmonicsKey,
                      continuation::ContinuationOptions::LinearSolver solver) {
-  constexpr double kMaxGigabytes = 12, kSlowUnknowns = 5000;
-  const double n = hb.numUnknowns();
-  using S = continuation::ContinuationOptions::LinearSolver;
-  const bool krylov = hb.hasJacobianBlocks() && solver != S::Dense &&
-                      (solver == S::Krylov || n >= continuation::ContinuationOptions::krylovFrom);
-  double gigabytes = 4 * 8 * n * n / 1e9;
-  if (krylov) {
-    const double dofs = hb.numDofs(), nc = hb.numCoefficients();
-    double elements = 0;
-    for (const auto& e : hb.elements()) elements += std::pow(e.element->dimension() * nc, 2);
-    gigabytes = 8 * (2 * 4 * dofs * dofs * hb.aft().harmonics().size() + elements +
-                     (continuation::KrylovOptions{}.restart + 10) * n) / 1e9;
-  }
+  constexpr double kMaxGigabytes = kMaxSolverGigabytes, kSlowUnknowns = 5000;
+  std::vector<int> dimensions;
+  for (const auto& e : hb.elements()) dimensions.push_back(e.element->dimension());
+  const auto estimate = estimateNewtonStep(hb.numDofs(), hb.aft().harmonics(), hb.aft().numSamples(), dimensions,
+                                           hb.hasJacobianBlocks(), solver);
+  const double n = estimate.unknowns, gigabytes = estimate.gigabytes;
+  const bool krylov = estimate.krylov;
   std::ostringstream what;
   what.precision(3);
   what << hb.aft().harmonics().size() << " harmonics (up to " << hb.aft().harmonics().maxHarmonic() << ") on "
@@ -82,12 +112,9 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& ha
          << " would take " << gigabytes << " GB (at most " << kMaxGigabytes << " here); use fewer harmonics";
     throw InputError(harmonicsKey, what.str());
   }
-  // Krylov's preconditioner factors the linear block of every harmonic, dense over the
-  // DOFs: (2/3) (2 DOFs)^3 flops each (a 3000-DOF matrix scene at H = 7 spent minutes on
-  // its first one without a word; issue 49). About 10 Gflop/s here in single precision.
   if (krylov) {
     const double dofs = hb.numDofs();
-    const double seconds = hb.aft().harmonics().size() * (2.0 / 3.0) * std::pow(2 * dofs, 3) / 1e10;
+    const double seconds = estimate.solveSeconds;
     if (seconds > 600)
       throw InputError(harmonicsKey, what.str() + ": the Newton steps' preconditioner factors a dense " +
                                          std::to_string(2 * int(dofs)) + "-square block per harmonic, about " +
@@ -100,9 +127,7 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& hb, const std::string& ha
   }
   if (!krylov && n > kSlowUnknowns)
     log::warn(what.str() + ": each Newton iteration factors a dense Jacobian of that size (about " +
-              std::to_string(std::max(1, int(std::pow(n / 2349.0, 3)))) + " s each, from 1 s at 2349)");
-  std::vector<int> dimensions;
-  for (const auto& e : hb.elements()) dimensions.push_back(e.element->dimension());
+              std::to_string(std::max(1, int(estimate.solveSeconds))) + " s each, from 1 s at 2349)");
   checkElementJacobianCost(hb.aft().numSamples(), hb.numCoefficients(), dimensions, what.str(), harmonicsKey);
 }
 
@@ -114,10 +139,8 @@ void checkElementJacobianCost(int samples, int numCoefficients, const std::vecto
                               const std::string& what, const std::string& harmonicsKey) {
   // Said from 2 s an iteration: a harmonics check up to H = 100 on the coarsest demo disc,
   // 7 s an iteration at its top level, ran for minutes without a word (issue 49).
-  constexpr double kFlopsPerSecond = 4.5e9, kSlowSeconds = 2, kRefusedSeconds = 600;
-  double flops = 0;
-  for (int d : elementDimensions) flops += 2 * double(samples) * std::pow(double(d) * numCoefficients, 2);
-  const double seconds = flops / kFlopsPerSecond;
+  constexpr double kSlowSeconds = 2, kRefusedSeconds = 600;
+  const double seconds = elementJacobianSeconds(samples, numCoefficients, elementDimensions);
   if (seconds <= kSlowSeconds) return;
   std::ostringstream text;
   text.precision(3);
@@ -142,12 +165,15 @@ hbm::HarmonicSet withHarmonicsUpTo(const hbm::HarmonicSet& set, int H) {
   for (int h = set.maxHarmonic() + 1; h <= H; ++h) list.push_back(h);
   return hbm::HarmonicSet(list);
 }
-std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
-                                                         const hbm::HarmonicSet& raised) {
+// The samples of a raised level: the system's, or more where the raised harmonics need them.
+int raisedSamples(const hbm::HarmonicBalanceSystem& hb, const hbm::HarmonicSet& raised) {
   bool nonsmooth = false;  // friction or contacts: samples that grow with the harmonics (HarmonicSet::nonsmoothSamples)
   for (const auto& e : hb.elements()) nonsmooth = nonsmooth || e.element->recommendedSamples() > 0;
-  const int samples = std::max(hb.aft().numSamples(), nonsmooth ? raised.nonsmoothSamples() : raised.minimumSamples());
-  auto system = hbm::withHarmonics(hb, raised, samples);
+  return std::max(hb.aft().numSamples(), nonsmooth ? raised.nonsmoothSamples() : raised.minimumSamples());
+}
+std::unique_ptr<hbm::HarmonicBalanceSystem> raisedSystem(const hbm::HarmonicBalanceSystem& hb,
+                                                         const hbm::HarmonicSet& raised) {
+  auto system = hbm::withHarmonics(hb, raised, raisedSamples(hb, raised));
   checkSolverSize(*system, "harmonics_check_to");
   return system;
 }
@@ -474,6 +500,91 @@ void checkResponseScale(const ForcedResponseSetup& setup, const Eigen::VectorXd&
       << "largest coefficient is " << force << ", and a response is linear in a force that small: scale the force "
       << "up (by 1e150 gives the response times 1e150)";
   throw InputError("excitation", why.str());
+}
+
+namespace {
+std::string secondsText(double seconds) {
+  std::ostringstream text;
+  text.precision(2);
+  text << seconds << " s";
+  return text.str();
+}
+}  // namespace
+
+// Samples far above the need multiply every residual and Jacobian of the elements and buy
+// nothing once the events of the element laws are placed: the excess and its cost, by the
+// elements' Jacobian model above (issue 49: samples 65536 ran for a long time without a
+// word).
+void checkSamplesCost(int samples, int needed, const std::string& neededWhy, const hbm::HarmonicSet& harmonics,
+                      const std::vector<int>& elementDimensions, const std::string& samplesKey) {
+  if (needed <= 0 || samples < kSamplesExcessFactor * needed) return;
+  const int nc = harmonics.numCoefficients();
+  const double at = elementJacobianSeconds(samples, nc, elementDimensions),
+               atNeeded = elementJacobianSeconds(needed, nc, elementDimensions);
+  std::ostringstream text;
+  text << samplesKey << ": " << samples << " time samples per period are " << samples / needed
+       << " times the " << needed << " " << neededWhy
+       << "; every residual and Jacobian of the elements costs in proportion to the samples: the elements' Jacobians "
+       << "about " << secondsText(at) << " a Newton iteration against " << secondsText(atNeeded) << " with "
+       << needed << " (an estimate, 2 N (d nc)^2 flops each at about 4.5 Gflop/s), and each curve point takes one "
+       << "Newton iteration or more; the samples check solves the peak again with " << 2 * samples;
+  if (at >= kSamplesSlowSeconds)
+    log::warn(text.str() + ": fewer samples, or leave samples out for the default");
+  else
+    log::info(text.str());
+}
+
+// The harmonics check's top level, from the same estimates as checkSolverSize: said before
+// the trace where the check goes beyond H + 1 (issue 49: harmonics_check_to 100 was
+// accepted without a word), refused where the level would not fit in memory or one Newton
+// iteration there would pass 10 minutes.
+void checkHarmonicsCheckCost(const ForcedResponseSetup& setup) {
+  if (setup.harmonicsCheckTo < 0 || setup.parameter != ForcedResponseSetup::Parameter::Omega ||
+      setup.outputDofs.empty())
+    return;
+  const auto& hb = *setup.system;
+  const auto& set = hb.aft().harmonics();
+  const int top = std::max(setup.harmonicsCheckTo, set.maxHarmonic() + 1);
+  if (top <= set.maxHarmonic() + 1) return;  // one raise: about the curve's own cost
+  int levels = 0;
+  for (int H = set.maxHarmonic(); H <= top; H = nextHarmonicLevel(H, top)) ++levels;
+  const hbm::HarmonicSet raised = withHarmonicsUpTo(set, top);
+  const int samples = raisedSamples(hb, raised);
+  std::vector<int> dimensions;
+  for (const auto& e : hb.elements()) dimensions.push_back(e.element->dimension());
+  const auto e = estimateNewtonStep(hb.numDofs(), raised, samples, dimensions, hb.hasJacobianBlocks(),
+                                    setup.continuation.linearSolver);
+  std::ostringstream what;
+  what.precision(3);
+  what << "the harmonics check up to H = " << top
+       << (setup.harmonicsTolerance > 0 ? " at most (harmonics: auto stops where the target is met)" : "") << " (" << levels
+       << " levels from H = " << set.maxHarmonic() << ", each a peak search of Newton solves) has at its top "
+       << raised.size() << " harmonics on " << hb.numDofs() << " DOFs, " << long(e.unknowns) << " unknowns with "
+       << samples << " samples";
+  if (e.gigabytes > kMaxSolverGigabytes) {
+    what << ": the " << (e.krylov ? "Jacobian's blocks and GMRES's basis" : "dense Jacobian and its factors")
+         << " would take " << e.gigabytes << " GB (at most " << kMaxSolverGigabytes
+         << " here); check to a lower harmonic";
+    throw InputError(setup.harmonicsCheckKey, what.str());
+  }
+  std::ostringstream cost;
+  cost << ": a Newton iteration there about " << secondsText(e.jacobianSeconds + e.solveSeconds)
+       << " (an estimate: the elements' Jacobians " << secondsText(e.jacobianSeconds)
+       << " by 2 N (d nc)^2 flops each at about 4.5 Gflop/s, ";
+  if (e.krylov)
+    cost << "Krylov's preconditioner " << secondsText(e.solveSeconds) << " by a dense " << 2 * hb.numDofs()
+         << "-square LU per harmonic at about 10 Gflop/s)";
+  else
+    cost << "the dense LU " << secondsText(e.solveSeconds) << " by (n / 2349)^3 s, from 1 s at 2349 unknowns)";
+  const double seconds = e.jacobianSeconds + e.solveSeconds;
+  if (e.jacobianSeconds > 600 || (e.krylov && e.solveSeconds > 600)) {
+    throw InputError(setup.harmonicsCheckKey, what.str() + cost.str() + "; check to a lower harmonic");
+  }
+  const std::string said = setup.harmonicsCheckKey + ": " + what.str() + cost.str();
+  if (seconds > 2)
+    log::warn(said + "; a lower harmonic to check to keeps each level's Newton solves shorter");
+  else
+    log::info(said);
 }
 
 }  // namespace cyclone::response

@@ -93,6 +93,46 @@ void checkSolverSize(const hbm::HarmonicBalanceSystem& system, const std::string
                      continuation::ContinuationOptions::LinearSolver solver =
                          continuation::ContinuationOptions::LinearSolver::Auto);
 
+/// What one Newton iteration of a harmonic balance holds and costs, by the models the
+/// checks here share (estimates from flop counts at rates measured once on the default
+/// disc, not timings of this run): the unknowns; whether its steps are Krylov's (the
+/// system has Jacobian blocks and `solver` chooses them, Auto from krylovFrom unknowns);
+/// the memory of the dense Jacobian and its factors, or of Krylov's blocks and GMRES's
+/// basis; the seconds of the elements' Jacobians (2 N (d nc)^2 flops each at about 4.5
+/// Gflop/s) and of the linear solve (the dense LU (n / 2349)^3 s, from 1 s at 2349
+/// unknowns; Krylov's preconditioner (2/3) (2 DOFs)^3 flops per harmonic at about 10
+/// Gflop/s).
+struct NewtonStepEstimate {
+  double unknowns = 0;
+  bool krylov = false;
+  double gigabytes = 0;
+  double jacobianSeconds = 0;
+  double solveSeconds = 0;
+};
+NewtonStepEstimate estimateNewtonStep(int dofs, const hbm::HarmonicSet& harmonics, int samples,
+                                      const std::vector<int>& elementDimensions, bool hasJacobianBlocks,
+                                      continuation::ContinuationOptions::LinearSolver solver);
+/// The elements' Jacobians' seconds per Newton iteration: 2 N (d nc)^2 flops each at about
+/// 4.5 Gflop/s.
+double elementJacobianSeconds(int samples, int numCoefficients, const std::vector<int>& elementDimensions);
+/// More memory than this for a Newton step's solver is refused.
+constexpr double kMaxSolverGigabytes = 12;
+
+/// A sample count from kSamplesExcessFactor times `needed` (what the harmonics and the
+/// elements need, `neededWhy` saying so) is said with its cost before any work: the
+/// elements' Jacobians per Newton iteration at `samples` and at `needed`; a warning where
+/// that reaches kSamplesSlowSeconds, else an info line. Messages begin with `samplesKey`.
+void checkSamplesCost(int samples, int needed, const std::string& neededWhy, const hbm::HarmonicSet& harmonics,
+                      const std::vector<int>& elementDimensions, const std::string& samplesKey);
+constexpr int kSamplesExcessFactor = 8;
+constexpr double kSamplesSlowSeconds = 0.1;
+
+/// A frequency curve's harmonics check beyond H + 1 (setup.harmonicsCheckTo): its levels
+/// and the Newton iteration's cost at its top level (estimateNewtonStep) said before the
+/// trace, a warning from 2 s an iteration; an InputError naming setup.harmonicsCheckKey
+/// where the top level would not fit in memory or an iteration there would pass 600 s.
+void checkHarmonicsCheckCost(const ForcedResponseSetup& setup);
+
 /// The elements' Jacobians' cost per Newton iteration (each element's sampled sensitivities
 /// projected onto the harmonics, 2 samples (d numCoefficients)^2 flops): a warning over
 /// 10 s, an InputError naming `harmonicsKey` over 600 s. `what` begins the message (the

@@ -68,6 +68,9 @@ struct ForcedResponseSetup {
   /// The scene key that sets the harmonics, for the message when the harmonic balance
   /// would not fit in memory.
   std::string harmonicsKey = "harmonics";
+  /// The scene key that sets the harmonics check's highest level (harmonics_check_to, or
+  /// harmonics_max for harmonics by an error target), for the messages of its cost.
+  std::string harmonicsCheckKey = "harmonics_check_to";
   /// What the scene's reading found worth saying (e.g. how an engine order folds onto a
   /// nodal diameter); the run's summary lists them.
   std::vector<std::string> notes;
