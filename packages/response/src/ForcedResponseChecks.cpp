@@ -559,7 +559,7 @@ void checkHarmonicsCheckCost(const ForcedResponseSetup& setup) {
   what << "the harmonics check up to H = " << top
        << (setup.harmonicsTolerance > 0 ? " at most (harmonics: auto stops where the target is met)" : "") << " (" << levels
        << " levels from H = " << set.maxHarmonic() << ", each a peak search of Newton solves) has at its top "
-       << raised.size() << " harmonics on " << hb.numDofs() << " DOFs, " << long(e.unknowns) << " unknowns with "
+       << raised.size() << " harmonics on " << hb.numDofs() << (hb.numDofs() == 1 ? " DOF, " : " DOFs, ") << long(e.unknowns) << " unknowns with "
        << samples << " samples";
   if (e.gigabytes > kMaxSolverGigabytes) {
     what << ": the " << (e.krylov ? "Jacobian's blocks and GMRES's basis" : "dense Jacobian and its factors")
