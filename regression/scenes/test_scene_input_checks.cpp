@@ -865,7 +865,7 @@ TEST(Scenes, AHarmonicsCheckToAHighLevelIsEstimatedBeforeTheTrace) {
   const std::size_t said = lineWith(lines, "cyclone/output/harmonics_check_to': the harmonics check up to H = 100 "
                                            "(15 levels from H = 7");
   ASSERT_LT(said, lines.size()) << joined(lines);
-  EXPECT_NE(lines[said].find("101 harmonics on 1 DOFs, 201 unknowns with 201 samples: a Newton iteration there "
+  EXPECT_NE(lines[said].find("101 harmonics on 1 DOF, 201 unknowns with 201 samples: a Newton iteration there "
                              "about"),
             std::string::npos)
       << lines[said];
