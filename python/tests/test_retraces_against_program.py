@@ -103,3 +103,7 @@ def test_a_curves_retraces_are_the_programs(cyclone_program, tmp_path, engine, s
         assert r == cyclone.Retraces(cyclone.ContinuationEngine.PREDICTOR_CORRECTOR, False, 1, ())
     with pytest.raises(AttributeError):  # frozen
         r.samples_factor = 2
+
+
+def test_every_engine_has_its_name():
+    assert {engine.value for engine in cyclone.ContinuationEngine} == set(cyclone._core.engine_names)
