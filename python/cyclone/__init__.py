@@ -19,10 +19,11 @@ from .damping import modal_damping
 from .elements import CubicSpring, Element, Friction2D, Friction3D, Jenkins, QuadraticDamper, UnilateralSpring
 from .errors import InputError, SolverError
 from .peaks import FollowedPeaks, PeakFollowingEnd
-from .response import BranchEnd, ForcedResponse, Peak
+from .response import BranchEnd, ContinuationEngine, ForcedResponse, Peak, Retraces
 from .system import HarmonicBalance
 
 __all__ = [
-    "BranchEnd", "CubicSpring", "disc", "Element", "FollowedPeaks", "ForcedResponse", "Friction2D", "Friction3D", "HarmonicBalance",
-    "InputError", "Jenkins", "modal_damping", "Peak", "PeakFollowingEnd", "QuadraticDamper", "SolverError", "UnilateralSpring",
+    "BranchEnd", "ContinuationEngine", "CubicSpring", "disc", "Element", "FollowedPeaks", "ForcedResponse", "Friction2D",
+    "Friction3D", "HarmonicBalance", "InputError", "Jenkins", "modal_damping", "Peak", "PeakFollowingEnd", "QuadraticDamper",
+    "Retraces", "SolverError", "UnilateralSpring",
 ]

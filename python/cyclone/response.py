@@ -35,6 +35,29 @@ class BranchEnd(enum.Enum):
         return self in (BranchEnd.RANGE_END, BranchEnd.MET_FROM_THE_END, BranchEnd.SINGLE_POINT)
 
 
+class ContinuationEngine(enum.Enum):
+    """A continuation engine (continuation::ContinuationOptions::Engine), by its name in scenes."""
+
+    PREDICTOR_CORRECTOR = "predictor_corrector"  # Cyclone's own
+    LOCA = "loca"  # Trilinos LOCA
+
+
+@dataclass(frozen=True)
+class Retraces:
+    """How a curve that needed more than one trace was obtained (continuation::Branch::retraces);
+    stop_reason says the same in words. A curve traced once: its engine, False, 1, ()."""
+
+    engine: ContinuationEngine  # the engine whose trace the curve is
+    other_engine_tried: bool  # the other engine traced it again because one left it incomplete
+    samples_factor: int  # the kept trace's AFT samples as a multiple of the system's (1: the system's)
+    samples_factors_tried: tuple  # every multiple tried beyond 1 (2, then 4), in order
+
+    @classmethod
+    def _from_raw(cls, raw):
+        return cls(ContinuationEngine(raw["engine"]), bool(raw["other_engine_tried"]), int(raw["samples_factor"]),
+                   tuple(int(f) for f in raw["samples_factors_tried"]))
+
+
 @dataclass(frozen=True)
 class Peak:
     """The largest max |x(t)| of the first output DOF on the curve (located on the path, not
@@ -53,7 +76,9 @@ class ForcedResponse:
     output_dofs[k]), stable[i] (1 stable, 0 unstable, 2 undetermined, -1 not computed),
     leading_exponent[i] (Floquet exponent of largest real part, nan if none), flags[i] ("fold",
     "branch_point", "period_doubling", "neimark_sacker", "turn" or ""), segment[i] (which sweep).
-    end (a BranchEnd) and stop_reason say how the trace ended; peak is the largest response."""
+    end (a BranchEnd) and stop_reason say how the trace ended; retraces (a Retraces) whether it
+    was traced again, with the other engine or more AFT samples, and which trace was kept; peak
+    is the largest response."""
 
     def __init__(self, raw, harmonics, num_dofs, output_dofs):
         self.harmonics = list(harmonics)
@@ -70,6 +95,7 @@ class ForcedResponse:
         self.segment = raw["segment"]
         self.end = BranchEnd(raw["end"])
         self.stop_reason = raw["stop_reason"]
+        self.retraces = Retraces._from_raw(raw["retraces"])
         self.start_method = raw["start_method"]
         self.stability_computed = raw["stability_computed"]
         self.stability_note = raw["stability_note"]

@@ -69,6 +69,11 @@ py::dict curveArrays(const hbm::HarmonicBalanceSystem& system, const std::vector
   d["segment"] = py::array(py::cast(r.segment));
   d["end"] = continuation::branchEndName(r.branch.end);
   d["stop_reason"] = r.branch.stopReason;
+  const auto& retraces = r.branch.retraces;
+  d["retraces"] = py::dict(py::arg("engine") = continuation::engineKey(retraces.engine),
+                           py::arg("other_engine_tried") = retraces.otherEngineTried,
+                           py::arg("samples_factor") = retraces.samplesFactor,
+                           py::arg("samples_factors_tried") = py::cast(retraces.samplesFactorsTried));
   d["finished"] = r.branch.finished;
   d["start_method"] = r.startMethod;
   d["stability_computed"] = r.stabilityComputed;

@@ -56,6 +56,9 @@ void bindForcedResponse(py::module_& m) {
                       BranchEnd::StartFailed, BranchEnd::EngineStopped})
     ends.push_back(continuation::branchEndName(e));
   m.attr("branch_end_names") = ends;
+  using Engine = continuation::ContinuationOptions::Engine;
+  m.attr("engine_names") = std::vector<std::string>{continuation::engineKey(Engine::PredictorCorrector),
+                                                    continuation::engineKey(Engine::Loca)};
 }
 
 }  // namespace cyclone::python

@@ -25,6 +25,14 @@ const char* branchEndName(BranchEnd end) {
   return "unknown";
 }
 
+const char* engineKey(ContinuationOptions::Engine engine) {
+  switch (engine) {
+    case ContinuationOptions::Engine::PredictorCorrector: return "predictor_corrector";
+    case ContinuationOptions::Engine::Loca: return "loca";
+  }
+  return "unknown";
+}
+
 std::string noConvergedStart(const NewtonResult& start, double tolerance) {
   std::ostringstream why;
   why << "no converged solution at the start of the range: Newton with line search from the guess stopped at ||R|| = "

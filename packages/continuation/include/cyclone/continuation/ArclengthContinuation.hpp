@@ -180,6 +180,9 @@ enum class BranchEnd {
 };
 /// The outcome's name in files ("range_end", "wall", ...).
 const char* branchEndName(BranchEnd end);
+/// The engine's name in scenes and files ("predictor_corrector", "loca": a scene's
+/// continuation/engine key).
+const char* engineKey(ContinuationOptions::Engine engine);
 
 struct Branch {
   std::vector<BranchPoint> points;
