@@ -344,16 +344,19 @@ public:
     Eigen::RowVectorXd dn = Eigen::RowVectorXd::Zero(s);
     dn(dt_) = 1;
     StepSensitivity sens{&dwt, &dn, &dz, &df, &dTrial};
-    Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(dt_, dt_);
-    Eigen::VectorXd fi(d_);
+    // Work made once: the march over the samples allocates nothing.
+    Eigen::Matrix2d phi = Eigen::Matrix2d::Identity(), Zz;
+    Eigen::VectorXd fi(d_), wt(dt_);
     for (int i = 0; i < N_; ++i) {
       dz.setZero();
       dz.rightCols(dt_).setIdentity();
-      contactStep(p, w.row(i).head(dt_).transpose(), w(i, dt_), z, fi, &sens);
+      wt = w.row(i).head(dt_).transpose();
+      contactStep(p, wt, w(i, dt_), z, fi, &sens);
       auto S = step(i);
       S.topRows(d_) = df;
       S.bottomRows(dt_) = dz;
-      phi = dz.rightCols(dt_) * phi;
+      Zz = dz.rightCols<2>();
+      phi = (Zz * phi).eval();
     }
     start_.compute(Eigen::Matrix2d::Identity() - phi);
     w_.resize(N_, d_), f_.resize(N_, d_);
