@@ -384,8 +384,6 @@ public:
     for (int c = 0; c < 3; ++c) aft_.toFrequency(f_.col(c).data(), dF.col(c).data());
   }
 
-  long storedNumbers() const override { return long(steps_.size()); }
-
   Eigen::MatrixXd harmonicBlock(const std::vector<int>& slots) const override {
     const int m = int(slots.size());
     const Eigen::MatrixXd &E = aft_.timeFromCoefficients(), &P = aft_.coefficientsFromTime();

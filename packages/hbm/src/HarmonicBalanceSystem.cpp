@@ -582,13 +582,13 @@ std::unique_ptr<JacobianBlocks> HarmonicBalanceSystem::jacobianBlocks(const Eige
     if (across) Wc.noalias() += S * (Xm * c.Wnext);
     JacobianBlocks::ElementBlock b;
     b.element = i;
-    if (elementJacobians != ElementJacobians::Formed) {
+    // Decided before either is made: a linearization made and then dropped would march
+    // the period once more for nothing (at low H, where the formed one is kept).
+    const long formedNumbers = long(c.element->dimension()) * nc * c.element->dimension() * nc;
+    const long tangentNumbers = c.element->linearizationNumbers(*aft_);
+    if (elementJacobians == ElementJacobians::Tangents ||
+        (elementJacobians == ElementJacobians::Automatic && tangentNumbers > 0 && tangentNumbers < formedNumbers))
       b.linearization = c.element->linearization(*aft_, Wc, omega);
-      const long formedNumbers = long(c.element->dimension()) * nc * c.element->dimension() * nc;
-      if (b.linearization && elementJacobians == ElementJacobians::Automatic &&
-          b.linearization->storedNumbers() >= formedNumbers)
-        b.linearization.reset();
-    }
     if (!b.linearization) c.element->harmonicForce(*aft_, Wc, omega, F, &b.jacobian);
     for (int a = 0; a < n; ++a)
       if (c.W.row(a).squaredNorm() > 0 || (across && c.Wnext.row(a).squaredNorm() > 0)) b.support.push_back(a);

@@ -22,9 +22,6 @@ public:
   /// coordinate k and the r-th slot: the law's instantaneous tangent at each sample
   /// (its memory of earlier samples left out), projected onto the harmonic.
   virtual Eigen::MatrixXd harmonicBlock(const std::vector<int>& slots) const = 0;
-  /// How many numbers it holds (what a product reads), against the formed Jacobian's
-  /// (d nc)^2: ElementJacobians::Automatic keeps the smaller.
-  virtual long storedNumbers() const = 0;
 };
 
 /// How a Jacobian kept as blocks holds its elements' Jacobians: Automatic, by an element's

@@ -54,6 +54,10 @@ public:
   /// where the period's start did not settle or is not an isolated fixed point.
   std::unique_ptr<ElementLinearization> linearization(const Aft& aft, const Eigen::MatrixXd& W,
                                                       double omega) const override;
+  /// A 3D contact's tangent: a 5 x 5 step matrix per sample; 0 for a 2D contact.
+  long linearizationNumbers(const Aft& aft) const override {
+    return p_.tangentialDirections == 2 ? 25L * aft.numSamples() : 0;
+  }
   /// The sampled contact law itself (stick, slip and lift-off corners intact).
   Eigen::MatrixXd forceSamples(const Aft& aft, const Eigen::MatrixXd& W, double omega) const override;
   int stateSize() const override { return p_.tangentialDirections; }

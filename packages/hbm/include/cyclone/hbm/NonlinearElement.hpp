@@ -43,6 +43,13 @@ public:
     (void)aft, (void)W, (void)omega;
     return nullptr;
   }
+  /// How many numbers its linearization holds at the Aft's samples (what a product
+  /// reads), 0 where it has none: ElementJacobians::Automatic takes it only where that is
+  /// fewer than the formed Jacobian's (d nc)^2, decided before either is made.
+  virtual long linearizationNumbers(const Aft& aft) const {
+    (void)aft;
+    return 0;
+  }
 
   /// The force at the Aft's time samples (numSamples x d) for the motion W:
   /// the time signal whose harmonics harmonicForce returns, before that
