@@ -23,7 +23,7 @@
 #include "cyclone/mesh/ExodusIO.hpp"
 #include "cyclone/post/PeakStressFiles.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
-#include "SceneStages.hpp"
+#include "DiscStages.hpp"
 #include "cyclone/disc/DiscPeakVibration.hpp"
 #include "cyclone/disc/DiscPointStates.hpp"
 #include "cyclone/post/DiscPointFiles.hpp"
@@ -97,7 +97,7 @@ std::string number(double v, int digits = 4) { return numberText(v, digits); }
 
 void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const DiscReducedModels& models,
                      const DiscModelSpec& modelSpec, const PeakPoint& point, double excitationScale,
-                     const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+                     bool afterHeadline, const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
   if (!spec.run) return;
   Timer timer;
   const auto peak = disc::solveDiscPeakVibration(mesh, models, modelSpec, point, excitationScale,
@@ -121,10 +121,7 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
   if (map) {
     const auto& c = map->cycle[map->critical];
     const auto& p = mesh.coords[map->critical];
-    std::vector<std::size_t> order(map->cycle.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](auto a, auto b) { return map->safetyFactor[a] < map->safetyFactor[b]; });
+    const auto order = map->nodesWorstFirst();
     std::ostringstream line;
     const auto& m = spec.material;
     line << "fatigue margin at " << point.what << ": critical node " << mesh.nodeIds[map->critical] << " at ("
@@ -138,9 +135,7 @@ void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const D
     if (m.yieldStrength > 0) line << ", S_y " << number(m.yieldStrength);
     line << " " << spec.stressUnit << "; " << m.source << ")";
     if (!point.caveat.empty()) line << "; " << point.caveat;
-    // After the headline peak, when there is one.
-    const bool headline = !summary.computed.empty() && summary.computed.front().rfind("friction-damped peak", 0) == 0;
-    summary.computed.insert(summary.computed.begin() + (headline ? 1 : 0), line.str());
+    summary.computed.insert(summary.computed.begin() + (afterHeadline ? 1 : 0), line.str());
     log::info(line.str());
     if (comm->getRank() == 0) {
       post::writeFatigueNodeTable(outDir + "/disc_peak_stress.csv", mesh, *map, order);
@@ -178,11 +173,14 @@ void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, c
                         "disc_time_response.csv", "disc_time_response.svg"})
     summary.written.push_back(outDir + "/" + f);
   const auto& ps = plan.peakStress;
+  // The reference stage put the headline first in the summary when it found a peak.
+  const bool afterHeadline = solved.headline.found();
   if (ps.atHz > 0)
     writePeakStress(ps, mesh, models, plan.modelSpec, disc::referencePointAt(setup, solved.curve, ps.atHz),
-                    setup.excitationScale, outDir, comm, summary);
+                    setup.excitationScale, afterHeadline, outDir, comm, summary);
   else
-    writePeakStress(ps, mesh, models, plan.modelSpec, point, setup.excitationScale, outDir, comm, summary);
+    writePeakStress(ps, mesh, models, plan.modelSpec, point, setup.excitationScale, afterHeadline, outDir, comm,
+                    summary);
 }
 
 }  // namespace cyclone::scenes

@@ -1,5 +1,6 @@
-// The disc scene's keys (reduced_model, disc_response) read into the disc library's
-// specs and checked before any FE work (docs/scenes.md).
+// The disc scene's keys read into the disc library's specs and checked before any FE
+// work (docs/scenes.md): reduced_model here, with the plan of the whole disc chain;
+// disc_response's own keys in DiscResponseReaders.cpp.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -7,7 +8,7 @@
 #include <optional>
 #include <sstream>
 
-#include "SceneStages.hpp"
+#include "DiscStages.hpp"
 #include "cyclone/response/ForcedResponseChecks.hpp"
 #include "cyclone/hbm/HarmonicSet.hpp"
 
@@ -33,9 +34,6 @@
 namespace cyclone::scenes {
 
 namespace {
-
-Eigen::Vector3d toEigen(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-
 
 DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Mesh& mesh, int builtInSectors,
                             std::string& cache) {
@@ -73,27 +71,17 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   const double loadsRpm = loads.speedRpm;
   // The models' prestress spins the sector about the cyclic axis: a speed's axis given
   // elsewhere in loads changed nothing without a word (issue 49's fourth probe).
-  {
-    const Eigen::Vector3d a = spec.axis.direction.normalized(), b = loads.axis.direction.normalized();
-    const double size = std::max(1.0, (loads.axis.point - spec.axis.point).norm());
-    if (a.cross(b).norm() > 1e-9 || a.cross(loads.axis.point - spec.axis.point).norm() > 1e-9 * size)
-      throw InputError(scene.where("loads/axis_direction"),
-                       "the speed's axis differs from the cyclic symmetry's (cyclic/axis_point, cyclic/axis_direction): "
-                       "the disc's reduced models spin about the cyclic axis; give the same axis in both, or leave "
+  if (!mesh::sameRotationLine(spec.axis, loads.axis))
+    throw InputError(scene.where("loads/axis_direction"),
+                     "the speed's axis differs from the cyclic symmetry's (cyclic/axis_point, cyclic/axis_direction): "
+                     "the disc's reduced models spin about the cyclic axis; give the same axis in both, or leave "
                        "loads' out");
-  }
   spec.kind = disc::reducedModelKindFromName(r.getString("kind", "hybrid"), r.where("kind"));
   spec.retainedNodeSets = r.getStringList("retained_node_sets", spec.retainedNodeSets);
   if (spec.retainedNodeSets.empty())
     throw InputError(r.where("retained_node_sets"), "is empty: a reduced model needs the node sets it keeps "
                                                     "(the contact faces and the excited node; leave it out for them)");
-  for (const auto& name : spec.retainedNodeSets) {
-    try {
-      mesh.nodeSet(name);
-    } catch (const InputError& e) {
-      throw InputError(r.where("retained_node_sets"), e.problem());
-    }
-  }
+  for (const auto& name : spec.retainedNodeSets) r.underKey("retained_node_sets", [&] { mesh.nodeSet(name); });
   spec.modes = r.getInt("modes", spec.modes);
   // The eigen-solver's space, about 3 modes vectors, must fit in the sector's DOFs: 10000
   // reached Anasazi and came back as its "Num Blocks must be strictly positive" (issue 49).
@@ -128,82 +116,6 @@ DiscModelSpec readModelSpec(SceneSection& scene, SceneSection& r, const mesh::Me
   return spec;
 }
 
-DiscResponseSpec readResponseSpec(SceneSection& d) {
-  DiscResponseSpec spec;
-  spec.engineOrder = d.getInt("engine_order", 0);
-  if (!d.has("engine_order"))
-    throw InputError(d.where("engine_order"), d.requiredText("engine_order") + " (the excitation's engine order)");
-  spec.harmonics = readHarmonicList(d, 3);
-  // The engine-order excitation acts on harmonic 1: [0, 2] was refused only after the
-  // reduced models, as "excitation: harmonic 1 is not in the harmonic set" (a fifth probe).
-  if (std::find(spec.harmonics.begin(), spec.harmonics.end(), 1) == spec.harmonics.end())
-    throw InputError(d.where("harmonics"), "must contain harmonic 1: the engine-order excitation acts on it");
-  spec.samples = d.getInt("samples", 0);
-  {
-    // Enough for the highest harmonic given (a harmonics check or target raises it, and
-    // its samples with it where the count is automatic), and for the friction law: the
-    // 3D contact's sampled law is first order in the spacing (4e-3 of the force at 256
-    // samples), so below 32 its error passes a few percent (3 samples traced a curve of
-    // nonsense, exit 0; issue 49).
-    int top = 0;
-    for (int h : spec.harmonics) top = std::max(top, h);
-    constexpr int kFrictionSamples = 32;
-    const int least = std::max(2 * top + 1, kFrictionSamples);
-    if (spec.samples != 0 && (spec.samples < least || spec.samples > kMaxSamples))
-      throw InputError(d.where("samples"), std::to_string(spec.samples) + ": must lie in " + std::to_string(least) +
-                                               ".." + std::to_string(kMaxSamples) + " time samples per period (2 H + 1 "
-                                               "resolve harmonic H = " + std::to_string(top) + ", and the friction "
-                                               "contacts need at least 32; 0 or left out: the automatic count)");
-  }
-  auto c = d.section("contact");
-  auto& ct = spec.contact;
-  ct.leftSet = c.getString("left_node_set", ct.leftSet);
-  ct.rightSet = c.getString("right_node_set", ct.rightSet);
-  // kn, kt and preload per node pair, or per unit area of the interface (kn, kt in N/mm^3,
-  // preload the interface's total load): ShroudContactSpec::Law.
-  const std::string law = c.getString("law", "per_area");
-  if (law == "per_area") ct.law = disc::ShroudContactSpec::Law::PerArea;
-  else if (law == "per_pair") {
-    // The thesis' stiffness per contact element (Scalvini 2021, Table 8.4), the per-area
-    // default's source, where kn or kt is not given.
-    ct.law = disc::ShroudContactSpec::Law::PerPair;
-    ct.kn = ct.kt = 1e4;
-  } else
-    throw InputError(c.where("law"), "'" + law + "': per_pair (kn, kt in N/mm and the preload per node pair) or "
-                                     "per_area (kn, kt in N/mm^3 and the interface's total preload in N, spread by "
-                                     "each node's tributary area)");
-  ct.kn = c.getDouble("kn", ct.kn);
-  ct.kt = c.getDouble("kt", ct.kt);
-  ct.mu = c.getDouble("mu", ct.mu);
-  ct.preload = c.getDouble("preload", ct.preload);
-  ct.patches = c.getInt("patches", 0);  // its range against the face's pairs: disc::shroudContactValues
-  if (c.has("normal") != c.has("tangent"))
-    throw InputError(c.location(), "give both normal and tangent (the contact frame), or neither");
-  if (c.has("normal")) ct.normal = toEigen(c.getVector3("normal", {0, 0, 0}));
-  if (c.has("tangent")) ct.tangent = toEigen(c.getVector3("tangent", {0, 0, 0}));
-  c.rejectUnknownKeys();
-  if (d.has("gap")) {
-    auto g = d.section("gap");
-    spec.gap.pairs = g.getIntList("pairs", {});
-    if (spec.gap.pairs.empty()) throw InputError(g.where("pairs"), "needs the contact pairs that are gap elements");
-    spec.gap.kn = g.getDouble("kn", spec.gap.kn);
-    spec.gap.clearance = g.getDouble("clearance", spec.gap.clearance);
-    g.rejectUnknownKeys();
-  }
-  // The force is physics a forced response needs: not a silent 1 N (issue 49).
-  if (!d.has("excitation"))
-    throw InputError(d.where("excitation"), d.requiredText("excitation") +
-                                                ": the force on each blade (node_set, direction, amplitude in the "
-                                                "scene's force unit)");
-  auto e = d.section("excitation");
-  spec.excitation.nodeSet = e.getString("node_set", spec.excitation.nodeSet);
-  spec.excitation.direction = toEigen(e.getVector3("direction", {0, 0, 1}));
-  spec.excitation.amplitude = e.getDouble("amplitude", spec.excitation.amplitude);
-  e.rejectUnknownKeys();
-  spec.responseNodeSets = d.getStringList("response_node_sets", spec.responseNodeSets);
-  return spec;
-}
-
 }  // namespace
 
 DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
@@ -214,7 +126,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   const int sectors = plan.modelSpec.sectors;
   auto& spec = plan.spec;
   if (forcedResponse) {
-    spec = readResponseSpec(d);
+    spec = readDiscResponseSpec(d);
     plan.peakStudies = readPeakStudies(d.section("peak_studies"), spec, plan.modelSpec.lossFactor, plan.modelSpec.rpm);
     plan.peakStress = readPeakStressSpec(d, scene.section("material"), plan.modelSpec.material);
     const int maxHarmonic = *std::max_element(spec.harmonics.begin(), spec.harmonics.end());
@@ -222,10 +134,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     plan.harmonicsCheckTo = readHarmonicsCheckTo(d, maxHarmonic, target);
     plan.harmonicsTolerance = target.tolerance;
     if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {
-      // Also the nodal diameters of the harmonics the curve's harmonics check adds.
-      auto checked = spec.harmonics;
-      for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, plan.harmonicsCheckTo); ++h) checked.push_back(h);
-      plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, checked);
+      plan.nds = disc::nodalDiametersForCheckedCurve(sectors, spec.engineOrder, spec.harmonics, plan.harmonicsCheckTo);
       plan.modelSpec.checkNodalDiameter = disc::nodalDiametersFor(sectors, spec.engineOrder, {1}).front();
     } else {  // engine-order errors before any FE work
       DiscReducedModels none;
@@ -257,11 +166,9 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       throw InputError(r.where("contact_dofs"), "use nodes (every contact face node, the default) or patch_means "
                                                 "(each contact patch's mean motion)");
     }
-    try {
+    r.underKey("retained_node_sets", [&] {
       disc::checkRetainedNodeSets(mesh, plan.modelSpec.retainedNodeSets, spec, !plan.modelSpec.retainedMeans.empty());
-    } catch (const InputError& e) {
-      throw InputError(r.where("retained_node_sets"), e.problem());
-    }
+    });
     // The friction solve's cost at the highest harmonic the curve or its check reaches,
     // known from the contact pairs before any FE work (harmonics 500 on the demo's disc
     // was refused only after its reduced models were built): a 3D contact per pair, or
@@ -270,7 +177,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       const int top = std::max(maxHarmonic, plan.harmonicsCheckTo);
       const hbm::HarmonicSet set = hbm::HarmonicSet::upTo(top);
       const int pairs = spec.contact.patches > 0 ? spec.contact.patches : int(mesh.nodeSet(spec.contact.rightSet).size());
-      const int samples = spec.samples > 0 ? spec.samples : std::max(256, set.nonsmoothSamples());
+      const int samples = spec.samples > 0 ? spec.samples : disc::discAutomaticSamples(set);
       std::ostringstream what;
       what << "harmonics up to " << top << " on " << pairs << (spec.contact.patches > 0 ? " shroud contact patches" : " shroud contact pairs");
       response::checkElementJacobianCost(samples, set.numCoefficients(), std::vector<int>(std::size_t(pairs), 3),
@@ -278,7 +185,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       // A sample count far above the automatic one: said with its cost on the curve's harmonics.
       if (spec.samples > 0) {
         const hbm::HarmonicSet curve(spec.harmonics);
-        response::checkSamplesCost(spec.samples, std::max(256, curve.nonsmoothSamples()),
+        response::checkSamplesCost(spec.samples, disc::discAutomaticSamples(curve),
                                    "that harmonics up to " + std::to_string(maxHarmonic) +
                                        " and the friction contacts need (the automatic count)",
                                    curve, std::vector<int>(std::size_t(pairs), 3), d.where("samples"));
@@ -299,18 +206,5 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   disc::checkReducedModelCache(mesh, plan.modelSpec, plan.nds, plan.cacheDir);  // before the modes' and static work
   return plan;
 }
-
-// disc_response/hysteresis_contacts, checked against the contact pairs (one element per pair).
-std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec) {
-  const std::vector<int> contacts = d.getIntList("hysteresis_contacts", {});
-  const int count = int(mesh.nodeSet(spec.contact.rightSet).size());
-  for (int e : contacts)
-    if (e < 0 || e >= count)
-      throw InputError(d.where("hysteresis_contacts"), "contact " + std::to_string(e) + " is not one of the " +
-                                                           std::to_string(count) +
-                                                           " shroud contact pairs (0-based, as in disc_frc_contacts.csv)");
-  return contacts;
-}
-
 
 }  // namespace cyclone::scenes

@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "SceneStages.hpp"
+#include "DiscStages.hpp"
 
 #include <Teuchos_Comm.hpp>
 #include "cyclone/core/AtomicFile.hpp"
@@ -81,16 +81,6 @@ DiscReducedModels reducedModelsStage(const mesh::Mesh& mesh, const DiscPlan& pla
   summary.computed.push_back(line.str());
   for (const auto& [k, f] : models.files) summary.written.push_back(f);
   return models;
-}
-
-// Writes a disc curve with its summary lines (a range-end warning says where to widen it).
-void writeDiscCurve(const disc::DiscForcedResponse& solved, const ForcedResponseSetup& setup,
-                    const ForcedResponseResult& result, const std::string& name, const std::vector<std::string>& warnings,
-                    const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
-  writeForcedResponse(setup, result, outDir, name, comm, summary);
-  for (const auto& w : warnings)
-    summary.computed.push_back("warning: " + name + ": " + w + " (" + solved.estimateText +
-                               "); widen disc_response/frequency_range_hz");
 }
 
 // The reference curve disc_frc: traced, written, its headline first in the summary.
@@ -164,61 +154,17 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   return solved;
 }
 
-// One parameter study of disc_response/studies: a curve per value (each written as it
-// comes, a reference value's files copied from disc_frc's), study_<name>.svg with every
-// curve and study_<name>.csv with their peaks. Returns the curves traced.
-int studyStage(SceneSection& studies, const char* name, const mesh::Mesh& mesh, const DiscReducedModels& models,
-               const DiscPlan& plan, const disc::DiscForcedResponse& solved, const disc::DiscSweepOptions& sweep,
-               const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary,
-               std::vector<StudyPeak>& peaks) {
-  const auto values = studies.getDoubleList(name, {});
-  if (values.empty()) throw InputError(studies.where(name), "needs a list of values");
-  const auto& setup = solved.setup;
-  post::SvgPlot plot(std::string("Study: ") + name + " (engine order " + std::to_string(plan.spec.engineOrder) + ")",
-                     "frequency (Hz)", "max |x(t)| of " + setup.dofNames[setup.outputDofs.front()]);
-  std::ostringstream table;
-  table.precision(10);
-  table << name << ",peak_hz,peak_max_abs,points,finished,seconds\n";
-  int index = 0;
-  const auto writeCurve = [&](const disc::DiscStudyCurve& c, const ForcedResponseSetup& traced) {
-    const std::string tag = "study_" + std::string(name) + "_" + std::to_string(index);
-    std::ostringstream label;
-    label << name << " = " << c.value;
-    if (c.isReference) copyReferenceCurve(outDir, tag, label.str(), comm, summary);
-    else writeDiscCurve(solved, traced, c.curve, tag, c.warnings, outDir, comm, summary);
-    const auto& r = c.curve;
-    const auto bounds = response::segmentBounds(r.branch);
-    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {  // one line per sweep, labelled once
-      std::vector<double> hz;
-      for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) hz.push_back(r.omega[i] / (2 * M_PI));
-      plot.addLine(hz, std::vector<double>(r.measure.begin() + long(bounds[k]), r.measure.begin() + long(bounds[k + 1])),
-                   post::SvgPlot::palette(index), k == 0 ? label.str() : std::string());
-    }
-    if (r.peak > 0) peaks.push_back({c.value, r.peak, r.peakOmega, r.branch.points[r.peakIndex].x});
-    table << c.value << "," << r.peakOmega / (2 * M_PI) << "," << r.peak << "," << r.branch.points.size() << ","
-          << (r.branch.finished ? 1 : 0) << "," << c.seconds << "\n";
-    ++index;
-  };
-  try {
-    disc::studyDisc(mesh, models, plan.spec, solved, *disc::discStudyParameterFromName(name), values, sweep,
-                    writeCurve);
-  } catch (const InputError& e) {
-    throw InputError(studies.where(name), e.problem());
-  }
-  if (comm->getRank() == 0) {
-    plot.write(outDir + "/study_" + name + ".svg");
-    AtomicFile file(outDir + "/study_" + name + ".csv");
-    std::ofstream out(file.tempPath());
-    out << table.str();
-    file.check(out);
-    file.commit();
-  }
-  summary.written.push_back(outDir + "/study_" + name + ".svg");
-  summary.written.push_back(outDir + "/study_" + name + ".csv");
-  return index;
-}
-
 }  // namespace
+
+// Writes a disc curve with its summary lines (a range-end warning says where to widen it).
+void writeDiscCurve(const disc::DiscForcedResponse& solved, const ForcedResponseSetup& setup,
+                    const ForcedResponseResult& result, const std::string& name, const std::vector<std::string>& warnings,
+                    const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary) {
+  writeForcedResponse(setup, result, outDir, name, comm, summary);
+  for (const auto& w : warnings)
+    summary.computed.push_back("warning: " + name + ": " + w + " (" + solved.estimateText +
+                               "); widen disc_response/frequency_range_hz");
+}
 
 DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
                                 const std::string& outDir,
@@ -255,13 +201,12 @@ DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int
     for (int h : plan.spec.harmonics) top = std::max(top, h);
     for (const auto& name : studyNames) {
       if (!stages.studies.has(name)) continue;
-      try {
+      const auto values = stages.studies.getDoubleList(name, {});
+      stages.studies.underKey(name, [&] {
         disc::checkDiscStudyValues(mesh, plan.modelSpec.sectors, plan.modelSpec.axis, plan.spec,
-                                   *disc::discStudyParameterFromName(name), stages.studies.getDoubleList(name, {}),
-                                   plan.modelSpec.modes, top, plan.modelSpec.material.E);
-      } catch (const InputError& e) {
-        throw InputError(stages.studies.where(name), e.problem());
-      }
+                                   *disc::discStudyParameterFromName(name), values, plan.modelSpec.modes, top,
+                                   plan.modelSpec.material.E);
+      });
     }
   }
   d.rejectUnknownKeys();
@@ -288,21 +233,16 @@ void discStages(const DiscStagePlan& stages, const mesh::Mesh& mesh, const std::
   }
   peakOutputsStage(mesh, models, plan, solved, hysteresisContacts, outDir, comm, summary);
 
-  // Parameter studies: one curve per value, one plot per study, peaks in a table.
-  auto studies = stages.studies;
+  // Parameter studies: one curve per value; then the peaks followed over a parameter,
+  // compared with those curves' tops. The studies' line in the stage table comes after
+  // the peak following's, its time through it (as the run report has always shown them).
   Timer studiesTimer;
-  int studyCurves = 0;
-  std::map<std::string, std::vector<StudyPeak>> studyPeaks;  // for the peak studies' comparison
-  for (const char* name : kStudyNames)
-    if (studies.has(name)) {
-      std::vector<StudyPeak> peaks;
-      studyCurves += studyStage(studies, name, mesh, models, plan, solved, sweep, outDir, comm, summary, peaks);
-      if (!peaks.empty()) studyPeaks[name] = peaks;
-    }
+  const auto studies = valueStudiesStage(stages.studies, mesh, models, plan, solved, sweep, outDir, comm, summary);
   followDiscPeaks(plan.peakStudies, mesh, models, plan, solved.setup, solved.curve, solved.fromHz, solved.toHz,
-                  studyPeaks, outDir, comm, summary);
-  if (studyCurves > 0)
-    summary.stages.push_back({"parameter studies (" + std::to_string(studyCurves) + " curves)", studiesTimer.seconds(),
+                  studies.tops, outDir, comm, summary);
+  if (studies.curves > 0)
+    summary.stages.push_back({"parameter studies (" + std::to_string(studies.curves) + " curves)",
+                              studiesTimer.seconds(),
                               "the samples check per curve (summary); the harmonic truncation: the reference curve's check"});
 }
 

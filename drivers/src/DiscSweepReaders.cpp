@@ -6,7 +6,7 @@
 #include "cyclone/core/Error.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
-#include "SceneStages.hpp"
+#include "DiscStages.hpp"
 
 namespace cyclone::scenes {
 
@@ -36,10 +36,13 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
   sweep.harmonicsTolerance = plan.harmonicsTolerance;
   auto cs = d.section("continuation");
   using Engine = continuation::ContinuationOptions::Engine;
+  // The disc's defaults for the engine named (an unknown name is refused, naming the key,
+  // by readContinuationSteps).
+  const std::string byDefault = continuation::engineKey(Engine::PredictorCorrector);
   sweep.continuation = disc::discContinuationOptions(
-      cs.getString("engine", "predictor_corrector") == "loca" ? Engine::Loca : Engine::PredictorCorrector);
+      continuation::engineFromKey(cs.getString("engine", byDefault)).value_or(Engine::PredictorCorrector));
   if (cs.has("engine")) sweep.fallback.reset();
-  readContinuationSteps(cs, sweep.continuation, "predictor_corrector");
+  readContinuationSteps(cs, sweep.continuation, byDefault);
   sweep.continuation.tolerance = readContinuationTolerance(cs, sweep.continuation.tolerance);
   cs.rejectUnknownKeys();
   sweep.continuation.checkpoints = checkpoints;

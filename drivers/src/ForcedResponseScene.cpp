@@ -1,6 +1,6 @@
 // A matrix-defined forced-response scene (analysis: forced_response) read into a
 // response::ForcedResponseSetup: system matrices, nonlinear elements, engine order,
-// forces and continuation keys.
+// forces and the continuation section (its engine and steps: ContinuationReaders.cpp).
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -27,62 +27,6 @@
 #include "MatrixSystemReaders.hpp"
 
 namespace cyclone::scenes {
-
-double readContinuationTolerance(SceneSection& cs, double defaultValue) {
-  const double tolerance = cs.getDouble("tolerance", defaultValue);
-  if (!(tolerance >= 1e-14 && tolerance <= 1e-4))
-    throw InputError(cs.where("tolerance"), numberText(tolerance) +
-                                                ": must lie in 1e-14..1e-4, the residual relative to the forces acting "
-                                                "(below: under the rounding of double precision; above: a response "
-                                                "near a resonance, amplified by its quality factor, off by percents)");
-  return tolerance;
-}
-
-void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& opt, const std::string& defaultEngine) {
-  using Options = continuation::ContinuationOptions;
-  const std::string engine = cs.getString("engine", defaultEngine);
-  if (engine == "predictor_corrector")
-    opt.engine = Options::Engine::PredictorCorrector;
-  else if (engine == "loca" && opt.engine != Options::Engine::Loca) {
-    const Options loca = continuation::locaOptions();  // LOCA's step defaults, its units
-    opt.engine = loca.engine;
-    opt.initialStep = loca.initialStep, opt.minStep = loca.minStep, opt.maxStep = loca.maxStep;
-  } else if (engine == "loca")
-    opt.engine = Options::Engine::Loca;
-  else
-    throw InputError(cs.where("engine"), "'" + engine + "': must be predictor_corrector or loca");
-  opt.initialStep = cs.getDouble("initial_step", opt.initialStep);  // the caller's defaults
-  opt.minStep = cs.getDouble("min_step", opt.minStep);
-  opt.maxStep = cs.getDouble("max_step", opt.maxStep);
-  opt.maxSteps = cs.getInt("max_points", opt.maxSteps);
-  opt.turnAngle = cs.getDouble("turn_angle", opt.turnAngle);
-  if (!(opt.initialStep > 0)) throw InputError(cs.where("initial_step"), "must be positive");
-  if (!(opt.minStep > 0)) throw InputError(cs.where("min_step"), "must be positive");
-  if (!(opt.maxStep >= opt.minStep)) throw InputError(cs.where("max_step"), "must be at least min_step");
-  // The predictor-corrector's steps are in the scaled space (x / |x|, p / |to - from|),
-  // where 1 spans the whole range: a longer step means nothing (issue 49: 1000).
-  if (opt.engine == Options::Engine::PredictorCorrector)
-    for (const auto& [key, value] : {std::pair<const char*, double>{"initial_step", opt.initialStep},
-                                     {"max_step", opt.maxStep}})
-      if (value > 1)
-        throw InputError(cs.where(key), std::to_string(value) + ": must be at most 1 (the steps are in the scaled "
-                                        "space x / |x|, p / |to - from|, where 1 spans the whole range)");
-  if (opt.maxSteps < 2) throw InputError(cs.where("max_points"), "must be at least 2");
-  if (!(opt.turnAngle > 0 && opt.turnAngle < 1.5))
-    throw InputError(cs.where("turn_angle"), "must lie in (0, 1.5) radians");
-  using LS = Options::LineSearch;
-  const std::string name = cs.getString("line_search", "full_step");
-  if (name == "full_step")
-    opt.lineSearch = LS::FullStep;
-  else if (name == "backtrack")
-    opt.lineSearch = LS::Backtrack;
-  else if (name == "polynomial")
-    opt.lineSearch = LS::Polynomial;
-  else
-    throw InputError(cs.where("line_search"), "'" + name + "': must be full_step, backtrack or polynomial");
-  if (cs.has("line_search") && opt.engine != Options::Engine::Loca)
-    throw InputError(cs.where("line_search"), "is for engine: loca (the predictor-corrector backtracks by itself)");
-}
 
 namespace {
 // The engine order of the excitation's forces (one travelling wave), into the coupling.
@@ -190,7 +134,7 @@ void readContinuation(SceneSection& cs, ForcedResponseSetup& setup) {
   if (!cs.has("engine")) {
     setup.fallback = continuation::locaOptions();
   }
-  readContinuationSteps(cs, opt, "predictor_corrector");
+  readContinuationSteps(cs, opt, continuation::engineKey(continuation::ContinuationOptions::Engine::PredictorCorrector));
   opt.tolerance = readContinuationTolerance(cs, opt.tolerance);
   cs.rejectUnknownKeys();
   if (setup.parameter == ForcedResponseSetup::Parameter::Omega && (!(opt.from > 0) || !(opt.to > 0)))
@@ -225,10 +169,9 @@ ForcedResponseSetup readForcedResponseSetup(SceneSection& scene) {
   // many samples per period to place their events).
   ForcedResponseSetup setup;
   const auto placed = readNonlinearElements(scene, in, setup.elementNames);
-  int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
-  for (const auto& p : placed)
-    if (p.element->recommendedSamples() > 0)  // a nonsmooth law: samples that grow with the harmonics too
-      recommended = std::max({recommended, p.element->recommendedSamples(), harmonics.nonsmoothSamples()});
+  std::vector<std::shared_ptr<const hbm::NonlinearElement>> elements;
+  for (const auto& p : placed) elements.push_back(p.element);
+  const int recommended = response::recommendedSamples(harmonics, elements);
   const int samples = scene.getInt("samples", recommended);
   if (samples < harmonics.minimumSamples() || samples > kMaxSamples)
     throw InputError(scene.where("samples"), std::to_string(samples) + ": must lie in " +

@@ -111,11 +111,8 @@ MatrixSystemInput readMatrixSystem(SceneSection& scene) {
     C += ab[0] * M + ab[1] * K;
   }
   if (sys.has("modal_damping_ratio")) {
-    try {
-      C += hbm::modalDamping(M, K, sys.getDouble("modal_damping_ratio", 0.0));
-    } catch (const InputError& e) {
-      throw InputError(sys.where("modal_damping_ratio"), e.problem());
-    }
+    const double ratio = sys.getDouble("modal_damping_ratio", 0.0);
+    C += sys.underKey("modal_damping_ratio", [&] { return hbm::modalDamping(M, K, ratio); });
   }
   in.dofNames = sys.getStringList("dof_names", {});
   if (!in.dofNames.empty() && int(in.dofNames.size()) != n)

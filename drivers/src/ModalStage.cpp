@@ -54,9 +54,7 @@ std::string speedModesLine(const cyclic::SpeedModes& sm) {
        << ", lowest " << sm.nodalDiameters.front().frequenciesHz.front() << " Hz (ND " << sm.nodalDiameters.front().nodalDiameter << ")";
   std::string rigid;
   for (const auto& hm : sm.nodalDiameters) {
-    int count = 0;
-    for (double f : hm.frequenciesHz) count += f < 1e-4 * hm.frequenciesHz.back();
-    if (count) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.nodalDiameter) + ": " +
+    if (const int count = hm.rigidBodyModes()) rigid += (rigid.empty() ? "" : ", ") + std::string("ND ") + std::to_string(hm.nodalDiameter) + ": " +
                         std::to_string(count);
   }
   if (!rigid.empty()) line << "; rigid-body modes " << rigid;

@@ -128,19 +128,12 @@ CyclicFaces readCyclicFaces(SceneSection& cy) {
 
 void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, const mesh::Mesh& mesh,
                             const mesh::RotationAxis& axis, const std::string& speedKey, const std::string& meshKey) {
-  const Eigen::Vector3d d = axis.direction.normalized();
-  double radius = 0;
-  for (const auto& x : mesh.coords) {
-    const Eigen::Vector3d r = Eigen::Vector3d(x[0], x[1], x[2]) - axis.point;
-    radius = std::max(radius, (r - r.dot(d) * d).norm());
-  }
+  const double radius = mesh::outermostRadius(mesh, axis);
   // A mesh in metres with the mm-N-s-t material (or in mm with SI) reached the prestress
   // and failed there as "10000 rpm cannot be reached" (issue 49 probe): a bladed disc's
-  // outer radius lies between 1 mm and 20 m in any unit set.
-  const double metres = material.units == fe::UnitSystem::SI ? radius
-                        : material.units == fe::UnitSystem::MillimetreNewtonSecondTonne ? radius / 1000
-                                                                                         : 0.1;
-  if (radius > 0 && !(metres >= 1e-3 && metres <= 20)) {
+  // outer radius lies between 1 mm and 20 m in any unit set (other: a unit not known).
+  const double metres = radius * fe::lengthUnitInMetres(material.units);
+  if (radius > 0 && material.units != fe::UnitSystem::Other && !(metres >= 1e-3 && metres <= 20)) {
     std::ostringstream why;
     why << "its outermost radius about the axis is " << radius << " in the material's units ("
         << fe::unitSystemName(material.units) << "): " << metres
@@ -148,8 +141,7 @@ void checkCentrifugalStrain(const fe::IsotropicElastic& material, double rpm, co
            "millimetres, SI metres)";
     throw InputError(meshKey, why.str());
   }
-  const double omega = 2 * M_PI * rpm / 60;
-  const double strain = material.rho * omega * omega * radius * radius / material.E;
+  const double strain = fe::centrifugalStrainScale(material, rpm, radius);
   if (!(strain <= 0.05)) {
     std::ostringstream why;
     why << rpm << " rpm: rho (Omega r)^2 at the outermost radius " << radius << " is " << strain

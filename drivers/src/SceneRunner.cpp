@@ -25,7 +25,7 @@
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "RunManifest.hpp"
-#include "SceneStages.hpp"
+#include "DiscStages.hpp"
 
 namespace cyclone::scenes {
 

@@ -13,14 +13,9 @@
 #include "cyclone/cyclic/CyclicSector.hpp"
 #include "cyclone/cyclic/ModalSweep.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
-#include "cyclone/fatigue/GoodmanHaigh.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/fe/LinearAlgebra.hpp"
 #include "cyclone/fe/Material.hpp"
-#include "cyclone/disc/DiscForcedResponse.hpp"
-#include "cyclone/disc/DiscHarmonicBalance.hpp"
-#include "cyclone/disc/DiscPeakVibration.hpp"
-#include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/response/ForcedResponse.hpp"
 #include "cyclone/scenes/ForcedResponseScene.hpp"
 #include "cyclone/scenes/SceneRunner.hpp"
@@ -37,10 +32,6 @@ namespace cyclone::scenes {
 class SceneSection;
 using response::ForcedResponseResult;
 using response::ForcedResponseSetup;
-using disc::DiscModelSpec;
-using disc::DiscReducedModels;
-using disc::DiscResponseSpec;
-using disc::PeakPoint;
 
 class RunManifest;
 
@@ -145,62 +136,6 @@ int readHarmonicsCheckTo(SceneSection& section, int maxHarmonic, const Harmonics
 /// stages wrote), the studies' tables and the stages' error against run time.
 void writeRunReport(const std::string& outDir, const std::string& source, const SceneSummary& summary);
 
-/// What `disc_response/peak_stress` asks for: the sector's whole vibration at the
-/// friction-damped peak, its stresses and (margin) the Goodman-Haigh safety factor.
-struct PeakStressSpec {
-  bool run = false;
-  bool margin = true;
-  int animationSteps = 32;  ///< time steps of one period in disc_peak_vibration.exo
-  double atHz = 0;          ///< 0: at the peak; else at this frequency of the reference curve
-  fatigue::FatigueMaterial material;
-  std::string stressUnit = "stress units";  ///< "MPa" or "Pa" from material/units (fe::stressUnitName)
-};
-/// Reads disc_response/peak_stress and material/fatigue (`material` as read). InputError
-/// when a margin is asked for without fatigue data, naming both keys.
-PeakStressSpec readPeakStressSpec(SceneSection& discResponse, SceneSection materialSection,
-                                  const fe::IsotropicElastic& material);
-
-/// The sector's vibration at the reference curve's peak (the harmonics check's highest
-/// found level, else the traced point nearest the peak): disc_peak_response.exo (per
-/// harmonic displacement, stresses, safety factor), disc_peak_vibration.exo (one period
-/// as time steps), and with a margin disc_peak_stress.csv (every node, worst first) and
-/// disc_goodman.svg; lines for the summary.
-void writePeakStress(const PeakStressSpec& spec, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                     const DiscModelSpec& modelSpec, const PeakPoint& point, double excitationScale,
-                     const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
-
-/// A value-list study's peak at one value (its frequency curve's largest point).
-struct StudyPeak {
-  double value = 0, peak = 0, omega = 0;
-  Eigen::VectorXd x;  ///< the curve's point at its peak (a known peak for the peak studies)
-};
-
-/// One peak study of disc_response/peak_studies: the parameter, its range and values.
-struct DiscPlan;
-
-struct PeakStudySpec {
-  std::string name;  ///< preload, mu, contact_stiffness, force, loss_factor, clearance or speed
-  double from = 0, to = 0;
-  int values = 24;
-  bool continuation = false;  ///< method: continuation (one LOCA continuation), else a peak search per value
-};
-
-/// Reads and checks disc_response/peak_studies before any work (InputError naming the
-/// key: a range that is not 0 < from < to or does not contain the scene's value, values
-/// outside 3..400, an unknown parameter).
-std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscResponseSpec& spec, double lossFactor,
-                                           double rpm);
-
-/// disc_response/peak_studies (preload, mu, force): the largest peak followed over the
-/// parameter by a peak search per value from the reference curve's peak; peak_<name>.csv
-/// and .svg (the optimum marked, the value-list study's peaks beside it); lines for the
-/// summary, with the largest difference from the study's peaks at shared values.
-void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh& mesh, const DiscReducedModels& models,
-                     const DiscPlan& plan, const ForcedResponseSetup& reference,
-                     const ForcedResponseResult& referenceResult, double bandFromHz, double bandToHz,
-                     const std::map<std::string, std::vector<StudyPeak>>& listed, const std::string& outDir,
-                     linalg::CommPtr comm, SceneSummary& summary);
-
 /// "peak memory after <stage>: ..." for the log (rank 0's, and the sum over the ranks).
 void logPeakMemory(const std::string& stage, const linalg::CommPtr& comm);
 
@@ -229,64 +164,5 @@ analysis::StaticProblem readStaticProblem(SceneSection& scene, const mesh::Mesh&
 void readStaticSolver(SceneSection solver, analysis::StaticProblem& problem);
 /// The loads section: speed, axis, body force and nodal forces (their node sets checked).
 void readStaticLoads(SceneSection loads, const mesh::Mesh& mesh, analysis::StaticProblem& problem);
-
-// What a disc scene asks for, read and checked before any FE work.
-struct DiscPlan {
-  DiscModelSpec modelSpec;   ///< with the check of the engine order's nodal diameter
-  std::string cacheDir;      ///< empty: nothing cached
-  std::vector<int> nds;      ///< the nodal diameters the models are built for
-  DiscResponseSpec spec;
-  int harmonicsCheckTo = 0;
-  double harmonicsTolerance = 0;  ///< harmonics: auto's target (0: harmonics given)
-  PeakStressSpec peakStress;
-  std::vector<PeakStudySpec> peakStudies;
-  bool rebuildCache = false;  ///< reduced_model/cache: rebuild (the cache emptied when the stage starts)
-};
-
-/// Reads and checks a disc scene's reduced_model and disc_response sections (r, d).
-/// Without a forced response, reduced_model/nodal_diameters is required unless
-/// `requireNodalDiameters` is false (a section checked that no analysis reads).
-DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, const mesh::Mesh& mesh,
-                      int builtInSectors, bool forcedResponse, const std::string& outDir,
-                      bool requireNodalDiameters = true);
-/// disc_response's sweep keys (family, range, stability, continuation) with the check's top H.
-disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
-                                        const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
-/// disc_response/hysteresis_contacts: the contact pairs whose loops are written.
-std::vector<int> readHysteresisContacts(SceneSection& d, const mesh::Mesh& mesh, const DiscResponseSpec& spec);
-
-/// disc_response/studies' parameters (one frequency curve per listed value).
-inline constexpr const char* kStudyNames[] = {"preload", "mu", "contact_stiffness", "force",
-                                              "loss_factor", "harmonics", "modes", "clearance"};
-
-/// A study value that reproduces the reference scene: disc_frc's files under the study's
-/// name `tag` (DiscPeakStudies.cpp).
-void copyReferenceCurve(const std::string& outDir, const std::string& tag, const std::string& what,
-                        linalg::CommPtr comm, SceneSummary& summary);
-
-/// Contacts, loops, the period and the sector's stresses at one point: the converged peak
-/// (or peak_stress/at_hz for the stresses); DiscPeakStress.cpp.
-void peakOutputsStage(const mesh::Mesh& mesh, const DiscReducedModels& models, const DiscPlan& plan,
-                      disc::DiscForcedResponse& solved, const std::vector<int>& hysteresisContacts,
-                      const std::string& outDir, linalg::CommPtr comm, SceneSummary& summary);
-
-/// Everything the disc chain's stages take from the scene, read and checked before any
-/// work (the keys of reduced_model, disc_response and its studies; node sets, ranges).
-struct DiscStagePlan {
-  DiscPlan plan;
-  bool forcedResponse = false;
-  std::optional<disc::DiscSweepOptions> sweep;  ///< with a forced response
-  std::vector<int> hysteresisContacts;
-  SceneSection studies;  ///< disc_response/studies: its values are read with their curves
-};
-DiscStagePlan readDiscStagePlan(SceneSection& scene, const mesh::Mesh& mesh, int builtInSectors, bool forcedResponse,
-                                const std::string& outDir,
-                                const std::shared_ptr<continuation::TraceCheckpoints>& checkpoints);
-
-/// The disc chain's stages: reduced models per nodal diameter (cached), then the
-/// forced response with friction at the shroud and its parameter studies.
-/// Its curves save their traces in the plan's checkpoints as they go (none: not saved).
-void discStages(const DiscStagePlan& stages, const mesh::Mesh& mesh, const std::string& outDir, linalg::CommPtr comm,
-                SceneSummary& summary);
 
 }  // namespace cyclone::scenes

@@ -10,6 +10,7 @@
 
 using cyclone::InputError;
 using cyclone::fe::IsotropicElastic;
+using cyclone::fe::UnitSystem;
 
 namespace {
 
@@ -94,3 +95,22 @@ TEST(IsotropicElastic, PlausibilityRefusesANearlyIncompressibleNu) {
 }
 
 }  // namespace
+
+// The unit sets' length: a millimetre and a metre; none for a set the code cannot name.
+TEST(UnitSystem, LengthUnitInMetres) {
+  EXPECT_EQ(cyclone::fe::lengthUnitInMetres(UnitSystem::MillimetreNewtonSecondTonne), 1e-3);
+  EXPECT_EQ(cyclone::fe::lengthUnitInMetres(UnitSystem::SI), 1.0);
+  EXPECT_EQ(cyclone::fe::lengthUnitInMetres(UnitSystem::Other), 0.0);
+}
+
+// rho (Omega r)^2 / E by hand: 60 rpm is Omega = 2 pi rad/s; with rho = 2, r = 3, E = 4 pi^2
+// the scale is 2 (2 pi 3)^2 / (4 pi^2) = 18.
+TEST(IsotropicElastic, CentrifugalStrainScaleIsRhoOmegaRSquaredOverE) {
+  IsotropicElastic m;
+  m.rho = 2, m.E = 4 * M_PI * M_PI;
+  EXPECT_NEAR(cyclone::fe::centrifugalStrainScale(m, 60, 3), 18.0, 1e-13);
+  EXPECT_EQ(cyclone::fe::centrifugalStrainScale(m, 0, 3), 0.0);
+  // Titanium (the default material) at 10000 rpm and 200 mm, in mm-N-s-t:
+  // 4.507e-9 (1047.1976 x 200)^2 / 1.16e5 = 1.70430e-3, by hand.
+  EXPECT_NEAR(cyclone::fe::centrifugalStrainScale(IsotropicElastic(), 10000, 200), 1.70430e-3, 1e-8);
+}

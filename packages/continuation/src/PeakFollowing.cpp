@@ -269,4 +269,17 @@ FollowedPeakCurve followPeaks(const PeakTrackingProblem& problem, const std::vec
   return out;
 }
 
+int FollowedPeakCurve::jumps() const {
+  int count = 0;
+  for (const auto& p : points) count += p.jump;
+  return count;
+}
+
+std::size_t FollowedPeakCurve::largestPeak() const {
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].measure > points[top].measure) top = i;
+  return top;
+}
+
 }  // namespace cyclone::continuation

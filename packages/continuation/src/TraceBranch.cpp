@@ -33,6 +33,12 @@ const char* engineKey(ContinuationOptions::Engine engine) {
   return "unknown";
 }
 
+std::optional<ContinuationOptions::Engine> engineFromKey(const std::string& key) {
+  for (const auto engine : {ContinuationOptions::Engine::PredictorCorrector, ContinuationOptions::Engine::Loca})
+    if (key == engineKey(engine)) return engine;
+  return std::nullopt;
+}
+
 std::string noConvergedStart(const NewtonResult& start, double tolerance) {
   std::ostringstream why;
   why << "no converged solution at the start of the range: Newton with line search from the guess stopped at ||R|| = "

@@ -584,4 +584,11 @@ void writeModesExodus(const std::string& path, const mesh::Mesh& mesh, double rp
   mesh::writeExodus(path, mesh, r);
 }
 
+int NodalDiameterModes::rigidBodyModes() const {
+  if (frequenciesHz.empty()) return 0;
+  int count = 0;
+  for (double f : frequenciesHz) count += f < 1e-4 * frequenciesHz.back();
+  return count;
+}
+
 }  // namespace cyclone::cyclic

@@ -397,6 +397,10 @@ void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string
                                                                  "', which the forced response uses: add it");
 }
 
+int discAutomaticSamples(const hbm::HarmonicSet& harmonics) {
+  return std::max(hbm::FrictionContact::kRecommendedSamples, harmonics.nonsmoothSamples());
+}
+
 ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                            const DiscResponseSpec& spec, double referenceHz) {
   const int N = models.sectors;
@@ -407,7 +411,7 @@ ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   const auto pairs = shroudContactPairs(mesh, models.sectors, models.sector.axis, spec.contact);
   const auto values = shroudContactValues(mesh, pairs, spec.contact);
   const auto element = frictionElement(spec.contact.kn, spec.contact.kt, spec.contact.mu, spec.contact.preload);
-  const int samples = spec.samples > 0 ? spec.samples : std::max(element->recommendedSamples(), harmonics.nonsmoothSamples());
+  const int samples = spec.samples > 0 ? spec.samples : discAutomaticSamples(harmonics);
   ForcedResponseSetup setup;
   setup.system = std::make_unique<hbm::HarmonicBalanceSystem>(receptance, harmonics, samples);
   auto& hb = *setup.system;

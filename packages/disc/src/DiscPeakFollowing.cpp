@@ -330,4 +330,23 @@ DiscPeakFollowing followDiscPeak(const mesh::Mesh& mesh, const DiscReducedModels
   return out;
 }
 
+bool DiscPeakFollowing::optimumAtRangeEnd() const {
+  if (curve.optimum < 0 || grid.empty()) return false;
+  const double best = curve.points[std::size_t(curve.optimum)].parameter;
+  return best == grid.front() || best == grid.back();
+}
+
+PeakAgreement DiscPeakFollowing::agreementWith(const std::vector<continuation::KnownPeak>& curvePeaks) const {
+  PeakAgreement agreement;
+  for (const auto& known : curvePeaks)
+    for (const auto& p : curve.points)
+      if (std::abs(p.parameter - known.parameter) <= 1e-12 * std::max(std::abs(known.parameter), 1e-6) &&
+          known.peak.measure > 0) {
+        agreement.largestRelativeDifference =
+            std::max(agreement.largestRelativeDifference, std::abs(p.measure / known.peak.measure - 1));
+        ++agreement.compared;
+      }
+  return agreement;
+}
+
 }  // namespace cyclone::disc

@@ -58,6 +58,14 @@ std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vect
   return {nds.begin(), nds.end()};
 }
 
+std::vector<int> nodalDiametersForCheckedCurve(int sectors, int engineOrder, const std::vector<int>& harmonics,
+                                               int harmonicsCheckTo) {
+  auto checked = harmonics;
+  const int highest = *std::max_element(harmonics.begin(), harmonics.end());
+  for (int h = highest + 1; h <= std::max(highest + 1, harmonicsCheckTo); ++h) checked.push_back(h);
+  return nodalDiametersFor(sectors, engineOrder, checked);
+}
+
 namespace {
 
 // The prestress as the cache's digests have named it since its first version.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -111,6 +112,13 @@ FatigueMap assessFatigue(const SectorVibration& v, const FatigueMaterial& materi
   }
   if (nn > 0) out.critical = std::size_t(std::min_element(out.safetyFactor.begin(), out.safetyFactor.end()) - out.safetyFactor.begin());
   return out;
+}
+
+std::vector<std::size_t> FatigueMap::nodesWorstFirst() const {
+  std::vector<std::size_t> order(safetyFactor.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [this](auto a, auto b) { return safetyFactor[a] < safetyFactor[b]; });
+  return order;
 }
 
 }  // namespace cyclone::fatigue

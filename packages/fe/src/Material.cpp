@@ -1,5 +1,6 @@
 #include "cyclone/fe/Material.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
@@ -41,6 +42,20 @@ const char* stressUnitName(UnitSystem units) {
     case UnitSystem::Other: break;
   }
   return "stress units";
+}
+
+double lengthUnitInMetres(UnitSystem units) {
+  switch (units) {
+    case UnitSystem::MillimetreNewtonSecondTonne: return 1e-3;
+    case UnitSystem::SI: return 1;
+    case UnitSystem::Other: break;
+  }
+  return 0;
+}
+
+double centrifugalStrainScale(const IsotropicElastic& material, double rpm, double radius) {
+  const double omega = 2 * M_PI * rpm / 60;
+  return material.rho * omega * omega * radius * radius / material.E;
 }
 
 double stressUnitInMpa(UnitSystem units) {

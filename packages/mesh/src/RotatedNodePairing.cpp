@@ -1,5 +1,7 @@
 #include "cyclone/mesh/RotatedNodePairing.hpp"
 
+#include <algorithm>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -8,6 +10,23 @@
 #include "cyclone/core/Error.hpp"
 
 namespace cyclone::mesh {
+
+double outermostRadius(const Mesh& mesh, const RotationAxis& axis) {
+  const Eigen::Vector3d d = axis.direction.normalized();
+  double radius = 0;
+  for (const auto& x : mesh.coords) {
+    const Eigen::Vector3d r = Eigen::Vector3d(x[0], x[1], x[2]) - axis.point;
+    radius = std::max(radius, (r - r.dot(d) * d).norm());
+  }
+  return radius;
+}
+
+bool sameRotationLine(const RotationAxis& a, const RotationAxis& b) {
+  const Eigen::Vector3d da = a.direction.normalized(), db = b.direction.normalized();
+  const Eigen::Vector3d offset = b.point - a.point;
+  const double size = std::max(1.0, offset.norm());
+  return !(da.cross(db).norm() > 1e-9 || da.cross(offset).norm() > 1e-9 * size);
+}
 
 Point rotate(const Point& p, double angle, const RotationAxis& axis) {
   // Rodrigues' formula about a unit axis through axis.point.

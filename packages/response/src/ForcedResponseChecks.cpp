@@ -64,6 +64,15 @@ SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::Branch
 // Each element's Jacobian is its sampled sensitivities projected onto the harmonics, a
 // dense product of 2 N (d nc)^2 flops, at about 4.5 Gflop/s (the default disc's 43
 // contacts at H = 48, 1024 samples: 1.6 s).
+int recommendedSamples(const hbm::HarmonicSet& harmonics,
+                       const std::vector<std::shared_ptr<const hbm::NonlinearElement>>& elements) {
+  int recommended = std::max(64, 4 * harmonics.maxHarmonic() + 1);
+  for (const auto& element : elements)
+    if (element->recommendedSamples() > 0)
+      recommended = std::max({recommended, element->recommendedSamples(), harmonics.nonsmoothSamples()});
+  return recommended;
+}
+
 double elementJacobianSeconds(int samples, int numCoefficients, const std::vector<int>& elementDimensions) {
   constexpr double kFlopsPerSecond = 4.5e9;
   double flops = 0;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/core/Error.hpp"
+
 namespace cyclone::scenes {
 
 /// The scene's YAML as a parameter list; InputError naming `source` when it is not valid
@@ -51,6 +53,16 @@ public:
   std::string requiredText(const std::string& key) const;
   /// "file: section 'path'" for messages about the section as a whole.
   std::string location() const;
+  /// Runs `read` (a library call that checks a value read from `key`) and puts its
+  /// InputError under that key: the library names no scene key, the reader does.
+  template <class Read>
+  auto underKey(const std::string& key, Read&& read) const -> decltype(read()) {
+    try {
+      return read();
+    } catch (const InputError& e) {
+      throw InputError(where(key), e.problem());
+    }
+  }
 
 private:
   const Teuchos::ParameterList& list_;

@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,9 @@ const char* branchEndName(BranchEnd end);
 /// The engine's name in scenes and files ("predictor_corrector", "loca": a scene's
 /// continuation/engine key).
 const char* engineKey(ContinuationOptions::Engine engine);
+/// The engine a key names (engineKey's inverse, so the names live in one place);
+/// nullopt for a name that is no engine's.
+std::optional<ContinuationOptions::Engine> engineFromKey(const std::string& key);
 
 struct Branch {
   std::vector<BranchPoint> points;

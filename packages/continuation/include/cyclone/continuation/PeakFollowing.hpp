@@ -84,6 +84,10 @@ struct FollowedPeakCurve {
   /// parameter) when locateOptimum and it lies inside the range.
   int optimum = -1;  ///< index into points
   bool optimumLocated = false;
+  /// The points marked as a jump to another peak.
+  int jumps() const;
+  /// The index of the largest peak (the first of equal ones; 0 without points).
+  std::size_t largestPeak() const;
 };
 
 

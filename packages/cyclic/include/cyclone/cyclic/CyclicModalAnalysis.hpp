@@ -66,6 +66,9 @@ struct NodalDiameterModes {
   std::vector<double> frequenciesHz;  ///< ascending; each member of a pair listed
   /// Nodal shapes per mode: real part (copy a) and imaginary part (copy b; zero when single).
   ModeShapes shapes;
+  /// The rigid-body modes among frequenciesHz: those below 1e-4 of the highest computed
+  /// (an unheld sector's, at round-off above zero).
+  int rigidBodyModes() const;
 };
 
 /// The real-form sector operators at one nodal diameter k: the assembler of the

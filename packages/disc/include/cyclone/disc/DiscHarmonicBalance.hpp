@@ -118,6 +118,11 @@ void checkRetainedNodeSets(const mesh::Mesh& mesh, const std::vector<std::string
 /// unilateral spring named "gap" on w_n for the pairs spec.gap names, the
 /// excitation on harmonic 1, output DOFs the response nodes' x, y, z. Continuation in
 /// omega by default, p = f / referenceHz.
+/// The disc's automatic time samples per period (disc_response/samples left out): the
+/// friction contacts' count (hbm::FrictionContact::kRecommendedSamples) or, for many
+/// harmonics, harmonics.nonsmoothSamples() (16 to 32 per period of the highest).
+int discAutomaticSamples(const hbm::HarmonicSet& harmonics);
+
 response::ForcedResponseSetup makeDiscForcedResponse(const mesh::Mesh& mesh, const DiscReducedModels& models,
                                            const DiscResponseSpec& spec, double referenceHz = 1.0);
 

@@ -59,6 +59,12 @@ struct OptimumHarmonicsCheck {
   bool converged(double tolerance) const { return change >= 0 && change <= tolerance; }
 };
 
+/// The followed peaks against the frequency curves' peaks at the values both have.
+struct PeakAgreement {
+  int compared = 0;                      ///< pairs at one value (within 1e-12 of it)
+  double largestRelativeDifference = 0;  ///< max |followed / curve's - 1| over them
+};
+
 struct DiscPeakFollowing {
   continuation::FollowedPeakCurve curve;  ///< in parameter order; the optimum by merit()
   std::vector<double> grid;               ///< the values followed
@@ -77,6 +83,11 @@ struct DiscPeakFollowing {
   std::vector<double> forceBeyond;
   OptimumHarmonicsCheck optimumCheck;
   double merit(const continuation::FollowedPeak& p) const { return byForce ? p.measure / p.parameter : p.measure; }
+  /// The optimum sits at the grid's first or last value: it may lie beyond the range.
+  bool optimumAtRangeEnd() const;
+  /// Against the peaks of frequency curves traced at some values (a value-list study's
+  /// tops, as DiscPeakFollowingSpec::knownPeaks; those without a peak, measure 0, skipped).
+  PeakAgreement agreementWith(const std::vector<continuation::KnownPeak>& curvePeaks) const;
 };
 
 /// The spec's value of `parameter` (preload, mu, kn = kt; 1 for Force: a scale of the

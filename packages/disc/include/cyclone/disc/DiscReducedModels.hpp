@@ -94,6 +94,10 @@ struct DiscReducedModels {
 
 /// The nodal diameters harmonics `harmonics` of engine order `engineOrder` live on (h EO mod N folded to 0..N/2).
 std::vector<int> nodalDiametersFor(int sectors, int engineOrder, const std::vector<int>& harmonics);
+/// The nodal diameters a curve of `harmonics` needs with its harmonics check, which adds
+/// the harmonics above the highest up to `harmonicsCheckTo` (at least one: highest + 1).
+std::vector<int> nodalDiametersForCheckedCurve(int sectors, int engineOrder, const std::vector<int>& harmonics,
+                                               int harmonicsCheckTo);
 
 /// The file the model of nodal diameter `nodalDiameter` is cached in under cacheDirectory
 /// (its name carries the digest of the model's inputs).

@@ -56,6 +56,8 @@ struct FatigueMap {
   std::vector<CycleMeasures> cycle;
   std::vector<double> safetyFactor;
   std::size_t critical = 0;
+  /// The nodes by safety factor, smallest (worst) first; equal factors in node order.
+  std::vector<std::size_t> nodesWorstFirst() const;
 };
 FatigueMap assessFatigue(const SectorVibration& vibration, const FatigueMaterial& material, int samples = 64);
 

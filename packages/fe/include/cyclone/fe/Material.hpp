@@ -21,6 +21,8 @@ const char* unitSystemName(UnitSystem units);
 const char* stressUnitName(UnitSystem units);
 /// One stress unit in MPa (1, 1e-6); 0 for Other.
 double stressUnitInMpa(UnitSystem units);
+/// One length unit in metres (1e-3, 1); 0 for Other.
+double lengthUnitInMetres(UnitSystem units);
 
 /// Isotropic linear elastic material in a consistent unit set (examples: mm, N, s, t).
 struct IsotropicElastic {
@@ -40,5 +42,9 @@ struct IsotropicElastic {
   /// 6x6 elasticity matrix in Voigt order xx, yy, zz, yz, xz, xy with engineering shear strains.
   Eigen::Matrix<double, 6, 6> elasticity() const;
 };
+
+/// The centrifugal stress scale rho (Omega r)^2 at `radius` and `rpm` over E: the strain
+/// the spin alone puts there (titanium bursts near 1 %).
+double centrifugalStrainScale(const IsotropicElastic& material, double rpm, double radius);
 
 }  // namespace cyclone::fe

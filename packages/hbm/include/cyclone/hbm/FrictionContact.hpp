@@ -31,7 +31,10 @@ public:
   const FrictionContactParameters& parameters() const { return p_; }
 
   int dimension() const override { return p_.tangentialDirections + 1; }
-  int recommendedSamples() const override { return 256; }
+  /// Samples per period a friction law needs by default (its stick-slip events placed
+  /// between samples: the law's error is first order in their spacing).
+  static constexpr int kRecommendedSamples = 256;
+  int recommendedSamples() const override { return kRecommendedSamples; }
   /// A 2D contact: its law followed in continuous time along the Hermite
   /// interpolant of the motion's samples, every instant (closing, opening, stick,
   /// slip) located between the samples, the harmonics C1 in the motion

@@ -20,6 +20,14 @@ struct RotationAxis {
 /// Rotates p by `angle` (radians, right-handed) about the axis.
 Point rotate(const Point& p, double angle, const RotationAxis& axis);
 
+/// The largest distance of a mesh node from the axis (0 for no nodes): the radius a
+/// centrifugal load's scale and a plausibility check of the length unit are taken at.
+double outermostRadius(const Mesh& mesh, const RotationAxis& axis);
+
+/// Whether two axes are one line: directions parallel (either sense) and each point on
+/// the other's line, within 1e-9 (the points' offset relative to max(1, its length)).
+bool sameRotationLine(const RotationAxis& a, const RotationAxis& b);
+
 struct NodePairing {
   std::vector<Index> left, right;  ///< right[i] = partner of left[i]
   double maxDistance = 0;          ///< largest |R x_left - x_right| over the pairs

@@ -5,6 +5,7 @@
 // curves the point solved with one harmonic more). Friction and gaps place their events
 // only to within a sample, and a friction-damped peak moves with H, so both are
 // measured on every curve rather than assumed.
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -117,6 +118,13 @@ NewtonStepEstimate estimateNewtonStep(int dofs, const hbm::HarmonicSet& harmonic
 double elementJacobianSeconds(int samples, int numCoefficients, const std::vector<int>& elementDimensions);
 /// More memory than this for a Newton step's solver is refused.
 constexpr double kMaxSolverGigabytes = 12;
+
+/// The time samples per period a curve of `harmonics` takes by default: at least 64 and
+/// 4 H + 1; with a nonsmooth law among `elements` (recommendedSamples() > 0: contacts,
+/// friction, gaps, whose events between samples shift with the sampling) also the law's
+/// own count and harmonics.nonsmoothSamples(), so the samples grow with the harmonics.
+int recommendedSamples(const hbm::HarmonicSet& harmonics,
+                       const std::vector<std::shared_ptr<const hbm::NonlinearElement>>& elements);
 
 /// A sample count from kSamplesExcessFactor times `needed` (what the harmonics and the
 /// elements need, `neededWhy` saying so) is said with its cost before any work: the
