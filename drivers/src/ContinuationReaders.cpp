@@ -54,15 +54,9 @@ void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& 
   if (!(opt.turnAngle > 0 && opt.turnAngle < 1.5))
     throw InputError(cs.where("turn_angle"), "must lie in (0, 1.5) radians");
   using LS = Options::LineSearch;
-  const std::string name = cs.getString("line_search", "full_step");
-  if (name == "full_step")
-    opt.lineSearch = LS::FullStep;
-  else if (name == "backtrack")
-    opt.lineSearch = LS::Backtrack;
-  else if (name == "polynomial")
-    opt.lineSearch = LS::Polynomial;
-  else
-    throw InputError(cs.where("line_search"), "'" + name + "': must be full_step, backtrack or polynomial");
+  opt.lineSearch = cs.getChoice<LS>(
+      "line_search", "full_step", {{"full_step", LS::FullStep}, {"backtrack", LS::Backtrack}, {"polynomial", LS::Polynomial}},
+      [](const std::string& word) { return "'" + word + "': must be full_step, backtrack or polynomial"; });
   if (cs.has("line_search") && opt.engine != Options::Engine::Loca)
     throw InputError(cs.where("line_search"), "is for engine: loca (the predictor-corrector backtracks by itself)");
 }

@@ -34,9 +34,9 @@ namespace {
 
 // disc_response/peak_stress's own keys.
 void readPeakStressKeys(SceneSection s, PeakStressSpec& spec) {
-  const std::string margin = s.getString("margin", "true");
-  if (margin != "true" && margin != "false") throw InputError(s.where("margin"), "must be true or false, got '" + margin + "'");
-  spec.margin = margin == "true";
+  spec.margin = s.getChoice<bool>("margin", "true", {{"true", true}, {"false", false}}, [](const std::string& word) {
+    return "must be true or false, got '" + word + "'";
+  });
   spec.animationSteps = s.getInt("animation_steps", spec.animationSteps);
   spec.atHz = s.getDouble("at_hz", 0.0);
   if (s.has("at_hz") && !(spec.atHz > 0 && std::isfinite(spec.atHz)))

@@ -100,13 +100,14 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     }
     const int values = s.getInt("values", 24);
     if (values < 3 || values > 400) throw InputError(s.where("values"), "must lie in 3..400");
-    const std::string method = s.getString("method", "peak_search");
-    if (method != "peak_search" && method != "continuation")
-      throw InputError(s.where("method"), "must be peak_search (a peak search per value) or continuation (one LOCA "
-                                          "continuation of the peak), not '" + method + "'");
-    if (method == "continuation" && s.has("values"))
+    const bool byContinuation = s.getChoice<bool>(
+        "method", "peak_search", {{"peak_search", false}, {"continuation", true}}, [](const std::string& word) {
+          return "must be peak_search (a peak search per value) or continuation (one LOCA continuation of the "
+                 "peak), not '" + word + "'";
+        });
+    if (byContinuation && s.has("values"))
       throw InputError(s.where("values"), "is not used by method continuation (LOCA's steps are the points): drop it");
-    if (method == "continuation" && (name == "loss_factor" || name == "speed"))
+    if (byContinuation && (name == "loss_factor" || name == "speed"))
       throw InputError(s.where("method"), "continuation follows the contact parameters, the clearance and the force; "
                                           "the " + name + " rebuilds the system per value: use peak_search");
     s.rejectUnknownKeys();
@@ -120,7 +121,7 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     if (!(refValue >= range[0] && refValue <= range[1]))
       throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
                                              "): the following starts at the reference curve's peak");
-    out.push_back({name, range[0], range[1], values, method == "continuation"});
+    out.push_back({name, range[0], range[1], values, byContinuation});
   }
   peakStudies.rejectUnknownKeys();
   return out;

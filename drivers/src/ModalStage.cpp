@@ -114,10 +114,9 @@ cyclic::ModalSweepProblem readModalSweep(SceneSection& m, const mesh::Mesh& mesh
   }
   const auto speeds = m.getDoubleList("speeds_rpm", {0.0});
   const auto prestress = readPrestressKind(m, "linear");
-  const std::string macChoice = m.getString("mac", "none");
-  if (macChoice != "speeds" && macChoice != "none")
-    throw InputError(m.where("mac"), "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'");
-  writeMac = macChoice == "speeds";
+  writeMac = m.getChoice<bool>("mac", "none", {{"speeds", true}, {"none", false}}, [](const std::string&) {
+    return "use 'speeds' (MAC of each ND's modes, lowest against highest speed) or 'none'";
+  });
   m.rejectUnknownKeys();
   for (int k : problem.nodalDiameters)
     if (k < 0 || k > sectors / 2)

@@ -20,11 +20,10 @@ mesh::RotationAxis readRotationAxis(SceneSection& section) {
 }
 
 cyclic::PrestressKind readPrestressKind(SceneSection& section, const std::string& fallback) {
-  const std::string value = section.getString("prestress", fallback);
-  if (value == "linear") return cyclic::PrestressKind::Linear;
-  if (value == "nonlinear") return cyclic::PrestressKind::Nonlinear;
-  if (value == "none") return cyclic::PrestressKind::None;
-  throw InputError(section.where("prestress"), "unknown prestress '" + value + "' (use linear, nonlinear or none)");
+  using Kind = cyclic::PrestressKind;
+  return section.getChoice<Kind>(
+      "prestress", fallback, {{"linear", Kind::Linear}, {"nonlinear", Kind::Nonlinear}, {"none", Kind::None}},
+      [](const std::string& value) { return "unknown prestress '" + value + "' (use linear, nonlinear or none)"; });
 }
 
 std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
@@ -53,11 +52,9 @@ std::vector<int> readHarmonicList(SceneSection& section, int defaultMax) {
 
 response::ForcedResponseSetup::Stability readStability(SceneSection& section) {
   using Stability = response::ForcedResponseSetup::Stability;
-  const std::string value = section.getString("stability", "auto");
-  if (value == "auto") return Stability::Auto;
-  if (value == "true") return Stability::Always;
-  if (value == "false") return Stability::Never;
-  throw InputError(section.where("stability"), "must be auto, true or false");
+  return section.getChoice<Stability>(
+      "stability", "auto", {{"auto", Stability::Auto}, {"true", Stability::Always}, {"false", Stability::Never}},
+      [](const std::string&) { return "must be auto, true or false"; });
 }
 
 HarmonicsTargetKeys readHarmonicsTarget(SceneSection& section, int defaultMax) {
@@ -108,12 +105,11 @@ std::vector<std::string> CyclicFaces::right() const {
 
 CyclicFaces readCyclicFaces(SceneSection& cy) {
   CyclicFaces f;
-  const std::string configuration = cy.getString("configuration", "fixed_shroud");
-  if (configuration != "fixed_shroud" && configuration != "cantilever")
-    throw InputError(cy.where("configuration"), "unknown configuration '" + configuration +
-                                                    "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc "
-                                                    "faces only)");
-  f.shroudCyclic = configuration == "fixed_shroud";
+  f.shroudCyclic = cy.getChoice<bool>(
+      "configuration", "fixed_shroud", {{"fixed_shroud", true}, {"cantilever", false}}, [](const std::string& word) {
+        return "unknown configuration '" + word + "' (fixed_shroud: disc and shroud faces cyclic; cantilever: disc "
+                                                  "faces only)";
+      });
   f.discLeft = cy.getStringList("disc_left_node_sets", f.discLeft);
   f.discRight = cy.getStringList("disc_right_node_sets", f.discRight);
   f.shroudLeft = cy.getStringList("shroud_left_node_sets", f.shroudLeft);
@@ -158,19 +154,22 @@ fe::IsotropicElastic readMaterial(SceneSection m) {
   material.E = m.getDouble("E", material.E);
   material.nu = m.getDouble("nu", material.nu);
   material.rho = m.getDouble("rho", material.rho);
-  const std::string quadrature = m.getString("mass_quadrature", "exact");
-  if (quadrature == "stiffness_rule") material.massQuadrature = fe::MassQuadrature::StiffnessRule;
-  else if (quadrature != "exact")
-    throw InputError(m.where("mass_quadrature"), "'" + quadrature + "': exact (the default) or stiffness_rule "
-                                                 "(CalculiX's C3D10 mass and centrifugal load, for comparing with it)");
+  using Quadrature = fe::MassQuadrature;
+  material.massQuadrature = m.getChoice<Quadrature>(
+      "mass_quadrature", "exact", {{"exact", Quadrature::Exact}, {"stiffness_rule", Quadrature::StiffnessRule}},
+      [](const std::string& word) {
+        return "'" + word + "': exact (the default) or stiffness_rule (CalculiX's C3D10 mass and centrifugal load, "
+                            "for comparing with it)";
+      });
   // The unit set, said rather than guessed from E (a stress unit, fatigue data by name).
-  const std::string units = m.getString("units", "mm-N-s-t");
-  if (units == "mm-N-s-t") material.units = fe::UnitSystem::MillimetreNewtonSecondTonne;
-  else if (units == "SI") material.units = fe::UnitSystem::SI;
-  else if (units == "other") material.units = fe::UnitSystem::Other;
-  else
-    throw InputError(m.where("units"), "'" + units + "': mm-N-s-t (the default: mm, N, s, t; stresses in MPa), SI "
-                                       "(m, N, s, kg; Pa) or other (a consistent set the code cannot name)");
+  using Units = fe::UnitSystem;
+  material.units = m.getChoice<Units>(
+      "units", "mm-N-s-t",
+      {{"mm-N-s-t", Units::MillimetreNewtonSecondTonne}, {"SI", Units::SI}, {"other", Units::Other}},
+      [](const std::string& word) {
+        return "'" + word + "': mm-N-s-t (the default: mm, N, s, t; stresses in MPa), SI (m, N, s, kg; Pa) or "
+                            "other (a consistent set the code cannot name)";
+      });
   if (m.has("fatigue")) m.section("fatigue");  // read where a margin is asked for (readPeakStressSpec)
   m.rejectUnknownKeys();
   material.validate(m.location());

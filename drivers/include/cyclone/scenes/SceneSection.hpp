@@ -6,6 +6,8 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <array>
+#include <functional>
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <vector>
@@ -53,6 +55,18 @@ public:
   std::string requiredText(const std::string& key) const;
   /// "file: section 'path'" for messages about the section as a whole.
   std::string location() const;
+  /// A key naming one of `choices` (its word and what it means; `fallback` when the key is
+  /// absent): what the word means. Any other word is an InputError under the key saying
+  /// refusal(word), the choices and what each means.
+  template <class T>
+  T getChoice(const std::string& key, const std::string& fallback,
+              std::initializer_list<std::pair<const char*, T>> choices,
+              const std::function<std::string(const std::string& word)>& refusal) {
+    const std::string word = getString(key, fallback);
+    for (const auto& [name, meaning] : choices)
+      if (word == name) return meaning;
+    throw InputError(where(key), refusal(word));
+  }
   /// Runs `read` (a library call that checks a value read from `key`) and puts its
   /// InputError under that key: the library names no scene key, the reader does.
   template <class Read>
