@@ -3,6 +3,7 @@ reference the Python API must equal on the same problem."""
 
 import csv
 import pathlib
+import re
 import subprocess
 
 import numpy as np
@@ -26,6 +27,13 @@ def run(program, scene, out):
     subprocess.run([str(program), "run", str(scene), "--output", str(out)], check=True, capture_output=True,
                    env={"OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
     return out
+
+
+def h5_attribute(path, name):
+    """An integer attribute of an HDF5 file's root group, read by h5dump (Debian hdf5-tools,
+    scripts/debian-packages.txt; h5py is not among the project's packages)."""
+    text = subprocess.run(["h5dump", "-a", name, str(path)], check=True, capture_output=True, text=True).stdout
+    return int(re.search(r"\(0\): (-?\d+)", text)[1])
 
 
 def read_csv(path):
