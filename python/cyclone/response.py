@@ -86,7 +86,7 @@ class ForcedResponse:
         self.parameter = raw["parameter"]
         self.omega = raw["omega"]
         self.x = raw["x"]
-        self.coefficients = self.x.reshape(len(self.omega), num_dofs, -1)
+        self.coefficients = self.x.reshape(len(self.omega), num_dofs, self.x.shape[1] // num_dofs)  # also of no point
         self.amplitude = raw["amplitude"]
         self.max_abs = raw["max_abs"]
         self.stable = raw["stable"]

@@ -18,15 +18,43 @@ SECTOR = """  mesh:
 
 
 def run(program, scene, out):
-    """Runs `scene` (a path, or YAML text written to out.yaml) with its products in `out`."""
+    """Runs `scene` (a path, or YAML text written to out.yaml) with its products in `out` and
+    its log (standard output and error) in out.log."""
     out = pathlib.Path(out)
     if isinstance(scene, str):
         path = out.with_suffix(".yaml")
         path.write_text(scene)
         scene = path
-    subprocess.run([str(program), "run", str(scene), "--output", str(out)], check=True, capture_output=True,
-                   env={"OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
+    done = subprocess.run([str(program), "run", str(scene), "--output", str(out)], check=True, capture_output=True,
+                          text=True, env={"OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
+    out.with_suffix(".log").write_text(done.stdout + done.stderr)
     return out
+
+
+ENGINES = {"LOCA": "loca", "the predictor-corrector": "predictor_corrector"}  # the log's names
+
+
+def retraces(out, curve, engine=None):
+    """The program's own account of how it traced its curve `curve` (frc, disc_frc) in `out`
+    (run's products), not its retraces record: ((engine, other_engine_tried, samples_factor,
+    samples_factors_tried), whole, stop_reason, points). The lines its log says as it starts
+    each retrace ("the predictor-corrector left the curve incomplete (...); traced again with
+    LOCA", "incomplete with 64 AFT samples; traced again with 128"); the scene's samples (its
+    first forced-response line); the AFT samples of the curve it wrote (<curve>.h5's samples
+    attribute) over those; whether that curve covers the range (its warning "<curve>: the
+    curve is incomplete" where not); the engine: the other one where the log says it traced
+    the curve again and the written curve is whole with the scene's samples, else the scene's
+    `engine` (None: the predictor-corrector); the stop reason and points of report.md's line."""
+    log = out.with_suffix(".log").read_text()
+    samples = int(re.search(r"forced response: .*harmonics up to \d+, (\d+) samples", log)[1])
+    raised = [int(n) for n in re.findall(rf"incomplete with {samples} AFT samples; traced again with (\d+)", log)]
+    assert all(n % samples == 0 for n in raised)
+    other = re.findall(r"left the curve incomplete \(.*\); traced again with (LOCA|the predictor-corrector)\n", log)
+    written = h5_attribute(out / f"{curve}.h5", "samples")
+    whole = f"{curve}: the curve is incomplete" not in log
+    kept = ENGINES[other[-1]] if other and whole and written == samples else engine or "predictor_corrector"
+    line = re.search(rf"^- {curve}: (\d+) points .*? in [0-9.e+-]+ s, (.*)$", (out / "report.md").read_text(), re.M)
+    return (kept, bool(other), written // samples, tuple(n // samples for n in raised)), whole, line[2], int(line[1])
 
 
 def h5_attribute(path, name):
@@ -86,3 +114,16 @@ def assert_peaks_equal(peaks, path, parameter):
     assert peaks.optimum == (int(optimum[0]) if len(optimum) else None)
     beyond = np.array([float(v) if v else -1.0 for v in expected["force_beyond_h"]])
     np.testing.assert_allclose(peaks.force_beyond, beyond, rtol=1e-9)
+
+
+def assert_retraces_equal(curve, out, name, engine=None):
+    """A curve's retraces, end and stop reason from Python as the program's account of its
+    curve `name` in `out` (retraces); returns that account."""
+    reference, whole, stop_reason, points = retraces(out, name, engine)
+    r = curve.retraces
+    assert (r.engine.value, r.other_engine_tried, r.samples_factor, r.samples_factors_tried) == reference
+    assert curve.finished == whole
+    # report.md's line, word for word (the count of its flags after it)
+    assert stop_reason == curve.stop_reason or stop_reason.startswith(curve.stop_reason + "; ")
+    assert len(curve) == points
+    return reference, whole

@@ -7,7 +7,8 @@ digests of every input), and traces the same curve: every point's frequency and
 max |x(t)| to 1e-10, and the headline peak of harmonics 0..2 as the program's (its CSV's
 10 digits); then follows the same peak: every value's peak and frequency as the program's
 peak_preload.csv (10 digits); and the stresses and fatigue margin at the peak, every node as
-the program's disc_peak_stress.csv (8 digits). Label scene: about 20 s."""
+the program's disc_peak_stress.csv (8 digits); the curve's retraces, end and stop reason as
+the program's account of it (program.retraces). Label scene: about 20 s."""
 
 import numpy as np
 import pytest
@@ -52,6 +53,17 @@ def test_the_disc_response_equals_the_programs(program_out, python_response):
     assert abs(response.headline.hz / float(levels["freq_hz"][top]) - 1) < 1e-9
     # The peak lies between the shroud's free and stuck resonances (the estimate's).
     assert response.estimate["free_hz"] < response.headline.hz < response.estimate["stuck_hz"] * 1.01
+
+
+@pytest.mark.disc
+def test_the_disc_curves_retraces_and_stop_are_the_programs(program_out, python_response):
+    # The program's account of its disc_frc (its log's retrace lines, disc_frc.h5's samples,
+    # its incomplete-curve warning, report.md's stop reason): traced whole once by the
+    # predictor-corrector with the scene's 256 samples, and so from Python.
+    reference = program.assert_retraces_equal(python_response.curve, program_out, "disc_frc")
+    assert reference == (("predictor_corrector", False, 1, ()), True)
+    assert "forced response: 66 DOFs, harmonics up to 1, 256 samples" in program_out.with_suffix(".log").read_text()
+    assert python_response.curve.end is cyclone.BranchEnd.RANGE_END
 
 
 @pytest.mark.disc
