@@ -284,15 +284,27 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
                     excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
                     frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None):
     """The friction-damped response of the disc under engine order `engine_order`, the scenes'
-    disc_response keys: the shroud contacts' law (kn, kt per unit area and the interface's
-    preload, per_area; or per pair), the excitation (N per node on harmonic 1), the range
+    disc_response keys: harmonics (H: 0..H, or a list; it must hold 1), samples (0: the
+    automatic count; else 32 and 2 H + 1 at least), the shroud contacts' law (kn, kt per unit
+    area and the interface's preload, per_area; or per pair), the excitation (N per node on
+    harmonic 1), the range
     (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1),
     gap: gap elements in place of friction contacts at some pairs, a dict as the scenes'
     disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)}."""
     spec = _core.DiscResponseSpec()
-    spec.engine_order = int(engine_order)
-    spec.harmonics = [int(h) for h in harmonics]
-    spec.samples = int(samples)
+    spec.engine_order = arrays.integer(engine_order, "engine_order")
+    spec.harmonics = arrays.harmonic_list(harmonics)
+    # As the scenes' disc_response (DiscSceneReaders.cpp): the excitation acts on harmonic 1;
+    # samples 0 (the automatic count) or enough for the highest harmonic and the friction law
+    # (below 32 its error passes a few percent: 3 samples traced a curve of nonsense).
+    if 1 not in spec.harmonics:
+        raise InputError("harmonics", f"{spec.harmonics}: must contain harmonic 1: the engine-order excitation acts on it")
+    least = max(2 * max(spec.harmonics) + 1, 32)
+    spec.samples = arrays.integer(samples, "samples", 0)
+    if spec.samples != 0 and not least <= spec.samples <= arrays.MAX_SAMPLES:
+        raise InputError("samples", f"{spec.samples}: must lie in {least}..{arrays.MAX_SAMPLES} time samples per period "
+                                    f"(2 H + 1 resolve harmonic H = {max(spec.harmonics)}, and the friction contacts "
+                                    "need at least 32; 0: the automatic count)")
     spec.response_node_sets = list(response_node_sets)
     spec.set_contact(dict(law=law, kn=arrays.finite_number(kn, "kn"), kt=arrays.finite_number(kt, "kt"),
                           mu=arrays.finite_number(mu, "mu"), preload=arrays.finite_number(preload, "preload"),
@@ -308,6 +320,8 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
                           clearance=arrays.finite_number(gap.get("clearance", 0.0), "gap/clearance")))
     spec.set_excitation(dict(node_set=excitation_node_set, direction=arrays.vector(direction, "direction", 3),
                              amplitude=arrays.finite_number(amplitude, "amplitude")))
+    if frequency_range_hz is not None and (np.ndim(frequency_range_hz) != 1 or len(frequency_range_hz) != 2):
+        raise InputError("frequency_range_hz", f"must be (from, to) in Hz, got {frequency_range_hz!r}")
     from_hz, to_hz = (0.0, 0.0) if frequency_range_hz is None else (
         arrays.finite_number(frequency_range_hz[0], "frequency_range_hz"),
         arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))

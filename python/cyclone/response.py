@@ -115,6 +115,8 @@ class ForcedResponse:
 
     def mean(self, dof):
         """The mean (harmonic 0) of `dof` per point (zeros without harmonic 0)."""
+        if not isinstance(dof, (int, np.integer)) or not 0 <= dof < self.coefficients.shape[1]:
+            raise InputError("dof", f"{dof!r} is not a DOF of the system (0..{self.coefficients.shape[1] - 1})")
         if 0 not in self.harmonics:
             return np.zeros(len(self))
         return self.coefficients[:, dof, 0]
@@ -123,6 +125,8 @@ class ForcedResponse:
         """The amplitude of `harmonic` of `dof` per point."""
         if harmonic not in self.harmonics:
             raise InputError("harmonic", f"{harmonic} is not among the curve's harmonics {self.harmonics}")
+        if not isinstance(dof, (int, np.integer)) or not 0 <= dof < self.amplitude.shape[1]:
+            raise InputError("dof", f"{dof!r} is not a DOF of the system (0..{self.amplitude.shape[1] - 1})")
         return self.amplitude[:, dof, self.harmonics.index(harmonic)]
 
     def flagged(self, kind):

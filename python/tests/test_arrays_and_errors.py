@@ -131,6 +131,11 @@ def test_the_typed_end_of_a_trace_out_of_points():
     ("engine_order", dict(M=np.eye(2), K=K, engine_order=3)),  # not cyclic
     ("K_next", dict(M=np.eye(2), K=K, K_next=np.eye(2))),  # not cyclic
     ("sectors", dict(M=np.eye(2), K=K, sectors=0)),
+    ("engine_order", dict(M=np.eye(2), K=K, sectors=4, engine_order=1.5, K_next=-0.1 * np.eye(2))),  # not an int
+    ("samples", dict(M=np.eye(2), K=K, harmonics=5, samples=10)),  # below 2 H + 1 (the library's Aft said it)
+    ("samples", dict(M=np.eye(2), K=K, samples=64.5)),  # not read as 64
+    ("samples", dict(M=np.eye(2), K=K, samples=1 << 17)),  # above the scenes' 65536
+    ("harmonics", dict(M=np.eye(2), K=K, harmonics=[0, 1.5])),  # not read as 1
 ])
 def test_what_a_scene_refuses_is_refused_naming_the_argument(argument, kwargs):
     with pytest.raises(cyclone.InputError) as error:
@@ -168,3 +173,34 @@ def test_a_solver_failure_arrives_as_cyclone_solver_error():
     assert str(error.value).startswith(f"CHOLMOD: the matrix ({free} equations) is not positive definite")
     # Held at the bore the same call solves.
     assert cyclone.disc.static_solve(sector, speed_rpm=10000.0).relative_residual < 1e-8
+
+
+@pytest.mark.parametrize("harmonic", [-1, 1.5, "1"])
+def test_an_excitations_harmonic_is_a_whole_number_named_harmonic(harmonic):
+    with pytest.raises(cyclone.InputError) as error:
+        chain(np.eye(2), K, None).add_excitation(dof=0, harmonic=harmonic, cos=1.0)
+    assert error.value.key == "harmonic"
+
+
+def test_a_curves_accessors_name_a_wrong_dof():
+    curve = chain(np.eye(2), K, 0.02 * K).forced_response(0.3, 2.5, harmonics_check=False)
+    for call in (lambda: curve.mean(2), lambda: curve.amplitude_of(-1, 1)):
+        with pytest.raises(cyclone.InputError) as error:
+            call()
+        assert error.value.key == "dof"
+
+
+@pytest.mark.parametrize("argument, kwargs", [
+    ("samples", dict(samples=3)),  # the scenes' disc: at least 32 (3 samples traced nonsense)
+    ("samples", dict(harmonics=[0, 1, 20], samples=32)),  # and 2 H + 1
+    ("harmonics", dict(harmonics=[0, 2])),  # the engine-order excitation acts on harmonic 1
+    ("harmonics", dict(harmonics=[0, 1.5])),
+    ("engine_order", dict(engine_order=2.5)),
+    ("frequency_range_hz", dict(frequency_range_hz=(1500.0,))),
+])
+def test_what_a_disc_scene_refuses_is_refused_before_any_fe_work(argument, kwargs):
+    # As DiscSceneReaders.cpp refuses disc_response's keys; checked before the mesh and the
+    # models are used (here: none given).
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.forced_response(None, None, **{"engine_order": 3, **kwargs})
+    assert error.value.key == argument
