@@ -28,7 +28,7 @@ from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.di
 from .disc_static import StaticSolution, static_solve  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
 from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
-from .response import ForcedResponse
+from .response import ForcedResponse, set_continuation
 
 
 class Mesh:
@@ -282,7 +282,8 @@ class DiscResponse:
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
                     mu=0.4, law="per_area", patches=0, amplitude=1.0, direction=(0.0, 0.0, 1.0),
                     excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
-                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None):
+                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None,
+                    engine=None, tolerance=None, **steps):
     """The friction-damped response of the disc under engine order `engine_order`, the scenes'
     disc_response keys: harmonics (H: 0..H, or a list; it must hold 1), samples (0: the
     automatic count; else 32 and 2 H + 1 at least), the shroud contacts' law (kn, kt per unit
@@ -290,7 +291,10 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
     harmonic 1), the range
     (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1),
     gap: gap elements in place of friction contacts at some pairs, a dict as the scenes'
-    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)}."""
+    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)};
+    engine, tolerance and steps (initial_step, min_step, max_step, max_points, turn_angle): the
+    scenes' disc_response/continuation (engine None: the predictor-corrector, LOCA retracing
+    what it leaves incomplete; named: that engine alone; the disc's tolerance 1e-8)."""
     spec = _core.DiscResponseSpec()
     spec.engine_order = arrays.integer(engine_order, "engine_order")
     spec.harmonics = arrays.harmonic_list(harmonics)
@@ -326,8 +330,9 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
         arrays.finite_number(frequency_range_hz[0], "frequency_range_hz"),
         arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))
     stability = {True: "always", False: "never"}.get(stability, stability)
+    continuation = set_continuation(_core.TraceOptions(), engine, tolerance, steps)
     raw = _core.disc_forced_response(mesh._core, models._core, spec, from_hz, to_hz, int(family), stability,
-                                     int(harmonics_check_to))
+                                     int(harmonics_check_to), continuation)
     h = raw["headline"]
     return DiscResponse(
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),

@@ -189,15 +189,7 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
         raise InputError("stability", f"{stability!r}: must be 'auto', 'always', 'never', True or False")
     options.stability = stability
     options.harmonics_check_to = _harmonics_check_to(harmonics_check, max(system.harmonics))
-    if engine not in (None, "predictor_corrector", "loca"):
-        raise InputError("engine", f"{engine!r}: must be None, 'predictor_corrector' or 'loca'")
-    options.engine = engine or ""
-    if tolerance is not None:
-        tolerance = arrays.finite_number(tolerance, "tolerance")
-        if not 1e-14 <= tolerance <= 1e-4:
-            raise InputError("tolerance", f"{tolerance}: must lie in 1e-14..1e-4, the residual relative to the forces")
-        options.tolerance = tolerance
-    _set_steps(options, steps, engine)
+    set_continuation(options, engine, tolerance, steps)
     if parameter == "force_scale":
         # The residual is relative to the forces at scale 1, so a point at scale s is solved
         # to tolerance / s of its own forces: near 0 the solution 0 passes.
@@ -207,6 +199,22 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
                 raise InputError(key, f"a force scale of {value:g} is solved to the tolerance over it of its own "
                                       f"forces (the residual is relative to the forces at scale 1): start at "
                                       f"{smallest:g} or above, or at 0")
+    return options
+
+
+def set_continuation(options, engine, tolerance, steps):
+    """The continuation's keys of a scene (its `continuation` section) on a _core.TraceOptions,
+    each checked (InputError naming it): engine None (the predictor-corrector, LOCA where it
+    stops short), "predictor_corrector" or "loca" alone; tolerance (1e-14..1e-4); steps."""
+    if engine not in (None, "predictor_corrector", "loca"):
+        raise InputError("engine", f"{engine!r}: must be None, 'predictor_corrector' or 'loca'")
+    options.engine = engine or ""
+    if tolerance is not None:
+        tolerance = arrays.finite_number(tolerance, "tolerance")
+        if not 1e-14 <= tolerance <= 1e-4:
+            raise InputError("tolerance", f"{tolerance}: must lie in 1e-14..1e-4, the residual relative to the forces")
+        options.tolerance = tolerance
+    _set_steps(options, steps, engine)
     return options
 
 

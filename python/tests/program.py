@@ -87,9 +87,10 @@ DISC_SCENE = """cyclone:
 """
 
 
-def disc_response(out, stability="auto"):
+def disc_response(out, stability="auto", **continuation):
     """DISC_SCENE's response from Python, on the reduced models the program wrote in `out`
-    (the same inputs, so their files: none built again); `stability` as the scene's."""
+    (the same inputs, so their files: none built again); `stability` and `continuation`
+    (engine, tolerance, steps) as the scene's."""
     import cyclone
 
     sector = cyclone.disc.shrouded_sector(mesh_size=12.0)
@@ -97,7 +98,7 @@ def disc_response(out, stability="auto"):
     models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=nds, cache_directory=out / "reduced_models")
     assert (models.reused, models.built) == (3, 0)
     return cyclone.disc.forced_response(sector, models, engine_order=3, harmonics=[0, 1], preload=20000.0,
-                                        amplitude=20.0, harmonics_check_to=2, stability=stability)
+                                        amplitude=20.0, harmonics_check_to=2, stability=stability, **continuation)
 
 
 def assert_peaks_equal(peaks, path, parameter):

@@ -197,6 +197,10 @@ def test_a_curves_accessors_name_a_wrong_dof():
     ("harmonics", dict(harmonics=[0, 1.5])),
     ("engine_order", dict(engine_order=2.5)),
     ("frequency_range_hz", dict(frequency_range_hz=(1500.0,))),
+    ("engine", dict(engine="newton")),  # disc_response/continuation's keys
+    ("tolerance", dict(tolerance=1e-2)),
+    ("min_step", dict(min_step=-1.0)),
+    ("max_pointz", dict(max_pointz=10)),
 ])
 def test_what_a_disc_scene_refuses_is_refused_before_any_fe_work(argument, kwargs):
     # As DiscSceneReaders.cpp refuses disc_response's keys; checked before the mesh and the
