@@ -128,3 +128,34 @@ def assert_retraces_equal(curve, out, name, engine=None):
     assert stop_reason == curve.stop_reason or stop_reason.startswith(curve.stop_reason + "; ")
     assert len(curve) == points
     return reference, whole
+
+
+def assert_curve_equal(curve, expected, names):
+    """Every point of a matrix system's `curve` as the program's frc.csv (`expected`, read_csv):
+    the frequency, and per output DOF (names[k], the CSV's name of curve.output_dofs[k]) the
+    mean, the amplitude of every harmonic above 0 and max |x(t)|, to 1e-10 (the CSV's 12
+    significant digits; the mean and amplitudes against the DOF's largest max |x(t)|); Hill's
+    verdicts and the flags equal."""
+    assert len(curve) == len(expected["omega_rad_s"]) > 20
+    number = lambda key: expected[key].astype(float)  # noqa: E731
+    np.testing.assert_allclose(curve.omega, number("omega_rad_s"), rtol=1e-10, atol=0)
+    for k, (dof, name) in enumerate(zip(curve.output_dofs, names)):
+        scale = number(f"{name}_max").max()
+        np.testing.assert_allclose(curve.mean(dof), number(f"{name}_h0"), rtol=0, atol=1e-10 * scale)
+        for h in (h for h in curve.harmonics if h > 0):
+            np.testing.assert_allclose(curve.amplitude_of(dof, h), number(f"{name}_amp_h{h}"), rtol=0,
+                                       atol=1e-10 * scale, err_msg=f"{name}, harmonic {h}")
+        np.testing.assert_allclose(curve.max_abs[:, k], number(f"{name}_max"), rtol=1e-10, atol=0)
+    np.testing.assert_array_equal(curve.stable, expected["stable"].astype(int))
+    np.testing.assert_array_equal(curve.flags, expected["bifurcation"])
+
+
+def assert_whole_curve_is_the_programs(curve, cyclone_program, scene, out, names):
+    """Runs `scene` into `out`; `curve`, the same system's from Python, traced whole once as
+    the program says it traced its own (assert_retraces_equal) and equal to its frc.csv point
+    for point (assert_curve_equal). Returns that CSV."""
+    expected = read_csv(run(cyclone_program, scene, out) / "frc.csv")
+    assert curve.end.value == "range_end"
+    assert_curve_equal(curve, expected, names)
+    assert assert_retraces_equal(curve, out, "frc") == (("predictor_corrector", False, 1, ()), True)
+    return expected

@@ -26,21 +26,7 @@ def python_curve():
 
 
 def test_the_nlvib_07_curve_equals_the_programs(cyclone_program, scene_dir, tmp_path):
-    out = program.run(cyclone_program, scene_dir / "nlvib_07.yaml", tmp_path / "out")
-    expected = program.read_csv(out / "frc.csv")
     curve = python_curve()
-    assert curve.end is cyclone.BranchEnd.RANGE_END
-    assert len(curve) == len(expected["omega_rad_s"]) > 20
-    number = lambda key: expected[key].astype(float)  # noqa: E731
-    np.testing.assert_allclose(curve.omega, number("omega_rad_s"), rtol=1e-10, atol=0)
-    for k, dof in enumerate([1, 0, 2]):
-        scale = number(f"dof{dof}_max").max()
-        np.testing.assert_allclose(curve.mean(dof), number(f"dof{dof}_h0"), rtol=0, atol=1e-10 * scale)
-        for h in range(1, 8):
-            np.testing.assert_allclose(curve.amplitude_of(dof, h), number(f"dof{dof}_amp_h{h}"), rtol=0,
-                                       atol=1e-10 * scale, err_msg=f"DOF {dof}, harmonic {h}")
-        np.testing.assert_allclose(curve.max_abs[:, k], number(f"dof{dof}_max"), rtol=1e-10, atol=0)
-    np.testing.assert_array_equal(curve.stable, expected["stable"].astype(int))
-    np.testing.assert_array_equal(curve.flags, expected["bifurcation"])
+    expected = program.assert_whole_curve_is_the_programs(curve, cyclone_program, scene_dir / "nlvib_07.yaml",
+                                                          tmp_path / "out", ["dof1", "dof0", "dof2"])
     np.testing.assert_array_equal(curve.segment, expected["segment"].astype(int))
-    assert program.assert_retraces_equal(curve, out, "frc") == (("predictor_corrector", False, 1, ()), True)
