@@ -1,5 +1,6 @@
-"""numpy in and out, and errors as Python exceptions: C order, Fortran order and a
-non-contiguous slice are the same input; a wrong shape or a NaN stops the call naming the
+"""numpy in and out, and errors as Python exceptions: C order, Fortran order, a
+non-contiguous slice and other dtypes (float32, int32) are the same input, the results
+float64 arrays of one row per point; a wrong shape or a NaN stops the call naming the
 argument; the library's InputError arrives as cyclone.InputError with the key it names."""
 
 import numpy as np
@@ -30,10 +31,19 @@ def test_c_order_fortran_order_and_a_strided_slice_give_the_same_curve():
     strided = big[::2, ::3]
     assert not strided.flags.c_contiguous and not strided.flags.f_contiguous
     for M_, K_, C_ in [(np.asfortranarray(M), np.asfortranarray(K), np.asfortranarray(C)), (M, strided, C),
-                       (M.tolist(), K.astype(np.float32).astype(np.float64), C)]:
+                       (M.tolist(), K.astype(np.float32).astype(np.float64), C),
+                       (M.astype(np.float32), K.astype(np.int32), C)]:  # other dtypes, their values exact
         curve = curve_of(chain(M_, K_, C_))
         np.testing.assert_array_equal(curve.omega, reference.omega)
         np.testing.assert_array_equal(curve.x, reference.x)
+    # Out: float64 arrays of one row per point; Hill's verdicts and the sweeps as integers.
+    P = len(reference)
+    for array, shape in [(reference.omega, (P,)), (reference.parameter, (P,)), (reference.x, (P, 2 * 11)),
+                         (reference.coefficients, (P, 2, 11)), (reference.amplitude, (P, 2, 6)),
+                         (reference.max_abs, (P, 2))]:
+        assert array.shape == shape and array.dtype == np.float64
+    assert reference.leading_exponent.shape == (P,) and reference.leading_exponent.dtype == np.complex128
+    assert reference.stable.dtype.kind == reference.segment.dtype.kind == "i"
 
 
 def test_the_callers_arrays_are_copied_and_the_systems_read_only():
