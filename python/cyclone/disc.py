@@ -28,7 +28,7 @@ from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.di
 from .disc_static import StaticSolution, static_solve  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
 from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
-from .response import ForcedResponse
+from .response import ForcedResponse, set_continuation
 
 
 class Mesh:
@@ -282,17 +282,33 @@ class DiscResponse:
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
                     mu=0.4, law="per_area", patches=0, amplitude=1.0, direction=(0.0, 0.0, 1.0),
                     excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
-                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None):
+                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None,
+                    engine=None, tolerance=None, **steps):
     """The friction-damped response of the disc under engine order `engine_order`, the scenes'
-    disc_response keys: the shroud contacts' law (kn, kt per unit area and the interface's
-    preload, per_area; or per pair), the excitation (N per node on harmonic 1), the range
+    disc_response keys: harmonics (H: 0..H, or a list; it must hold 1), samples (0: the
+    automatic count; else 32 and 2 H + 1 at least), the shroud contacts' law (kn, kt per unit
+    area and the interface's preload, per_area; or per pair), the excitation (N per node on
+    harmonic 1), the range
     (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1),
     gap: gap elements in place of friction contacts at some pairs, a dict as the scenes'
-    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)}."""
+    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)};
+    engine, tolerance and steps (initial_step, min_step, max_step, max_points, turn_angle): the
+    scenes' disc_response/continuation (engine None: the predictor-corrector, LOCA retracing
+    what it leaves incomplete; named: that engine alone; the disc's tolerance 1e-8)."""
     spec = _core.DiscResponseSpec()
-    spec.engine_order = int(engine_order)
-    spec.harmonics = [int(h) for h in harmonics]
-    spec.samples = int(samples)
+    spec.engine_order = arrays.integer(engine_order, "engine_order")
+    spec.harmonics = arrays.harmonic_list(harmonics)
+    # As the scenes' disc_response (DiscSceneReaders.cpp): the excitation acts on harmonic 1;
+    # samples 0 (the automatic count) or enough for the highest harmonic and the friction law
+    # (below 32 its error passes a few percent: 3 samples traced a curve of nonsense).
+    if 1 not in spec.harmonics:
+        raise InputError("harmonics", f"{spec.harmonics}: must contain harmonic 1: the engine-order excitation acts on it")
+    least = max(2 * max(spec.harmonics) + 1, 32)
+    spec.samples = arrays.integer(samples, "samples", 0)
+    if spec.samples != 0 and not least <= spec.samples <= arrays.MAX_SAMPLES:
+        raise InputError("samples", f"{spec.samples}: must lie in {least}..{arrays.MAX_SAMPLES} time samples per period "
+                                    f"(2 H + 1 resolve harmonic H = {max(spec.harmonics)}, and the friction contacts "
+                                    "need at least 32; 0: the automatic count)")
     spec.response_node_sets = list(response_node_sets)
     spec.set_contact(dict(law=law, kn=arrays.finite_number(kn, "kn"), kt=arrays.finite_number(kt, "kt"),
                           mu=arrays.finite_number(mu, "mu"), preload=arrays.finite_number(preload, "preload"),
@@ -308,12 +324,15 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
                           clearance=arrays.finite_number(gap.get("clearance", 0.0), "gap/clearance")))
     spec.set_excitation(dict(node_set=excitation_node_set, direction=arrays.vector(direction, "direction", 3),
                              amplitude=arrays.finite_number(amplitude, "amplitude")))
+    if frequency_range_hz is not None and (np.ndim(frequency_range_hz) != 1 or len(frequency_range_hz) != 2):
+        raise InputError("frequency_range_hz", f"must be (from, to) in Hz, got {frequency_range_hz!r}")
     from_hz, to_hz = (0.0, 0.0) if frequency_range_hz is None else (
         arrays.finite_number(frequency_range_hz[0], "frequency_range_hz"),
         arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))
     stability = {True: "always", False: "never"}.get(stability, stability)
+    continuation = set_continuation(_core.TraceOptions(), engine, tolerance, steps)
     raw = _core.disc_forced_response(mesh._core, models._core, spec, from_hz, to_hz, int(family), stability,
-                                     int(harmonics_check_to))
+                                     int(harmonics_check_to), continuation)
     h = raw["headline"]
     return DiscResponse(
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),

@@ -18,6 +18,7 @@
 #include "DiscReference.hpp"
 #include "Names.hpp"
 #include "ProgramEnvironment.hpp"
+#include "TraceSetup.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
@@ -196,11 +197,13 @@ void bindDiscResponse(py::module_& m) {
   m.def(
       "disc_forced_response",
       [](std::shared_ptr<mesh::Mesh> mesh, std::shared_ptr<disc::DiscReducedModels> models, const S& spec,
-         double fromHz, double toHz, int family, const std::string& stability, int harmonicsCheckTo) {
+         double fromHz, double toHz, int family, const std::string& stability, int harmonicsCheckTo,
+         const TraceOptions& continuation) {
         disc::DiscSweepOptions sweep;  // the scenes' defaults: the disc's continuation, LOCA retracing
         sweep.fromHz = fromHz, sweep.toHz = toHz, sweep.family = family;
         sweep.stability = stabilityFromName(stability);
         sweep.harmonicsCheckTo = harmonicsCheckTo;
+        applyDiscContinuation(continuation, sweep);
         disc::DiscForcedResponse r;
         Timer library;  // the call as C++ makes it: what the Python layer adds is the rest
         {
@@ -224,7 +227,7 @@ void bindDiscResponse(py::module_& m) {
         return d;
       },
       py::arg("mesh"), py::arg("models"), py::arg("spec"), py::arg("from_hz"), py::arg("to_hz"), py::arg("family"),
-      py::arg("stability"), py::arg("harmonics_check_to"));
+      py::arg("stability"), py::arg("harmonics_check_to"), py::arg("continuation"));
 }
 
 }  // namespace
