@@ -227,7 +227,7 @@ namespace {
 bool tracedInLogForce(const ForcedResponseSetup& setup) {
   const auto& o = setup.continuation;
   return setup.parameter == ForcedResponseSetup::Parameter::ForceScale && o.from > 0 && o.to > 0 &&
-         std::max(o.from, o.to) >= kLogForceDecadeRatio * std::min(o.from, o.to);
+         std::max(o.from, o.to) > kLogForceDecadeRatio * std::min(o.from, o.to);
 }
 
 continuation::Branch traceInLogForce(ForcedResponseSetup& setup, const Eigen::VectorXd& start) {

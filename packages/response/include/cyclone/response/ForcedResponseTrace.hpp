@@ -43,7 +43,7 @@ constexpr double kLogForceDecadeRatio = 100;
 /// (it returned to its start, or stopped with a reason) is followed by a second sweep
 /// from the range's end, a second segment of the branch (Branch::segmentStarts); the
 /// stop reason says how far each got. The scene runner and the tests both trace here.
-/// A force-scale curve whose range spans kLogForceDecadeRatio or more (both ends positive)
+/// A force-scale curve whose range spans more than kLogForceDecadeRatio (both ends positive)
 /// is traced in q = ln s with the response per unit force X / s as unknowns and the
 /// residual relative to the force at s; its points are given back in s and X.
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
