@@ -358,10 +358,12 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
     3..64) until each of the last two raises changed the peak by at most harmonics_tolerance
     (None: 0.01; 0 < it < 0.5), and the curve is traced again with those harmonics (the one
     returned; harmonics_target says what happened). `models` must hold the nodal diameters
-    of harmonics 0..harmonics_max (nodal_diameters_for). time_domain_check: the peak
-    integrated in time, a dict as the scenes' disc_response/time_domain_check: {"periods":
-    600 (>= 100), "steps_per_period": 1024 (>= 16)}; its models must hold every nodal
-    diameter the engine order reaches (harmonics 0..4 for EO 3 on 24 sectors)."""
+    of harmonics 0..harmonics_max (nodal_diameters_for; an InputError naming models before
+    the trace otherwise). time_domain_check: the peak integrated in time, a dict as the
+    scenes' disc_response/time_domain_check: {"periods": 600 (>= 100), "steps_per_period":
+    1024 (>= 16)}, the result's time_domain_check (a PeakInTime; None without a peak); its
+    models must hold every nodal diameter the engine order reaches (harmonics 0..4 for EO 3
+    on 24 sectors)."""
     spec = _core.DiscResponseSpec()
     spec.engine_order = arrays.integer(engine_order, "engine_order")
     # harmonics: auto as the scenes' (SceneReaders.cpp: readHarmonicList, readHarmonicsTarget,
@@ -422,9 +424,20 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
         arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))
     stability = {True: "always", False: "never"}.get(stability, stability)
     continuation = set_continuation(_core.TraceOptions(), engine, tolerance, steps)
+    time_domain = _time_domain_options(time_domain_check)
+    # The models a scene builds for these keys (DiscSceneReaders.cpp): without them the
+    # target's check stopped at H = 1 with a line of text, the time domain failed after the trace.
+    sectors = models._core.sectors
+    if 1 <= spec.engine_order < sectors:
+        if auto:
+            _check_models_hold(models, nodal_diameters_for(sectors, spec.engine_order, range(harmonics_max + 1)),
+                               f"harmonics='auto' raises H up to harmonics_max = {harmonics_max}")
+        if time_domain is not None:
+            step = np.gcd(spec.engine_order, sectors)
+            _check_models_hold(models, sorted({min(q, sectors - q) for q in range(0, sectors, step)}),
+                               f"time_domain_check integrates every sector engine order {spec.engine_order} tells apart")
     raw = _core.disc_forced_response(mesh._core, models._core, spec, from_hz, to_hz, int(family), stability,
-                                     int(harmonics_check_to), tolerance_target, _time_domain_options(time_domain_check),
-                                     continuation)
+                                     int(harmonics_check_to), tolerance_target, time_domain, continuation)
     h = raw["headline"]
     return DiscResponse(
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
@@ -435,6 +448,14 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
         time_domain_check=None if raw["peak_in_time"] is None else PeakInTime(
             **{**raw["peak_in_time"], "ending": TimeDomainEnding(raw["peak_in_time"]["ending"])}),
         _reference=raw["reference"], _models=models)
+
+
+def _check_models_hold(models, needed, why):
+    missing = sorted(set(needed) - set(models.nodal_diameters))
+    if missing:
+        raise InputError("models", f"no model for nodal diameter(s) {missing}: {why}, which needs nodal diameters "
+                                   f"{sorted(set(needed))} (reduced_models(..., nodal_diameters=...); the models hold "
+                                   f"{models.nodal_diameters})")
 
 
 def _time_domain_options(check):

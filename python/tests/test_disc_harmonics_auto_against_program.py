@@ -154,3 +154,12 @@ def test_refusals_name_the_argument(program_out):
             cyclone.disc.forced_response(sector, models, engine_order=3, preload=20000.0, amplitude=20.0,
                                          **{"harmonics": [0, 1, 2, 3], **arguments})
         assert error.value.key == key, (arguments, str(error.value))
+    # Models without the nodal diameters the keys reach (the scene builds them): refused before
+    # the trace, naming them (not a target stopped at H = 1, nor a time domain failed after it).
+    fewer = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=[0, 3, 6, 9],
+                                        cache_directory=program_out / "reduced_models")
+    for arguments, missing in [(dict(harmonics="auto", harmonics_max=4), "[12]"),
+                               (dict(harmonics=[0, 1], time_domain_check={}), "[12]")]:
+        with pytest.raises(cyclone.InputError) as error:
+            cyclone.disc.forced_response(sector, fewer, engine_order=3, preload=20000.0, amplitude=20.0, **arguments)
+        assert error.value.key == "models" and f"nodal diameter(s) {missing}" in error.value.problem, str(error.value)
