@@ -9,8 +9,8 @@ with H = 1, the check raises H to 3 (3.1 % from H 1 to 2, 1.4 % from 2 to 3: the
 not met), and the curve is traced again with H = 3: the headline and the retraced curve equal the program's
 (disc_frc_harmonics.csv, disc_frc.csv: every harmonic of every output DOF to 1e-10 of its
 largest max |x(t)|), the time domain's amplitude per period equals disc_peak_in_time.csv
-(its 10 digits), and the summary's lines are the program's. About 20 s for the program,
-17 s for Python."""
+(its 10 digits), and the summary's lines are the program's. About 19 s for the program,
+13 s for Python (measured: the curve to 5e-12, the headline 2e-10, the time domain 2e-10)."""
 
 import re
 
