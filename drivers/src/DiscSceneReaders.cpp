@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -225,6 +226,11 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       // Also the nodal diameters of the harmonics the curve's harmonics check adds.
       auto checked = spec.harmonics;
       for (int h = maxHarmonic + 1; h <= std::max(maxHarmonic + 1, plan.harmonicsCheckTo); ++h) checked.push_back(h);
+      // And the time domain's: it integrates every sector the engine order tells apart
+      // (DiscPeakInTime.hpp), whose phases harmonics 0..N / gcd(EO, N) - 1 reach (without
+      // them the check failed after the curve: "no model for nodal diameter 12" with H = 3).
+      if (d.has("time_domain_check"))
+        for (int h = 0; h < sectors / std::gcd(spec.engineOrder, sectors); ++h) checked.push_back(h);
       plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, checked);
       plan.modelSpec.checkNodalDiameter = disc::nodalDiametersFor(sectors, spec.engineOrder, {1}).front();
     } else {  // engine-order errors before any FE work
