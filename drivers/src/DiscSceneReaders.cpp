@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -135,6 +136,14 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
     plan.harmonicsTolerance = target.tolerance;
     if (spec.engineOrder >= 1 && spec.engineOrder < sectors) {
       plan.nds = disc::nodalDiametersForCheckedCurve(sectors, spec.engineOrder, spec.harmonics, plan.harmonicsCheckTo);
+      // And the time domain's: it integrates every sector the engine order tells apart
+      // (DiscPeakInTime.hpp), whose phases harmonics 0..N / gcd(EO, N) - 1 reach (without
+      // them the check failed after the curve: "no model for nodal diameter 12" with H = 3).
+      if (d.has("time_domain_check")) {
+        std::vector<int> everyPhase;
+        for (int h = 0; h < sectors / std::gcd(spec.engineOrder, sectors); ++h) everyPhase.push_back(h);
+        plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, everyPhase);
+      }
       plan.modelSpec.checkNodalDiameter = disc::nodalDiametersFor(sectors, spec.engineOrder, {1}).front();
     } else {  // engine-order errors before any FE work
       DiscReducedModels none;

@@ -132,6 +132,13 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   // an estimate with the last change next to it.
   if (solved.headline.found()) {
     summary.computed.insert(summary.computed.begin(), solved.headline.text);
+    if (solved.peakInTime) {
+      summary.computed.insert(summary.computed.begin() + 1, solved.peakInTime->text);
+      post::writePeakInTimeFiles(outDir + "/disc_peak_in_time.csv", outDir + "/disc_peak_in_time.svg",
+                                 *solved.peakInTime);
+      summary.written.push_back(outDir + "/disc_peak_in_time.csv");
+      summary.written.push_back(outDir + "/disc_peak_in_time.svg");
+    }
     if (solved.beyondSmallDisplacements()) {
       const std::string why = "disc_frc: the peak's motion, " + numberText(solved.headline.peak.value) +
                               " mm, is " + numberText(100 * solved.headline.peak.value / solved.sectorSize, 3) +

@@ -31,6 +31,20 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
   if (!range.empty() && sweep.mustCoverHz > 0 && !(sweep.mustCoverHz >= range[0] && sweep.mustCoverHz <= range[1]))
     throw InputError(d.where("peak_stress/at_hz"), std::to_string(sweep.mustCoverHz) +
                                                        " Hz lies outside disc_response/frequency_range_hz");
+  // The peak checked in the time domain: asked for by the section, e.g. {periods: 600}.
+  if (d.has("time_domain_check")) {
+    if (!d.isSection("time_domain_check"))
+      throw InputError(d.where("time_domain_check"), "expects a section, e.g. {periods: 600, steps_per_period: 1024}");
+    auto td = d.section("time_domain_check");
+    disc::PeakInTimeOptions o;
+    o.maxPeriods = td.getInt("periods", o.maxPeriods);
+    o.stepsPerPeriod = td.getInt("steps_per_period", o.stepsPerPeriod);
+    if (o.maxPeriods < 100) throw InputError(td.where("periods"), "must be at least 100 (the steadiness is judged over the last 50)");
+    if (o.stepsPerPeriod < 16) throw InputError(td.where("steps_per_period"), "must be at least 16");
+    td.rejectUnknownKeys();
+    sweep.peakInTime = o;
+  }
+
   sweep.stability = readStability(d);
   sweep.harmonicsCheckTo = plan.harmonicsCheckTo;
   sweep.harmonicsTolerance = plan.harmonicsTolerance;

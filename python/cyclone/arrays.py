@@ -59,3 +59,35 @@ def finite_number(value, name):
     if not np.isfinite(number):
         raise InputError(name, f"must be finite, got {number}")
     return number
+
+
+MAX_SAMPLES = 1 << 16  # the scenes' largest sample count per period (kMaxSamples)
+
+
+def integer(value, name, low=None, high=None, why=""):
+    """value as an int (an integral number; not a bool), within low..high where given:
+    an InputError naming `name` otherwise."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer, float, np.floating)) or \
+            not float(value).is_integer():
+        raise InputError(name, f"must be an integer, got {value!r}")
+    number = int(value)
+    if (low is not None and number < low) or (high is not None and number > high):
+        bounds = f">= {low}" if high is None else f"in {low}..{high}"
+        raise InputError(name, f"{number}: must be {bounds}{why}")
+    return number
+
+
+def harmonic_list(harmonics):
+    """H (an int) means 0..H, as the scenes' `harmonics: [H]`; otherwise the list itself, of
+    distinct integers >= 0 (1.5 is refused, not read as 1)."""
+    if isinstance(harmonics, (int, np.integer)) and not isinstance(harmonics, (bool, np.bool_)):
+        if harmonics < 1:
+            raise InputError("harmonics", f"{harmonics}: needs at least harmonic 1 (an int H means 0..H)")
+        return list(range(int(harmonics) + 1))
+    try:
+        listed = [integer(h, "harmonics") for h in harmonics]
+    except TypeError:
+        raise InputError("harmonics", f"must be an int H (0..H) or a list of harmonics, got {harmonics!r}") from None
+    if not listed or min(listed) < 0 or len(set(listed)) != len(listed):
+        raise InputError("harmonics", f"{listed}: a list of distinct harmonics >= 0, not empty")
+    return listed

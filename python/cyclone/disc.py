@@ -28,7 +28,7 @@ from .disc_peaks import DiscFollowedPeaks, follow_peak  # noqa: F401 (cyclone.di
 from .disc_static import StaticSolution, static_solve  # noqa: F401 (cyclone.disc's API)
 from .disc_stress import PeakStress, peak_stress  # noqa: F401 (cyclone.disc's API)
 from .disc_studies import DiscStudy, study  # noqa: F401 (cyclone.disc's API)
-from .response import ForcedResponse
+from .response import ForcedResponse, set_continuation
 
 
 class Mesh:
@@ -267,6 +267,61 @@ class Headline:
 
 
 @dataclass(frozen=True)
+class HarmonicsTarget:
+    """What harmonics="auto" came to (response::HarmonicsTarget): the curve first traced with
+    harmonics 0..traced_harmonic, the level `reached` whose last two raises of H changed the
+    peak by at most `tolerance` (the larger of the two: change; -1 both where not met), and
+    whether the curve was traced again with harmonics 0..reached (or, not met, the highest
+    level whose peak was found), in retrace_seconds; text: the summary's line."""
+
+    tolerance: float
+    traced_harmonic: int
+    reached: int
+    change: float
+    retraced: bool
+    retrace_seconds: float
+    text: str
+
+
+class TimeDomainEnding(str, enum.Enum):
+    """How the time domain's run ended (hbm::TravellingWaveResponse::Ending): the motion
+    repeats, its amplitude is steady while it still drifts, or neither within the periods."""
+
+    PERIODIC = "periodic"
+    STEADY_AMPLITUDE = "steady_amplitude"
+    NOT_STEADY = "not_steady"
+
+
+@dataclass(frozen=True)
+class PeakInTime:
+    """The peak checked in the time domain (disc::PeakInTime, disc_peak_in_time.csv): the
+    ring of reduced sectors integrated at the traced curve's largest point (hz), from the
+    harmonic balance's periodic state there (its max |x(t)|: harmonic_balance, mm);
+    amplitude_history: max |x(t)| of the output DOF per period from the start; last_amplitude
+    over the last period, largest and smallest over the last half of the run (steady: the
+    last); sectors: those integrated; text: the summary's second line."""
+
+    hz: float
+    harmonic_balance: float
+    steady: bool
+    ending: TimeDomainEnding
+    periods: int
+    steps_per_period: int
+    sectors: int
+    last_amplitude: float
+    largest: float
+    smallest: float
+    amplitude_history: np.ndarray = field(repr=False)
+    seconds: float
+    text: str
+
+    @property
+    def difference(self):
+        """largest / harmonic_balance - 1."""
+        return self.largest / self.harmonic_balance - 1 if self.harmonic_balance > 0 else 0.0
+
+
+@dataclass(frozen=True)
 class DiscResponse:
     curve: ForcedResponse
     headline: Headline
@@ -275,6 +330,8 @@ class DiscResponse:
     to_hz: float
     warnings: list
     library_seconds: float  # the library's call alone (the binding's overhead: docs/studies/python_overhead.md)
+    harmonics_target: HarmonicsTarget = None  # harmonics="auto"'s outcome (None: harmonics given)
+    time_domain_check: PeakInTime = None  # None: not asked, or no peak found
     _reference: object = field(default=None, repr=False)  # the curve as the library keeps it (follow_peak starts from it)
     _models: object = field(default=None, repr=False)
 
@@ -282,17 +339,69 @@ class DiscResponse:
 def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=0.0, kn=1e4 / 2.4, kt=1e4 / 2.4,
                     mu=0.4, law="per_area", patches=0, amplitude=1.0, direction=(0.0, 0.0, 1.0),
                     excitation_node_set="mid_blade", response_node_sets=("mid_blade",), samples=0,
-                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None):
+                    frequency_range_hz=None, family=1, stability="auto", harmonics_check_to=0, gap=None,
+                    engine=None, tolerance=None, harmonics_tolerance=None, harmonics_max=None, time_domain_check=None,
+                    **steps):
     """The friction-damped response of the disc under engine order `engine_order`, the scenes'
-    disc_response keys: the shroud contacts' law (kn, kt per unit area and the interface's
-    preload, per_area; or per pair), the excitation (N per node on harmonic 1), the range
+    disc_response keys: harmonics (H: 0..H, or a list; it must hold 1), samples (0: the
+    automatic count; else 32 and 2 H + 1 at least), the shroud contacts' law (kn, kt per unit
+    area and the interface's preload, per_area; or per pair), the excitation (N per node on
+    harmonic 1), the range
     (None: 0.9 x free .. 1.1 x stuck of the resonance estimate), harmonics_check_to (0: H + 1),
     gap: gap elements in place of friction contacts at some pairs, a dict as the scenes'
-    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)}."""
+    disc_response/gap: {"pairs": [...] (0-based), "kn": N/mm (1e4), "clearance": mm (0)};
+    engine, tolerance and steps (initial_step, min_step, max_step, max_points, turn_angle): the
+    scenes' disc_response/continuation (engine None: the predictor-corrector, LOCA retracing
+    what it leaves incomplete; named: that engine alone; the disc's tolerance 1e-8).
+    harmonics="auto": harmonics by an error target, as the scenes' `harmonics: auto`: the
+    curve is traced with 0..1, the harmonics check raises H up to harmonics_max (None: 48;
+    3..64) until each of the last two raises changed the peak by at most harmonics_tolerance
+    (None: 0.01; 0 < it < 0.5), and the curve is traced again with those harmonics (the one
+    returned; harmonics_target says what happened). `models` must hold the nodal diameters
+    of harmonics 0..harmonics_max (nodal_diameters_for; an InputError naming models before
+    the trace otherwise). time_domain_check: the peak integrated in time, a dict as the
+    scenes' disc_response/time_domain_check: {"periods": 600 (>= 100), "steps_per_period":
+    1024 (>= 16)}, the result's time_domain_check (a PeakInTime; None without a peak); its
+    models must hold every nodal diameter the engine order reaches (harmonics 0..4 for EO 3
+    on 24 sectors)."""
     spec = _core.DiscResponseSpec()
-    spec.engine_order = int(engine_order)
-    spec.harmonics = [int(h) for h in harmonics]
-    spec.samples = int(samples)
+    spec.engine_order = arrays.integer(engine_order, "engine_order")
+    # harmonics: auto as the scenes' (SceneReaders.cpp: readHarmonicList, readHarmonicsTarget,
+    # readHarmonicsCheckTo): from 0..1, the check to harmonics_max, the target's keys refused
+    # without it.
+    auto = isinstance(harmonics, str)
+    if auto and harmonics != "auto":
+        raise InputError("harmonics", f"{harmonics!r}: 'auto' (by an error target), an int H (0..H) or a list")
+    tolerance_target = 0.0
+    if auto:
+        tolerance_target = 0.01 if harmonics_tolerance is None else arrays.finite_number(harmonics_tolerance,
+                                                                                          "harmonics_tolerance")
+        if not 0 < tolerance_target < 0.5:
+            raise InputError("harmonics_tolerance", f"{tolerance_target}: a relative change of the peak between "
+                                                    "harmonic counts, 0 < tolerance < 0.5")
+        harmonics_max = arrays.integer(48 if harmonics_max is None else harmonics_max, "harmonics_max", 3, 64,
+                                       " (two raises from H = 1 meet the tolerance at H = 3 at the earliest; beyond "
+                                       "64 a shroud's contact law is resolved by its samples, not by more harmonics)")
+        if harmonics_check_to:
+            raise InputError("harmonics_check_to", "with harmonics='auto' the check runs to harmonics_max")
+        harmonics_check_to = harmonics_max
+        spec.harmonics = [0, 1]
+    else:
+        for key, value in (("harmonics_tolerance", harmonics_tolerance), ("harmonics_max", harmonics_max)):
+            if value is not None:
+                raise InputError(key, "applies to harmonics='auto' only")
+        spec.harmonics = arrays.harmonic_list(harmonics)
+    # As the scenes' disc_response (DiscSceneReaders.cpp): the excitation acts on harmonic 1;
+    # samples 0 (the automatic count) or enough for the highest harmonic and the friction law
+    # (below 32 its error passes a few percent: 3 samples traced a curve of nonsense).
+    if 1 not in spec.harmonics:
+        raise InputError("harmonics", f"{spec.harmonics}: must contain harmonic 1: the engine-order excitation acts on it")
+    least = max(2 * max(spec.harmonics) + 1, 32)
+    spec.samples = arrays.integer(samples, "samples", 0)
+    if spec.samples != 0 and not least <= spec.samples <= arrays.MAX_SAMPLES:
+        raise InputError("samples", f"{spec.samples}: must lie in {least}..{arrays.MAX_SAMPLES} time samples per period "
+                                    f"(2 H + 1 resolve harmonic H = {max(spec.harmonics)}, and the friction contacts "
+                                    "need at least 32; 0: the automatic count)")
     spec.response_node_sets = list(response_node_sets)
     spec.set_contact(dict(law=law, kn=arrays.finite_number(kn, "kn"), kt=arrays.finite_number(kt, "kt"),
                           mu=arrays.finite_number(mu, "mu"), preload=arrays.finite_number(preload, "preload"),
@@ -308,15 +417,63 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
                           clearance=arrays.finite_number(gap.get("clearance", 0.0), "gap/clearance")))
     spec.set_excitation(dict(node_set=excitation_node_set, direction=arrays.vector(direction, "direction", 3),
                              amplitude=arrays.finite_number(amplitude, "amplitude")))
+    if frequency_range_hz is not None and (np.ndim(frequency_range_hz) != 1 or len(frequency_range_hz) != 2):
+        raise InputError("frequency_range_hz", f"must be (from, to) in Hz, got {frequency_range_hz!r}")
     from_hz, to_hz = (0.0, 0.0) if frequency_range_hz is None else (
         arrays.finite_number(frequency_range_hz[0], "frequency_range_hz"),
         arrays.finite_number(frequency_range_hz[1], "frequency_range_hz"))
     stability = {True: "always", False: "never"}.get(stability, stability)
+    continuation = set_continuation(_core.TraceOptions(), engine, tolerance, steps)
+    time_domain = _time_domain_options(time_domain_check)
+    # The models a scene builds for these keys (DiscSceneReaders.cpp): without them the
+    # target's check stopped at H = 1 with a line of text, the time domain failed after the trace.
+    sectors = models._core.sectors
+    if 1 <= spec.engine_order < sectors:
+        if auto:
+            _check_models_hold(models, nodal_diameters_for(sectors, spec.engine_order, range(harmonics_max + 1)),
+                               f"harmonics='auto' raises H up to harmonics_max = {harmonics_max}")
+        if time_domain is not None:
+            step = np.gcd(spec.engine_order, sectors)
+            _check_models_hold(models, sorted({min(q, sectors - q) for q in range(0, sectors, step)}),
+                               f"time_domain_check integrates every sector engine order {spec.engine_order} tells apart")
     raw = _core.disc_forced_response(mesh._core, models._core, spec, from_hz, to_hz, int(family), stability,
-                                     int(harmonics_check_to))
+                                     int(harmonics_check_to), tolerance_target, time_domain, continuation)
     h = raw["headline"]
     return DiscResponse(
         curve=ForcedResponse(raw["curve"], raw["harmonics"], raw["num_dofs"], raw["output_dofs"]),
         headline=Headline(Convergence(h["convergence"]), h["value"], h["hz"], h["max_harmonic"], h["change"], h["text"]),
         estimate=raw["estimate"], from_hz=raw["from_hz"], to_hz=raw["to_hz"], warnings=list(raw["warnings"]),
-        library_seconds=raw["library_seconds"], _reference=raw["reference"], _models=models)
+        library_seconds=raw["library_seconds"],
+        harmonics_target=None if raw["harmonics_target"] is None else HarmonicsTarget(**raw["harmonics_target"]),
+        time_domain_check=None if raw["peak_in_time"] is None else PeakInTime(
+            **{**raw["peak_in_time"], "ending": TimeDomainEnding(raw["peak_in_time"]["ending"])}),
+        _reference=raw["reference"], _models=models)
+
+
+def _check_models_hold(models, needed, why):
+    missing = sorted(set(needed) - set(models.nodal_diameters))
+    if missing:
+        raise InputError("models", f"no model for nodal diameter(s) {missing}: {why}, which needs nodal diameters "
+                                   f"{sorted(set(needed))} (reduced_models(..., nodal_diameters=...); the models hold "
+                                   f"{models.nodal_diameters})")
+
+
+def _time_domain_options(check):
+    """time_domain_check as the scenes' disc_response/time_domain_check (DiscSweepReaders.cpp):
+    None, or its keys with their defaults and refusals."""
+    if check is None:
+        return None
+    if not isinstance(check, dict):
+        raise InputError("time_domain_check", f"expects a dict, e.g. {{'periods': 600, 'steps_per_period': 1024}}, "
+                                              f"got {check!r}")
+    unknown = set(check) - {"periods", "steps_per_period"}
+    if unknown:
+        raise InputError("time_domain_check", f"unknown keys {sorted(unknown)}: known are periods, steps_per_period")
+    periods = arrays.integer(check.get("periods", 600), "time_domain_check/periods")
+    if periods < 100:
+        raise InputError("time_domain_check/periods", f"{periods}: must be at least 100 (the steadiness is judged "
+                                                      "over the last 50)")
+    steps = arrays.integer(check.get("steps_per_period", 1024), "time_domain_check/steps_per_period")
+    if steps < 16:
+        raise InputError("time_domain_check/steps_per_period", f"{steps}: must be at least 16")
+    return {"periods": periods, "steps_per_period": steps}

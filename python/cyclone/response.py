@@ -86,7 +86,7 @@ class ForcedResponse:
         self.parameter = raw["parameter"]
         self.omega = raw["omega"]
         self.x = raw["x"]
-        self.coefficients = self.x.reshape(len(self.omega), num_dofs, -1)
+        self.coefficients = self.x.reshape(len(self.omega), num_dofs, self.x.shape[1] // num_dofs)  # also of no point
         self.amplitude = raw["amplitude"]
         self.max_abs = raw["max_abs"]
         self.stable = raw["stable"]
@@ -115,6 +115,8 @@ class ForcedResponse:
 
     def mean(self, dof):
         """The mean (harmonic 0) of `dof` per point (zeros without harmonic 0)."""
+        if not isinstance(dof, (int, np.integer)) or not 0 <= dof < self.coefficients.shape[1]:
+            raise InputError("dof", f"{dof!r} is not a DOF of the system (0..{self.coefficients.shape[1] - 1})")
         if 0 not in self.harmonics:
             return np.zeros(len(self))
         return self.coefficients[:, dof, 0]
@@ -123,6 +125,8 @@ class ForcedResponse:
         """The amplitude of `harmonic` of `dof` per point."""
         if harmonic not in self.harmonics:
             raise InputError("harmonic", f"{harmonic} is not among the curve's harmonics {self.harmonics}")
+        if not isinstance(dof, (int, np.integer)) or not 0 <= dof < self.amplitude.shape[1]:
+            raise InputError("dof", f"{dof!r} is not a DOF of the system (0..{self.amplitude.shape[1] - 1})")
         return self.amplitude[:, dof, self.harmonics.index(harmonic)]
 
     def flagged(self, kind):
@@ -185,15 +189,7 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
         raise InputError("stability", f"{stability!r}: must be 'auto', 'always', 'never', True or False")
     options.stability = stability
     options.harmonics_check_to = _harmonics_check_to(harmonics_check, max(system.harmonics))
-    if engine not in (None, "predictor_corrector", "loca"):
-        raise InputError("engine", f"{engine!r}: must be None, 'predictor_corrector' or 'loca'")
-    options.engine = engine or ""
-    if tolerance is not None:
-        tolerance = arrays.finite_number(tolerance, "tolerance")
-        if not 1e-14 <= tolerance <= 1e-4:
-            raise InputError("tolerance", f"{tolerance}: must lie in 1e-14..1e-4, the residual relative to the forces")
-        options.tolerance = tolerance
-    _set_steps(options, steps, engine)
+    set_continuation(options, engine, tolerance, steps)
     if parameter == "force_scale":
         # The residual is relative to the forces at scale 1, so a point at scale s is solved
         # to tolerance / s of its own forces: near 0 the solution 0 passes.
@@ -203,6 +199,22 @@ def trace_options(system, start, end, parameter="omega", omega=None, force_scale
                 raise InputError(key, f"a force scale of {value:g} is solved to the tolerance over it of its own "
                                       f"forces (the residual is relative to the forces at scale 1): start at "
                                       f"{smallest:g} or above, or at 0")
+    return options
+
+
+def set_continuation(options, engine, tolerance, steps):
+    """The continuation's keys of a scene (its `continuation` section) on a _core.TraceOptions,
+    each checked (InputError naming it): engine None (the predictor-corrector, LOCA where it
+    stops short), "predictor_corrector" or "loca" alone; tolerance (1e-14..1e-4); steps."""
+    if engine not in (None, "predictor_corrector", "loca"):
+        raise InputError("engine", f"{engine!r}: must be None, 'predictor_corrector' or 'loca'")
+    options.engine = engine or ""
+    if tolerance is not None:
+        tolerance = arrays.finite_number(tolerance, "tolerance")
+        if not 1e-14 <= tolerance <= 1e-4:
+            raise InputError("tolerance", f"{tolerance}: must lie in 1e-14..1e-4, the residual relative to the forces")
+        options.tolerance = tolerance
+    _set_steps(options, steps, engine)
     return options
 
 

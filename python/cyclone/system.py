@@ -13,21 +13,6 @@ from .peaks import FollowedPeaks
 from .response import ForcedResponse, trace_options
 
 
-def _harmonic_list(harmonics):
-    """H (an int) means 0..H, as the scenes' `harmonics: [H]`; otherwise the list itself."""
-    if isinstance(harmonics, (int, np.integer)):
-        if harmonics < 1:
-            raise InputError("harmonics", f"{harmonics}: needs at least harmonic 1 (an int H means 0..H)")
-        return list(range(int(harmonics) + 1))
-    try:
-        listed = [int(h) for h in harmonics]
-    except (TypeError, ValueError):
-        raise InputError("harmonics", f"must be an int H (0..H) or a list of harmonics, got {harmonics!r}") from None
-    if not listed or min(listed) < 0 or len(set(listed)) != len(listed):
-        raise InputError("harmonics", f"{listed}: a list of distinct harmonics >= 0, not empty")
-    return listed
-
-
 class HarmonicBalance:
     """M x'' + C x' + K x + sum_e W_e f_e(W_e^T x) = excitation(t) + static loads, x periodic.
 
@@ -42,12 +27,15 @@ class HarmonicBalance:
         n = self.M.shape[0]
         self.K = arrays.square_matrix(K, "K", n)
         self.C = np.zeros((n, n)) if C is None else arrays.square_matrix(C, "C", n)
-        self.harmonics = _harmonic_list(harmonics)
+        self.harmonics = arrays.harmonic_list(harmonics)
         self._cyclic(sectors, engine_order, M_next, C_next, K_next)
         self._check_physics()
         for matrix in (self.M, self.K, self.C, self.M_next, self.C_next, self.K_next):
             matrix.flags.writeable = False  # the system is built from them: a change would not reach it
-        self._samples = None if samples is None else int(samples)
+        # As a scene's `samples` (ForcedResponseScene.cpp): 2 H + 1 resolve harmonic H, 2^16 at most.
+        H = max(self.harmonics)
+        self._samples = None if samples is None else arrays.integer(
+            samples, "samples", 2 * H + 1, arrays.MAX_SAMPLES, f" time samples per period (2 H + 1 resolve harmonic H = {H})")
         self._elements = []  # (element, W, W_next)
         self.element_names = []
         self._excitation = []  # (dof, harmonic, cos, sin)
@@ -60,7 +48,7 @@ class HarmonicBalance:
         is solved, harmonic h on nodal diameter h EO mod N (HarmonicBalanceSystem.hpp)."""
         if not isinstance(sectors, (int, np.integer)) or sectors < 1:
             raise InputError("sectors", f"{sectors!r}: must be an int >= 1 (1: not cyclic)")
-        self.sectors, self.engine_order = int(sectors), int(engine_order)
+        self.sectors, self.engine_order = int(sectors), arrays.integer(engine_order, "engine_order")
         n, nxt = self.num_dofs, {}
         for name, value in (("M_next", M_next), ("C_next", C_next), ("K_next", K_next)):
             if value is not None and self.sectors == 1:
@@ -143,8 +131,8 @@ class HarmonicBalance:
 
     def add_excitation(self, dof, harmonic=1, cos=0.0, sin=0.0):
         """f = cos * cos(h omega t) + sin * sin(h omega t) on `dof` (times the force scale)."""
-        self._excitation.append((self._dof(dof, "dof"), int(harmonic), arrays.finite_number(cos, "cos"),
-                                 arrays.finite_number(sin, "sin")))
+        self._excitation.append((self._dof(dof, "dof"), arrays.integer(harmonic, "harmonic", 0),
+                                 arrays.finite_number(cos, "cos"), arrays.finite_number(sin, "sin")))
         self._built = None
         return self
 

@@ -18,9 +18,11 @@
 #include "DiscReference.hpp"
 #include "Names.hpp"
 #include "ProgramEnvironment.hpp"
+#include "TraceSetup.hpp"
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/mesh/AbaqusIO.hpp"
 #include "cyclone/mesh/ExodusIO.hpp"
@@ -41,6 +43,32 @@ py::dict headlineOf(const disc::DiscHeadline& h) {
   d["hz"] = h.peak.hz;
   d["max_harmonic"] = h.peak.maxHarmonic;
   d["change"] = h.peak.change;
+  return d;
+}
+
+// What harmonics by an error target came to (response::HarmonicsTarget); None when not asked.
+py::object harmonicsTargetOf(const response::HarmonicsTarget& t) {
+  if (!(t.tolerance > 0)) return py::none();
+  return py::dict(py::arg("tolerance") = t.tolerance, py::arg("traced_harmonic") = t.tracedHarmonic,
+                  py::arg("reached") = t.reached, py::arg("change") = t.change, py::arg("retraced") = t.retraced,
+                  py::arg("retrace_seconds") = t.retraceSeconds, py::arg("text") = t.text);
+}
+
+const char* endingName(hbm::TravellingWaveResponse::Ending ending) {
+  using E = hbm::TravellingWaveResponse::Ending;
+  return ending == E::Periodic ? "periodic" : ending == E::SteadyAmplitude ? "steady_amplitude" : "not_steady";
+}
+
+// The peak checked in the time domain (disc::PeakInTime); None when not asked or not made.
+py::object peakInTimeOf(const std::optional<disc::PeakInTime>& p) {
+  if (!p) return py::none();
+  py::dict d;
+  d["hz"] = p->hz, d["harmonic_balance"] = p->harmonicBalance, d["steady"] = p->steady();
+  d["ending"] = endingName(p->ending);
+  d["periods"] = p->periods, d["steps_per_period"] = p->stepsPerPeriod, d["sectors"] = p->sectors;
+  d["last_amplitude"] = p->lastAmplitude, d["largest"] = p->largest, d["smallest"] = p->smallest;
+  d["amplitude_history"] = py::array(py::cast(p->amplitudeHistory));
+  d["seconds"] = p->seconds, d["text"] = p->text;
   return d;
 }
 
@@ -196,11 +224,20 @@ void bindDiscResponse(py::module_& m) {
   m.def(
       "disc_forced_response",
       [](std::shared_ptr<mesh::Mesh> mesh, std::shared_ptr<disc::DiscReducedModels> models, const S& spec,
-         double fromHz, double toHz, int family, const std::string& stability, int harmonicsCheckTo) {
+         double fromHz, double toHz, int family, const std::string& stability, int harmonicsCheckTo,
+         double harmonicsTolerance, const py::object& timeDomainCheck, const TraceOptions& continuation) {
         disc::DiscSweepOptions sweep;  // the scenes' defaults: the disc's continuation, LOCA retracing
         sweep.fromHz = fromHz, sweep.toHz = toHz, sweep.family = family;
         sweep.stability = stabilityFromName(stability);
         sweep.harmonicsCheckTo = harmonicsCheckTo;
+        sweep.harmonicsTolerance = harmonicsTolerance;  // > 0: harmonics: auto (harmonicsCheckTo its harmonics_max)
+        if (!timeDomainCheck.is_none()) {  // the scenes' disc_response/time_domain_check, checked in disc.py
+          disc::PeakInTimeOptions o;
+          o.maxPeriods = timeDomainCheck["periods"].cast<int>();
+          o.stepsPerPeriod = timeDomainCheck["steps_per_period"].cast<int>();
+          sweep.peakInTime = o;
+        }
+        applyDiscContinuation(continuation, sweep);
         disc::DiscForcedResponse r;
         Timer library;  // the call as C++ makes it: what the Python layer adds is the rest
         {
@@ -219,12 +256,22 @@ void bindDiscResponse(py::module_& m) {
         d["harmonics"] = r.setup.system->aft().harmonics().harmonics();
         d["num_dofs"] = r.setup.system->numDofs();
         d["library_seconds"] = librarySeconds;
+        d["harmonics_target"] = harmonicsTargetOf(r.curve.harmonicsTarget);
+        d["peak_in_time"] = peakInTimeOf(r.peakInTime);
+        // Traced again with the harmonics that met the target: the calls that start from this
+        // curve work with those, as a disc scene's later stages (DiscStages.cpp).
+        auto traced = spec;
+        if (r.curve.harmonicsTarget.retraced) {
+          traced.harmonics = r.setup.system->aft().harmonics().harmonics();
+          traced.samples = r.setup.system->aft().numSamples();
+        }
         // Kept for the calls that start from this curve (the peak following, the stresses at the peak).
-        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, spec, std::move(r), sweep});
+        d["reference"] = std::make_shared<DiscReference>(DiscReference{mesh, models, traced, std::move(r), sweep});
         return d;
       },
       py::arg("mesh"), py::arg("models"), py::arg("spec"), py::arg("from_hz"), py::arg("to_hz"), py::arg("family"),
-      py::arg("stability"), py::arg("harmonics_check_to"));
+      py::arg("stability"), py::arg("harmonics_check_to"), py::arg("harmonics_tolerance"),
+      py::arg("time_domain_check"), py::arg("continuation"));
 }
 
 }  // namespace

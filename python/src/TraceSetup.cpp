@@ -10,6 +10,20 @@ namespace cyclone::python {
 
 using response::ForcedResponseSetup;
 
+namespace {
+
+// The tolerance and steps the caller gave, over the engine's own defaults.
+void applySteps(const TraceOptions& o, continuation::ContinuationOptions& opt) {
+  opt.tolerance = o.tolerance.value_or(opt.tolerance);
+  opt.initialStep = o.initialStep.value_or(opt.initialStep);
+  opt.minStep = o.minStep.value_or(opt.minStep);
+  opt.maxStep = o.maxStep.value_or(opt.maxStep);
+  opt.maxSteps = o.maxPoints.value_or(opt.maxSteps);
+  opt.turnAngle = o.turnAngle.value_or(opt.turnAngle);
+}
+
+}  // namespace
+
 ForcedResponseSetup setupOf(const hbm::HarmonicBalanceSystem& system, const TraceOptions& o) {
   ForcedResponseSetup setup;
   setup.system = hbm::withHarmonics(system, system.aft().harmonics(), system.aft().numSamples());
@@ -41,17 +55,23 @@ ForcedResponseSetup setupOf(const hbm::HarmonicBalanceSystem& system, const Trac
     throw InputError("engine", "'" + o.engine + "': must be predictor_corrector or loca");
   }
   opt.from = o.start, opt.to = o.end;
-  opt.tolerance = o.tolerance.value_or(opt.tolerance);
-  opt.initialStep = o.initialStep.value_or(opt.initialStep);
-  opt.minStep = o.minStep.value_or(opt.minStep);
-  opt.maxStep = o.maxStep.value_or(opt.maxStep);
-  opt.maxSteps = o.maxPoints.value_or(opt.maxSteps);
-  opt.turnAngle = o.turnAngle.value_or(opt.turnAngle);
+  applySteps(o, opt);
   setup.outputDofs = o.outputDofs;
   for (int d = 0; d < system.numDofs(); ++d) setup.dofNames.push_back("dof" + std::to_string(d));
   setup.stability = stabilityFromName(o.stability);
   setup.harmonicsCheckTo = o.harmonicsCheckTo;
   return setup;
+}
+
+void applyDiscContinuation(const TraceOptions& o, disc::DiscSweepOptions& sweep) {
+  using Engine = continuation::ContinuationOptions::Engine;
+  if (!o.engine.empty()) {
+    if (o.engine != "loca" && o.engine != "predictor_corrector")
+      throw InputError("engine", "'" + o.engine + "': must be predictor_corrector or loca");
+    sweep.continuation = disc::discContinuationOptions(o.engine == "loca" ? Engine::Loca : Engine::PredictorCorrector);
+    sweep.fallback.reset();
+  }
+  applySteps(o, sweep.continuation);
 }
 
 }  // namespace cyclone::python

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/disc/DiscForcedResponse.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/response/ForcedResponseSetup.hpp"
 
@@ -28,5 +29,10 @@ struct TraceOptions {
 /// The setup a scene with these keys would give (ForcedResponseScene.cpp: readContinuation),
 /// on a copy of `system`. InputError naming parameter or engine for a name not known.
 response::ForcedResponseSetup setupOf(const hbm::HarmonicBalanceSystem& system, const TraceOptions& options);
+
+/// A disc sweep's continuation as a scene's disc_response/continuation gives it
+/// (DiscSweepReaders.cpp): an engine named is used alone (the disc's options for it), else
+/// the predictor-corrector with LOCA retracing; the tolerance and steps on the first engine.
+void applyDiscContinuation(const TraceOptions& options, disc::DiscSweepOptions& sweep);
 
 }  // namespace cyclone::python

@@ -1,5 +1,6 @@
-"""numpy in and out, and errors as Python exceptions: C order, Fortran order and a
-non-contiguous slice are the same input; a wrong shape or a NaN stops the call naming the
+"""numpy in and out, and errors as Python exceptions: C order, Fortran order, a
+non-contiguous slice and other dtypes (float32, int32) are the same input, the results
+float64 arrays of one row per point; a wrong shape or a NaN stops the call naming the
 argument; the library's InputError arrives as cyclone.InputError with the key it names."""
 
 import numpy as np
@@ -30,10 +31,19 @@ def test_c_order_fortran_order_and_a_strided_slice_give_the_same_curve():
     strided = big[::2, ::3]
     assert not strided.flags.c_contiguous and not strided.flags.f_contiguous
     for M_, K_, C_ in [(np.asfortranarray(M), np.asfortranarray(K), np.asfortranarray(C)), (M, strided, C),
-                       (M.tolist(), K.astype(np.float32).astype(np.float64), C)]:
+                       (M.tolist(), K.astype(np.float32).astype(np.float64), C),
+                       (M.astype(np.float32), K.astype(np.int32), C)]:  # other dtypes, their values exact
         curve = curve_of(chain(M_, K_, C_))
         np.testing.assert_array_equal(curve.omega, reference.omega)
         np.testing.assert_array_equal(curve.x, reference.x)
+    # Out: float64 arrays of one row per point; Hill's verdicts and the sweeps as integers.
+    P = len(reference)
+    for array, shape in [(reference.omega, (P,)), (reference.parameter, (P,)), (reference.x, (P, 2 * 11)),
+                         (reference.coefficients, (P, 2, 11)), (reference.amplitude, (P, 2, 6)),
+                         (reference.max_abs, (P, 2))]:
+        assert array.shape == shape and array.dtype == np.float64
+    assert reference.leading_exponent.shape == (P,) and reference.leading_exponent.dtype == np.complex128
+    assert reference.stable.dtype.kind == reference.segment.dtype.kind == "i"
 
 
 def test_the_callers_arrays_are_copied_and_the_systems_read_only():
@@ -131,6 +141,11 @@ def test_the_typed_end_of_a_trace_out_of_points():
     ("engine_order", dict(M=np.eye(2), K=K, engine_order=3)),  # not cyclic
     ("K_next", dict(M=np.eye(2), K=K, K_next=np.eye(2))),  # not cyclic
     ("sectors", dict(M=np.eye(2), K=K, sectors=0)),
+    ("engine_order", dict(M=np.eye(2), K=K, sectors=4, engine_order=1.5, K_next=-0.1 * np.eye(2))),  # not an int
+    ("samples", dict(M=np.eye(2), K=K, harmonics=5, samples=10)),  # below 2 H + 1 (the library's Aft said it)
+    ("samples", dict(M=np.eye(2), K=K, samples=64.5)),  # not read as 64
+    ("samples", dict(M=np.eye(2), K=K, samples=1 << 17)),  # above the scenes' 65536
+    ("harmonics", dict(M=np.eye(2), K=K, harmonics=[0, 1.5])),  # not read as 1
 ])
 def test_what_a_scene_refuses_is_refused_naming_the_argument(argument, kwargs):
     with pytest.raises(cyclone.InputError) as error:
@@ -168,3 +183,38 @@ def test_a_solver_failure_arrives_as_cyclone_solver_error():
     assert str(error.value).startswith(f"CHOLMOD: the matrix ({free} equations) is not positive definite")
     # Held at the bore the same call solves.
     assert cyclone.disc.static_solve(sector, speed_rpm=10000.0).relative_residual < 1e-8
+
+
+@pytest.mark.parametrize("harmonic", [-1, 1.5, "1"])
+def test_an_excitations_harmonic_is_a_whole_number_named_harmonic(harmonic):
+    with pytest.raises(cyclone.InputError) as error:
+        chain(np.eye(2), K, None).add_excitation(dof=0, harmonic=harmonic, cos=1.0)
+    assert error.value.key == "harmonic"
+
+
+def test_a_curves_accessors_name_a_wrong_dof():
+    curve = chain(np.eye(2), K, 0.02 * K).forced_response(0.3, 2.5, harmonics_check=False)
+    for call in (lambda: curve.mean(2), lambda: curve.amplitude_of(-1, 1)):
+        with pytest.raises(cyclone.InputError) as error:
+            call()
+        assert error.value.key == "dof"
+
+
+@pytest.mark.parametrize("argument, kwargs", [
+    ("samples", dict(samples=3)),  # the scenes' disc: at least 32 (3 samples traced nonsense)
+    ("samples", dict(harmonics=[0, 1, 20], samples=32)),  # and 2 H + 1
+    ("harmonics", dict(harmonics=[0, 2])),  # the engine-order excitation acts on harmonic 1
+    ("harmonics", dict(harmonics=[0, 1.5])),
+    ("engine_order", dict(engine_order=2.5)),
+    ("frequency_range_hz", dict(frequency_range_hz=(1500.0,))),
+    ("engine", dict(engine="newton")),  # disc_response/continuation's keys
+    ("tolerance", dict(tolerance=1e-2)),
+    ("min_step", dict(min_step=-1.0)),
+    ("max_pointz", dict(max_pointz=10)),
+])
+def test_what_a_disc_scene_refuses_is_refused_before_any_fe_work(argument, kwargs):
+    # As DiscSceneReaders.cpp refuses disc_response's keys; checked before the mesh and the
+    # models are used (here: none given).
+    with pytest.raises(cyclone.InputError) as error:
+        cyclone.disc.forced_response(None, None, **{"engine_order": 3, **kwargs})
+    assert error.value.key == argument

@@ -7,7 +7,10 @@ digests of every input), and traces the same curve: every point's frequency and
 max |x(t)| to 1e-10, and the headline peak of harmonics 0..2 as the program's (its CSV's
 10 digits); then follows the same peak: every value's peak and frequency as the program's
 peak_preload.csv (10 digits); and the stresses and fatigue margin at the peak, every node as
-the program's disc_peak_stress.csv (8 digits). Label scene: about 20 s."""
+the program's disc_peak_stress.csv (8 digits); the curve's retraces, end and stop reason as
+the program's account of it (program.retraces). Label scene: about 20 s."""
+
+import shutil
 
 import numpy as np
 import pytest
@@ -52,6 +55,43 @@ def test_the_disc_response_equals_the_programs(program_out, python_response):
     assert abs(response.headline.hz / float(levels["freq_hz"][top]) - 1) < 1e-9
     # The peak lies between the shroud's free and stuck resonances (the estimate's).
     assert response.estimate["free_hz"] < response.headline.hz < response.estimate["stuck_hz"] * 1.01
+
+
+@pytest.mark.disc
+def test_the_disc_curves_retraces_and_stop_are_the_programs(program_out, python_response):
+    # The program's account of its disc_frc (its log's retrace lines, disc_frc.h5's samples,
+    # its incomplete-curve warning, report.md's stop reason): traced whole once by the
+    # predictor-corrector with the scene's 256 samples, and so from Python.
+    reference = program.assert_retraces_equal(python_response.curve, program_out, "disc_frc")
+    assert reference == (("predictor_corrector", False, 1, ()), True)
+    assert "forced response: 66 DOFs, harmonics up to 1, 256 samples" in program_out.with_suffix(".log").read_text()
+    assert python_response.curve.end is cyclone.BranchEnd.RANGE_END
+
+
+# The scene's disc_response/continuation and the same keys from Python: (its keys, Python's
+# arguments, the program's account expected of it: the scene does what the case is about).
+CONTINUATIONS = [
+    ("{engine: loca}", dict(engine="loca"), (("loca", False, 1, ()), True)),  # LOCA alone, whole
+    # Out of points after 10: incomplete, and not traced again (the budget is the caller's).
+    ("{max_points: 10}", dict(max_points=10), (("predictor_corrector", False, 1, ()), False)),
+]
+
+
+@pytest.mark.disc
+@pytest.mark.parametrize("keys, options, expected", CONTINUATIONS, ids=["loca", "point_budget"])
+def test_the_disc_curve_with_the_scenes_continuation_is_the_programs(cyclone_program, program_out, tmp_path, keys,
+                                                                      options, expected):
+    out = tmp_path / "out"
+    shutil.copytree(program_out / "reduced_models", out / "reduced_models")  # reused, not built again
+    program.run(cyclone_program, program.DISC_SCENE + f"    stability: false\n    continuation: {keys}\n", out)
+    response = program.disc_response(out, stability=False, **options)
+    assert program.assert_retraces_equal(response.curve, out, "disc_frc", options.get("engine")) == expected
+    expected_curve = program.read_csv(out / "disc_frc.csv")
+    np.testing.assert_allclose(response.curve.omega, expected_curve["omega_rad_s"].astype(float), rtol=1e-10)
+    maxima = [key for key in expected_curve if key.endswith("_max")]  # mid-blade x, y, z
+    for k, key in enumerate(maxima):
+        np.testing.assert_allclose(response.curve.max_abs[:, k], expected_curve[key].astype(float), rtol=1e-10)
+    assert response.curve.end is (cyclone.BranchEnd.RANGE_END if expected[1] else cyclone.BranchEnd.POINT_BUDGET)
 
 
 @pytest.mark.disc

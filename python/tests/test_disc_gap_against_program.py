@@ -50,6 +50,8 @@ def test_the_gap_response_equals_the_programs(disc):
     out, response = disc
     assert response.curve.end is cyclone.BranchEnd.RANGE_END
     assert_curve_equal(response.curve, program.read_csv(out / "disc_frc.csv"))
+    # Traced whole once, as the program's account of its disc_frc says (program.retraces).
+    assert program.assert_retraces_equal(response.curve, out, "disc_frc") == (("predictor_corrector", False, 1, ()), True)
 
 
 @pytest.mark.disc

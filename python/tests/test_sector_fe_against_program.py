@@ -3,7 +3,10 @@ sector (the built-in one at mesh size 12): the static solve at 10 000 rpm, bore 
 the program's static.exo (every node's displacement and von Mises stress); the sector
 written as a mesh file and read back, as the sector (the example 01's path); and the ND 3
 reduced model's check against the full FE model, built from Python in a cache of its own,
-as the program's rom_check.csv. Label scene (about 15 s)."""
+as the program's rom_check.csv, its file read back from that cache and named as the
+program's of the same model. Label scene (about 15 s)."""
+
+import pathlib
 
 import netCDF4
 import numpy as np
@@ -77,6 +80,12 @@ def test_the_reduced_model_check_equals_the_programs(cyclone_program, tmp_path, 
     models = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=[3], check_nodal_diameter=3,
                                          cache_directory=tmp_path / "models")
     assert models.built == 1  # checked here, not read back
+    # The file written to the cache is read back (not built again), and its name, a digest of
+    # every input, is the one the program gave the same model in its run.
+    again = cyclone.disc.reduced_models(sector, rpm=10000.0, nodal_diameters=[3], cache_directory=tmp_path / "models")
+    assert (again.built, again.reused) == (0, 1) and again.files[3] == models.files[3]
+    np.testing.assert_array_equal(again.natural_hz[3], models.natural_hz[3])
+    assert (tmp_path / "out" / "reduced_models" / pathlib.Path(models.files[3]).name).exists()
     check = models.check
     assert check.nodal_diameter == 3 and not check.reused
     assert len(check.hz) == len(expected["freq_hz"]) == 12

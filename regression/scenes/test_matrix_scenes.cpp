@@ -214,7 +214,8 @@ std::vector<double> crossings(const std::vector<std::vector<double>>& rows, int 
 
 // A curve that stops short of its range says so first: a force scale over 1e-3..1e6 traced
 // 2 points at its start, and the run ended without a warning, its checks "by 0" (issue
-// 49's fourth probe). The scene's own range traces whole and says nothing of the kind.
+// 49's fourth probe). That range is traced whole now (below); a point budget stops it
+// here. The scene's own range traces whole and says nothing of the kind.
 TEST(Scenes, ACurveShortOfItsRangeIsSaidFirst) {
   log::setQuiet(true);
   std::ifstream in(std::string(CYCLONE_SCENE_DIR) + "/duffing_force.yaml");
@@ -226,11 +227,55 @@ TEST(Scenes, ACurveShortOfItsRangeIsSaidFirst) {
   for (const auto& line : whole.computed) EXPECT_EQ(line.find("incomplete"), std::string::npos) << line;
   std::string wide = text.str();
   wide.replace(wide.find("    from: 0.05\n    to: 3.0\n"), std::string("    from: 0.05\n    to: 3.0\n").size(),
-               "    from: 1.0e-3\n    to: 1.0e6\n");
+               "    from: 1.0e-3\n    to: 1.0e6\n    max_points: 20\n");
   o.outputDirectory = freshDir("dforce_wide").string();
   const auto summary = scenes::runSceneText(wide, "duffing_force.yaml", o, Tpetra::getDefaultComm());
   ASSERT_FALSE(summary.computed.empty());
   EXPECT_EQ(summary.computed.front().rfind("warning: frc: the curve is incomplete", 0), 0u) << summary.computed.front();
+}
+
+// A force scale over nine decades (issue 49: 1e-3..1e6 turned back at its first point) is
+// traced whole, in ln s with the response per unit force as unknowns. Reference: the
+// single-term harmonic balance's closed form (harmonics 0..1, the odd Duffing's mean 0):
+// s = a sqrt((1 - W^2 + 3/4 k3 a^2)^2 + (c W)^2) / 0.18 at every point, and its two folds,
+// where d(s^2)/d(a^2) = 0: 3 B^2 u^2 + 4 A B u + A^2 + C^2 = 0 (u = a^2, A = 1 - W^2,
+// B = 3/4 k3, C = c W).
+TEST(Scenes, ForceScaleOverNineDecadesFollowsTheClosedForm) {
+  log::setQuiet(true);
+  std::ifstream in(std::string(CYCLONE_SCENE_DIR) + "/duffing_force.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  yaml.replace(yaml.find("    from: 0.05\n    to: 3.0\n"), std::string("    from: 0.05\n    to: 3.0\n").size(),
+               "    from: 1.0e-3\n    to: 1.0e6\n");
+  yaml.replace(yaml.find("harmonics: [7]"), std::string("harmonics: [7]").size(), "harmonics: [1]");
+  const auto dir = freshDir("dforce_decades");
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(yaml, "duffing_force.yaml", o, Tpetra::getDefaultComm());
+  for (const auto& line : summary.computed) EXPECT_EQ(line.find("incomplete"), std::string::npos) << line;
+  const auto rows = readCsv(dir / "frc.csv");  // point, omega, freq, scale, h0, amp_h1, max, ...
+  ASSERT_GT(rows.size(), 10u);
+  EXPECT_DOUBLE_EQ(rows.front()[3], 1e-3);
+  EXPECT_NEAR(rows.back()[3] / 1e6, 1.0, 1e-12);
+  // Every decade alike: 134 points here (the point budget is 5000).
+  EXPECT_LT(rows.size(), 400u);
+  const double W = 1.2, c = 0.05, k3 = 0.1, A = 1 - W * W, B = 0.75 * k3, C = c * W;
+  auto closedForm = [&](double a) { return a * std::sqrt(std::pow(A + B * a * a, 2) + C * C) / 0.18; };
+  double worst = 0;
+  for (const auto& r : rows) worst = std::max(worst, std::abs(closedForm(r[5]) / r[3] - 1));
+  std::printf("  1e-3..1e6: %zu points, largest relative difference from the closed form %.2e\n", rows.size(), worst);
+  EXPECT_LT(worst, 1e-8);
+  std::vector<double> folds;
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+    if ((rows[i][3] - rows[i - 1][3]) * (rows[i + 1][3] - rows[i][3]) < 0) folds.push_back(rows[i][3]);
+  ASSERT_EQ(folds.size(), 2u);
+  const double disc = std::sqrt(16 * A * A * B * B - 12 * B * B * (A * A + C * C));
+  const double upper = closedForm(std::sqrt((-4 * A * B - disc) / (6 * B * B)));
+  const double lower = closedForm(std::sqrt((-4 * A * B + disc) / (6 * B * B)));
+  // The turning points are traced points beside the folds (steps of a few percent there).
+  EXPECT_NEAR(folds[0] / upper, 1.0, 1e-2);
+  EXPECT_NEAR(folds[1] / lower, 1.0, 1e-2);
 }
 
 TEST(Scenes, ForceLevelContinuationFoldsAndMeetsTheFrequencySweep) {

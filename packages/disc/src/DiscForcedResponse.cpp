@@ -290,6 +290,14 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
   out.headline = discHeadline(out.curve);
   if (out.headline.found()) log::info(out.headline.text);
   out.sectorSize = mesh::boundingDiagonal(mesh);
+  if (options.peakInTime && out.headline.found() && out.curve.peakIndex < out.curve.branch.points.size()) {
+    log::info("time-domain check at the traced curve's largest point (" +
+              numberText(out.curve.peakOmega / (2 * M_PI), 6) + " Hz): up to " +
+              std::to_string(options.peakInTime->maxPeriods) + " periods");
+    out.peakInTime = integratePeakInTime(out.setup, out.curve.branch.points[out.curve.peakIndex].x,
+                                         out.curve.peakOmega, models.sectors, spec.engineOrder, *options.peakInTime);
+    log::info(out.peakInTime->text);
+  }
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "cyclone/core/AtomicFile.hpp"
@@ -88,6 +89,28 @@ void writePeriodResponseFiles(const std::string& csvPath, const std::string& svg
   }
   file.check(csv);
   file.commit();
+  plot.write(svgPath);
+}
+
+void writePeakInTimeFiles(const std::string& csvPath, const std::string& svgPath, const disc::PeakInTime& check) {
+  AtomicFile file(csvPath);
+  std::ofstream csv(file.tempPath());
+  csv.precision(10);
+  csv << "period,amplitude_mm\n";
+  std::vector<double> period(check.amplitudeHistory.size());
+  for (std::size_t k = 0; k < period.size(); ++k) {
+    period[k] = double(k + 1);
+    csv << k + 1 << "," << check.amplitudeHistory[k] << "\n";
+  }
+  file.check(csv);
+  file.commit();
+  char title[160];
+  std::snprintf(title, sizeof title, "The peak in the time domain at %.2f Hz: max |x(t)| per period", check.hz);
+  SvgPlot plot(title, "period", "max |x(t)| over the period (mm)");
+  plot.addLine(period, check.amplitudeHistory, SvgPlot::palette(0), "time domain");
+  if (!period.empty())
+    plot.addLine({period.front(), period.back()}, {check.harmonicBalance, check.harmonicBalance}, SvgPlot::palette(1),
+                 "harmonic balance", true);
   plot.write(svgPath);
 }
 

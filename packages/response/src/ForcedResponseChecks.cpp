@@ -20,6 +20,14 @@ namespace {
 // The arclength trace past a fold in a level's peak search (findPeakPastFold): a bound on its
 // points, so that a level whose path wanders costs a bounded share of the check.
 constexpr int kPastFoldPoints = 400;
+
+// The checks' Newton tolerance at a point of excitation scale s: the force-scale form's
+// residual is relative to the forces at scale 1, so above it the trace's tolerance is
+// asked of the forces at s (a force curve over 1e-3..1e6 is traced so, in ln s: at 1e6
+// the unscaled tolerance asked 1e-16 of the force, and both checks found "no solution").
+double toleranceAtScale(const ForcedResponseSetup& setup, double scale) {
+  return setup.continuation.tolerance * std::max(1.0, std::abs(scale));
+}
 }  // namespace
 
 SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::BranchPoint& pt, double peak) {
@@ -30,7 +38,7 @@ SamplesCheck checkSamples(ForcedResponseSetup& setup, const continuation::Branch
   // The force-scale form at this frequency: the same row scaling as the trace.
   const auto problem = continuationProblem(*doubled, ForcedResponseSetup::Parameter::ForceScale, w);
   Eigen::VectorXd X = pt.x;
-  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  const auto newton = continuation::solveNewton(problem, X, scale, toleranceAtScale(setup, scale));
   SamplesCheck check;
   check.samples = N;
   std::ostringstream out;
@@ -368,7 +376,7 @@ std::string pointHarmonicsCheck(ForcedResponseSetup& setup, const continuation::
   const auto refined = raisedSystem(hb, raised);
   const auto problem = continuationProblem(*refined, ForcedResponseSetup::Parameter::ForceScale, w);
   Eigen::VectorXd X = hbm::transferCoefficients(pt.x, hb.numDofs(), H, raised);
-  const auto newton = continuation::solveNewton(problem, X, scale, setup.continuation.tolerance);
+  const auto newton = continuation::solveNewton(problem, X, scale, toleranceAtScale(setup, scale));
   if (!newton.converged) {
     out << ": no solution at the peak (residual " << newton.residualNorm << ")";
     log::warn(out.str());

@@ -218,8 +218,53 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup) {
 
 namespace {
 
+// A force scale over decades is traced in q = ln s with the response per unit force
+// Y = X / s as unknowns and the residual relative to the force at s. In s and X the
+// Duffing over 1e-3..1e6 turned back at its first point (issue 49): each step is a
+// fraction of the whole range in s, so the start's decades are crossed in one step, and
+// the residual relative to the unit force asks 1e-16 of the force at 1e6. In q and Y a
+// linear response is one point and every decade costs alike.
+bool tracedInLogForce(const ForcedResponseSetup& setup) {
+  const auto& o = setup.continuation;
+  return setup.parameter == ForcedResponseSetup::Parameter::ForceScale && o.from > 0 && o.to > 0 &&
+         std::max(o.from, o.to) > kLogForceDecadeRatio * std::min(o.from, o.to);
+}
+
+continuation::Branch traceInLogForce(ForcedResponseSetup& setup, const Eigen::VectorXd& start) {
+  const auto base = continuationProblem(setup);
+  continuation::ContinuationProblem log = base;
+  log.residual = [base](const Eigen::VectorXd& Y, double q, Eigen::VectorXd& R) {
+    const double s = std::exp(q);
+    base.residual(s * Y, s, R);
+    R /= s;
+  };
+  log.jacobian = [base](const Eigen::VectorXd& Y, double q, Eigen::MatrixXd& J) {
+    const double s = std::exp(q);
+    base.jacobian(s * Y, s, J);  // d(R / s)/dY = (dR/dX) s / s
+  };
+  if (base.jacobianOperator)
+    log.jacobianOperator = [base](const Eigen::VectorXd& Y, double q) {
+      const double s = std::exp(q);
+      return base.jacobianOperator(s * Y, s);
+    };
+  log.parameterDerivative = nullptr;  // the engines difference it in q
+  log.measure = nullptr;              // a force curve has no located peaks
+  auto o = setup.continuation;
+  o.from = std::log(o.from), o.to = std::log(o.to);
+  for (double& mark : o.parameterMarks) mark = mark > 0 ? std::log(mark) : o.from;
+  auto branch = continuation::traceBranch(log, start / setup.continuation.from, o);
+  for (auto& point : branch.points) {
+    const double s = std::exp(point.parameter);
+    point.parameter = s, point.x *= s;
+  }
+  branch.reached = std::exp(branch.reached);
+  if (!branch.finished) branch.stopReason += " (traced in ln of the force scale: p there is ln s)";
+  return branch;
+}
+
 // One arclength run over setup.continuation's range from a converged start.
 continuation::Branch traceOneSweep(ForcedResponseSetup& setup, const Eigen::VectorXd& start, double scale) {
+  if (tracedInLogForce(setup)) return traceInLogForce(setup, start);
   if (!(scale > 0) || scale == 1) return continuation::traceBranch(continuationProblem(setup), start, setup.continuation);
   // LOCA's arclength mixes the unknowns with the parameter: unknowns of order one keep
   // its steps in proportion (X = scale Y).

@@ -12,6 +12,7 @@
 
 #include "cyclone/continuation/ArclengthContinuation.hpp"
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
+#include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
 #include "cyclone/response/ForcedResponse.hpp"
 
@@ -39,6 +40,8 @@ struct DiscSweepOptions {
   /// Retraces a curve `continuation` leaves incomplete (none: not retraced).
   std::optional<continuation::ContinuationOptions> fallback =
       discContinuationOptions(continuation::ContinuationOptions::Engine::Loca);
+  /// The peak checked in the time domain (DiscPeakInTime.hpp; none: not checked).
+  std::optional<PeakInTimeOptions> peakInTime;
 };
 
 /// The peak a disc run reports: the harmonics check's highest level found.
@@ -86,6 +89,9 @@ struct DiscForcedResponse {
   response::ForcedResponseResult curve;
   DiscHeadline headline;
   std::vector<std::string> warnings;  ///< e.g. the largest response at the end of the sweep
+  /// The time domain at the traced curve's largest point, where DiscSweepOptions::peakInTime
+  /// asks for it and the headline was found.
+  std::optional<PeakInTime> peakInTime;
   double sectorSize = 0;  ///< the mesh's bounding box's diagonal (mm)
   /// The contacts' normal stiffness over the sector's own at their pairs, the largest
   /// (kn times the structure's compliance along the contact's normal, the engine order's

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/disc/DiscPointStates.hpp"
 
 namespace cyclone::post {
@@ -19,5 +20,10 @@ void writeHysteresisFiles(const std::string& csvPath, const std::string& svgPath
 /// The output DOFs over one period as CSV (freq_hz,t_over_T,<names>) and SVG.
 void writePeriodResponseFiles(const std::string& csvPath, const std::string& svgPath, const std::string& title,
                               const std::vector<std::string>& names, const disc::DiscPointStates& states);
+
+/// The peak's time-domain check (disc::PeakInTime) as CSV (period,amplitude_mm: max |x(t)|
+/// of the output DOF per period) and SVG (that against the period, the harmonic balance's
+/// periodic amplitude as a dashed line).
+void writePeakInTimeFiles(const std::string& csvPath, const std::string& svgPath, const disc::PeakInTime& check);
 
 }  // namespace cyclone::post

@@ -33,6 +33,8 @@ struct StartingPoint {
 /// costs a few iterations.
 StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 
+constexpr double kLogForceDecadeRatio = 100;
+
 /// The curve a scene describes: arclength continuation over the range from a
 /// starting point (by default findStartingPoint's). Without one (an empty x) the curve
 /// is traced from the end of the range towards its start, as far as a start found
@@ -41,6 +43,9 @@ StartingPoint findStartingPoint(ForcedResponseSetup& setup);
 /// (it returned to its start, or stopped with a reason) is followed by a second sweep
 /// from the range's end, a second segment of the branch (Branch::segmentStarts); the
 /// stop reason says how far each got. The scene runner and the tests both trace here.
+/// A force-scale curve whose range spans more than kLogForceDecadeRatio (both ends positive)
+/// is traced in q = ln s with the response per unit force X / s as unknowns and the
+/// residual relative to the force at s; its points are given back in s and X.
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup, const StartingPoint& start);
 continuation::Branch traceForcedResponse(ForcedResponseSetup& setup);
 

@@ -1,0 +1,79 @@
+#pragma once
+// The friction-damped peak checked in the time domain: the ring of reduced sectors
+// integrated in time at the headline's frequency (hbm::integrateTravellingWave: every
+// sector the engine order tells apart, each with its own shroud contacts, the contact law
+// one step at a time, every harmonic the contacts make), started from the harmonic
+// balance's periodic state there.
+//
+// Why: where the shroud hammers (every pair opening each period) the harmonic balance
+// cannot bound its error: the contact forces' spectrum does not decay, and its periodic
+// solution near the peak can be one the disc does not settle on (a complex pair of
+// Floquet exponents: the motion is modulated; docs/studies/time_domain_disc.md). The
+// time domain keeps every harmonic and follows whatever the motion does, so it says
+// whether the periodic peak is the disc's amplitude, and if not, what the amplitude is.
+//
+// The time domain needs a causal, explicit model: the hybrid models' modes, their static
+// correction realized by modes at `residualHz` and the loss factor as modal viscous
+// damping (hbm::causalModalModel). That realization is its own model: on the default disc
+// at the demo's preload its peak lies 2.8 % above the hybrid one's
+// (docs/studies/time_domain_disc.md), so a difference of a few percent where the motion is
+// steady is the two models', not the harmonics'.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cyclone/hbm/TravellingWaveIntegration.hpp"
+
+namespace cyclone::response {
+struct ForcedResponseSetup;
+}
+
+namespace cyclone::disc {
+
+/// How the peak is integrated in time; every field has the scenes' default.
+struct PeakInTimeOptions {
+  int stepsPerPeriod = 1024;  ///< raised to the central difference's stability limit where it needs more
+  int maxPeriods = 600;
+  /// The hybrid models' static correction realized by modes at this frequency (Hz).
+  double residualHz = 50000;
+  /// The run ends where the output DOF's amplitude stayed within this over 50 periods.
+  double amplitudeTolerance = 1e-3;
+};
+
+/// The time domain at the harmonic balance's peak.
+struct PeakInTime {
+  double hz = 0;                ///< the traced curve's largest point's frequency
+  double harmonicBalance = 0;   ///< its max |x(t)| of the output DOF (mm)
+  hbm::TravellingWaveResponse::Ending ending = hbm::TravellingWaveResponse::Ending::NotSteady;
+  int periods = 0, stepsPerPeriod = 0, sectors = 0;
+  /// max |x(t)| of the output DOF per period: over the last period, and the largest and
+  /// smallest over the last quarter of the run (at least 50 periods; where it is not steady: the
+  /// modulation's range).
+  double lastAmplitude = 0, largest = 0, smallest = 0;
+  std::vector<double> amplitudeHistory;  ///< per period, from the start
+  double seconds = 0;
+  std::string text;  ///< the summary's line
+  bool steady() const { return ending != hbm::TravellingWaveResponse::Ending::NotSteady; }
+  /// The time domain's amplitude against the harmonic balance's: largest / harmonicBalance - 1.
+  double difference() const { return harmonicBalance > 0 ? largest / harmonicBalance - 1 : 0; }
+  /// Steady within kPeakInTimeModelDifference of the harmonic balance: what the causal model's
+  /// own difference allows. Beyond it (a hammering shroud: the disc started on the periodic
+  /// peak settled a factor of three below it) the periodic peak is not the disc's amplitude.
+  bool agrees() const;
+};
+
+/// The causal model's own difference from the hybrid one is a few percent (2.8 % at the
+/// default disc's peak); a steady amplitude farther than this from the harmonic balance's
+/// is another motion.
+constexpr double kPeakInTimeModelDifference = 0.05;
+
+inline bool PeakInTime::agrees() const { return steady() && std::abs(difference()) <= kPeakInTimeModelDifference; }
+
+/// The ring integrated in time at the point `x` (a solution of setup's system at
+/// `omega`), from that periodic state; `sectors` and `engineOrder` give the phases the
+/// excitation and contacts reach (multiples of gcd(engine order, sectors)). InputError
+/// where the system has no modal receptance model (a full FE or matrix system).
+PeakInTime integratePeakInTime(const response::ForcedResponseSetup& setup, const Eigen::VectorXd& x, double omega,
+                               long sectors, int engineOrder, const PeakInTimeOptions& options = {});
+
+}  // namespace cyclone::disc
