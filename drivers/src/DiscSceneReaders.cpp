@@ -138,8 +138,13 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       plan.nds = disc::nodalDiametersForCheckedCurve(sectors, spec.engineOrder, spec.harmonics, plan.harmonicsCheckTo);
       // And the time domain's: it integrates every sector the engine order tells apart
       // (DiscPeakInTime.hpp), whose phases harmonics 0..N / gcd(EO, N) - 1 reach (without
-      // them the check failed after the curve: "no model for nodal diameter 12" with H = 3).
-      if (d.has("time_domain_check")) {
+      // them the check failed after the curve: "no model for nodal diameter 12" with H = 3);
+      // so does the sweep in time.
+      if (d.has("time_domain_check") || d.has("time_domain_sweep")) {
+        if (plan.modelSpec.kind == disc::ReducedModelKind::FullFe)
+          throw InputError(d.where(d.has("time_domain_check") ? "time_domain_check" : "time_domain_sweep"),
+                           "needs reduced models with modes (reduced_model/kind hybrid, truncation, guyan or "
+                           "craig_bampton): the time domain integrates their modes, and a full FE model has none");
         std::vector<int> everyPhase;
         for (int h = 0; h < sectors / std::gcd(spec.engineOrder, sectors); ++h) everyPhase.push_back(h);
         plan.nds = disc::nodalDiametersFor(sectors, spec.engineOrder, everyPhase);

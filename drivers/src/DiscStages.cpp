@@ -21,6 +21,7 @@
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/PeakMagnitude.hpp"
 #include "cyclone/mesh/Mesh.hpp"
+#include "cyclone/post/SweepInTimeFiles.hpp"
 #include "cyclone/post/SvgPlot.hpp"
 #include "cyclone/rom/HybridFrfModel.hpp"
 #include "cyclone/disc/ShroudContactLaw.hpp"
@@ -157,6 +158,21 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
              "the response grows without bound";
     log::warn(why);
     summary.computed.insert(summary.computed.begin(), "warning: " + why);
+  }
+  // The band swept in time: the disc's amplitude where the periodic response is not its
+  // motion (the hammering shroud), so written whether or not a periodic peak was found.
+  if (solved.sweepsInTime) {
+    summary.computed.insert(summary.computed.begin() + 1, solved.sweepsInTime->text());
+    for (const auto& path : post::writeSweepInTimeFiles(outDir, "disc_time_sweep", *solved.sweepsInTime))
+      summary.written.push_back(path);
+    const auto& first = solved.sweepsInTime->sweeps.front();
+    summary.stages.push_back(
+        {"time-domain sweep (" + std::to_string(solved.sweepsInTime->sweeps.size()) + " preloads, " +
+             std::to_string(first.points.size()) + " frequencies)",
+         solved.sweepsInTime->seconds,
+         "the ring of " + std::to_string(first.sectors) + " sectors by the central difference, " +
+             std::to_string(first.stepsPerPeriod) + " steps a period; the amplitude's resolution in frequency is the "
+             "grid's step, " + numberText(first.resolutionHz(), 3) + " Hz"});
   }
   return solved;
 }

@@ -1,5 +1,6 @@
 // disc_response's keys for the curve (family, range, stability, the continuation), read
 // onto the disc's sweep options.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,31 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
     if (o.stepsPerPeriod < 16) throw InputError(td.where("steps_per_period"), "must be at least 16");
     td.rejectUnknownKeys();
     sweep.peakInTime = o;
+  }
+
+  // The band swept in time: asked for by the section, e.g. {preloads: [0, 1000, 20000]}.
+  if (d.has("time_domain_sweep")) {
+    if (!d.isSection("time_domain_sweep"))
+      throw InputError(d.where("time_domain_sweep"), "expects a section, e.g. {band: [1400, 1580], preloads: [0, 2000]}");
+    auto ts = d.section("time_domain_sweep");
+    disc::SweepInTimeOptions o;
+    const auto band = ts.getDoubleList("band", {});
+    if (!band.empty() && (band.size() != 2 || !(band[0] > 0) || !(band[1] > band[0])))
+      throw InputError(ts.where("band"), "needs two increasing positive frequencies [from, to] in Hz");
+    if (!band.empty()) o.fromHz = band[0], o.toHz = band[1];
+    o.frequencies = ts.getInt("frequencies", 12);
+    if (o.frequencies < 2 || o.frequencies > 1000) throw InputError(ts.where("frequencies"), "must lie in 2..1000");
+    o.periods = ts.getInt("periods", o.periods);
+    if (o.periods < 100) throw InputError(ts.where("periods"), "must be at least 100 (the steadiness is judged over the last 50)");
+    o.stepsPerPeriod = ts.getInt("steps_per_period", o.stepsPerPeriod);
+    if (o.stepsPerPeriod < 16) throw InputError(ts.where("steps_per_period"), "must be at least 16");
+    sweep.sweepPreloads = ts.getDoubleList("preloads", {});
+    for (std::size_t i = 0; i < sweep.sweepPreloads.size(); ++i)
+      if (!(sweep.sweepPreloads[i] >= 0 && std::isfinite(sweep.sweepPreloads[i])) ||
+          (i > 0 && !(sweep.sweepPreloads[i] > sweep.sweepPreloads[i - 1])))
+        throw InputError(ts.where("preloads"), "must be >= 0 and increasing (N, as disc_response/contact/preload)");
+    ts.rejectUnknownKeys();
+    sweep.sweepInTime = o;
   }
 
   sweep.stability = readStability(d);

@@ -91,8 +91,8 @@ int main(int argc, char** argv) {
     const char* how = r.ending == hbm::TravellingWaveResponse::Ending::Periodic          ? "periodic"
                       : r.ending == hbm::TravellingWaveResponse::Ending::SteadyAmplitude ? "amplitude steady"
                                                                                           : "not steady";
-    std::printf("  %9.3f Hz  %.6f mm  (%s; %d periods, change %.1e a period, amplitude spread %.1e; %.1f s)\n", hz,
-                r.peak(out), how, r.periods, r.periodChange, r.amplitudeSpread, r.seconds);
+    std::printf("  %9.3f Hz  %.6f mm  (%s; %d periods of %d steps, %d modes, change %.1e a period, amplitude spread %.1e; %.1f s)\n", hz,
+                r.peak(out), how, r.periods, r.stepsPerPeriod, r.modes, r.periodChange, r.amplitudeSpread, r.seconds);
     if (r.converged && r.peak(out) > best) best = r.peak(out), bestHz = hz;
     if (history)
       for (std::size_t k = 0; k < r.amplitudeHistory.size(); ++k)

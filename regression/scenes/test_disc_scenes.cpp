@@ -724,3 +724,74 @@ TEST(Scenes, DiscGapClearanceStudyTracesEachValue) {
     EXPECT_NE(bad.find("peak_studies/clearance/range"), std::string::npos) << range << ": " << bad;
   }
 }
+
+// disc_response/time_domain_sweep: the band swept in time at each preload (the thin disc,
+// its shroud as 4 contact patches so that the ring's step is cheap), the summary's second
+// line, the table of every preload's frequencies, and the largest against the preload
+// with the smallest marked. The amplitudes themselves are verified against the harmonic
+// balance by regression/verification/disc_sweep_in_time.cpp.
+TEST(Scenes, ATimeDomainSweepTablesEveryPreloadAndMarksTheSmallest) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_time_sweep");
+  std::string scene = discResponseScene();
+  scene.replace(scene.find("      preload: 5.0\n"), 19, "      preload: 500.0\n      patches: 4\n");
+  scene += "    stability: false\n"
+           "    time_domain_sweep: {frequencies: 2, periods: 100, preloads: [0.0, 500.0, 5000.0]}\n";
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  const auto summary = scenes::runSceneText(scene, "time_sweep.yaml", o, Tpetra::getDefaultComm());
+  ASSERT_GE(summary.computed.size(), 2u);
+  EXPECT_EQ(summary.computed[1].rfind("the ring in time swept over ", 0), 0u) << summary.computed[1];
+  EXPECT_NE(summary.computed[1].find("at 3 preloads"), std::string::npos) << summary.computed[1];
+  const auto rows = readCsv(dir / "disc_time_sweep.csv");
+  ASSERT_EQ(rows.size(), 6u);  // 3 preloads x 2 frequencies
+  const double preloads[] = {0.0, 500.0, 5000.0};
+  std::vector<double> largest(3, 0.0);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 7u);
+    EXPECT_EQ(rows[i][0], preloads[i / 2]);
+    EXPECT_GT(rows[i][2], 0.0);
+    EXPECT_LE(rows[i][3], rows[i][2]);  // smallest <= largest per period
+    largest[i / 2] = std::max(largest[i / 2], rows[i][2]);
+  }
+  const auto byPreload = readCsv(dir / "disc_time_sweep_preload.csv");
+  ASSERT_EQ(byPreload.size(), 3u);
+  const auto smallest = std::size_t(std::min_element(largest.begin(), largest.end()) - largest.begin());
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(byPreload[i][1], largest[i]);
+    EXPECT_EQ(byPreload[i][4], i == smallest ? 1.0 : 0.0) << i;
+  }
+  EXPECT_TRUE(fs::exists(dir / "disc_time_sweep.svg"));
+  EXPECT_TRUE(fs::exists(dir / "disc_time_sweep_preload.svg"));
+}
+
+// Its keys are refused with their names before any work (no reduced model built).
+TEST(Scenes, ATimeDomainSweepsKeysAreRefusedBeforeAnyWork) {
+  log::setQuiet(true);
+  const auto dir = freshDir("disc_time_sweep_keys");
+  const struct {
+    std::string section, key, what;
+  } cases[] = {
+      {"3", "cyclone/disc_response/time_domain_sweep", "expects a section"},
+      {"{periods: 50}", "cyclone/disc_response/time_domain_sweep/periods", "at least 100"},
+      {"{frequencies: 1}", "cyclone/disc_response/time_domain_sweep/frequencies", "must lie in 2..1000"},
+      {"{steps_per_period: 8}", "cyclone/disc_response/time_domain_sweep/steps_per_period", "at least 16"},
+      {"{band: [700.0, 600.0]}", "cyclone/disc_response/time_domain_sweep/band", "two increasing positive"},
+      {"{preloads: [10.0, 5.0]}", "cyclone/disc_response/time_domain_sweep/preloads", "increasing"},
+      {"{preloads: [-1.0]}", "cyclone/disc_response/time_domain_sweep/preloads", ">= 0"},
+      {"{bandd: [600.0, 700.0]}", "cyclone/disc_response/time_domain_sweep/bandd", "unknown key"},
+  };
+  for (const auto& c : cases) {
+    Timer timer;
+    const std::string msg = failure(discResponseScene() + "    time_domain_sweep: " + c.section + "\n", dir);
+    EXPECT_NE(msg.find("'" + c.key + "'"), std::string::npos) << c.section << ": " << msg;
+    EXPECT_NE(msg.find(c.what), std::string::npos) << c.section << ": " << msg;
+    EXPECT_FALSE(fs::exists(dir / "reduced_models")) << c.section << ": the reduced models were built";
+  }
+  // A full FE model has no modes to integrate: said before the work, not after the curve.
+  std::string fullFe = discResponseScene() + "    time_domain_sweep: {frequencies: 2}\n";
+  fullFe.replace(fullFe.find("    prestress: linear\n"), 0, "    kind: full_fe\n");
+  const std::string msg = failure(fullFe, dir);
+  EXPECT_NE(msg.find("'cyclone/disc_response/time_domain_sweep': needs reduced models with modes"), std::string::npos)
+      << msg;
+}

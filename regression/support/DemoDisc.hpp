@@ -55,6 +55,16 @@ inline disc::DiscResponseSpec demoDiscResponse(int maxHarmonic, double preload =
   return spec;
 }
 
+/// Harmonics 0..maxHarmonic with the demo scene's contact law: per unit area of the shroud
+/// face, kn = kt = 5000 N/mm^3, `preload` N over the face (20 kN: mostly closed, sliding).
+inline disc::DiscResponseSpec demoSceneResponse(int maxHarmonic, double preload = 20000.0) {
+  disc::DiscResponseSpec spec = demoDiscResponse(maxHarmonic);
+  spec.contact.law = disc::ShroudContactSpec::Law::PerArea;
+  spec.contact.kn = spec.contact.kt = 5000.0;
+  spec.contact.preload = preload;
+  return spec;
+}
+
 /// The frequency curve of `spec` at another preload over 2 % about `omega` (rad/s): what a
 /// continued peak at that preload is checked against (a friction-damped peak is 0.1 % wide
 /// at most; the whole range took up to 19 s a curve).

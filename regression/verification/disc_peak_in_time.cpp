@@ -42,10 +42,7 @@ TEST(DiscPeakInTime, SteadyPeakIsTheCausalModelsConvergedHarmonicBalance) {
   // so the reference's H = 10 needs no other model.
   const auto reduced =
       demo_disc::demoDiscReducedModels(mesh, p, 4, "disc_peak_in_time_models", Tpetra::getDefaultComm());
-  disc::DiscResponseSpec spec = demo_disc::demoDiscResponse(3);
-  spec.contact.law = disc::ShroudContactSpec::Law::PerArea;  // the demo's law and preload
-  spec.contact.kn = spec.contact.kt = 5000.0;
-  spec.contact.preload = 20000.0;
+  const disc::DiscResponseSpec spec = demo_disc::demoSceneResponse(3);  // the demo's law and preload
   disc::DiscSweepOptions sweep;
   sweep.stability = response::ForcedResponseSetup::Stability::Never;
   sweep.peakInTime = disc::PeakInTimeOptions{};

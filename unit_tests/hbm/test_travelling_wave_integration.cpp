@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/hbm/FrictionContact.hpp"
 #include "cyclone/hbm/FullRingSystem.hpp"
 #include "cyclone/hbm/HarmonicBalanceSystem.hpp"
 #include "cyclone/hbm/ModalReceptance.hpp"
@@ -107,6 +108,33 @@ TEST(TravellingWaveIntegrationVerification, SteadyStateIsTheFullRingsNewmarkStea
                 eo, tw.sectors, tw.modes, tw.periods, tw.seconds, st.periods, worst / size);
     EXPECT_LT(worst / size, 1e-4);  // two second-order schemes at T / 512: 1e-6 apart at T / 2048
   }
+}
+
+// A contact with no preload is open at rest, but the explicit step must hold while it is
+// closed: its step's limit is the stuck, closed contact's whatever the preload (sized at
+// rest, the default disc's ring took 256 steps a period at no preload where closed it
+// needs 630, and stayed bounded while it gave other amplitudes).
+TEST(TravellingWaveIntegration, AContactOpenAtRestSizesTheStepClosed) {
+  int steps[2] = {0, 0};
+  for (int i = 0; i < 2; ++i) {
+    const auto m = test_support::ringMatrices();
+    HarmonicBalanceSystem s(std::make_shared<MatrixReceptance>(m.M, m.C, m.K, 6, m.Mn, m.Cn, m.Kn),
+                            HarmonicSet::upTo(1), 16);
+    CyclicCoupling c;
+    c.sectors = 6, c.engineOrder = 2;
+    s.setCyclic(c);
+    FrictionContactParameters p;
+    p.tangentialDirections = 2, p.kt = 500.0, p.kn = 1000.0, p.mu = 0.3, p.preload = i == 0 ? 0.0 : 0.5;
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3, 3);
+    W(1, 0) = 1, W(0, 1) = 0.3, W(2, 2) = 1;
+    s.addElement(std::make_shared<FrictionContact>(p), W, -W);
+    s.addExcitation(1, 1, 0.8, 0.1);
+    TravellingWaveOptions o;
+    o.stepsPerPeriod = 8, o.maxPeriods = 2;
+    steps[i] = integrateTravellingWave(s, 1.9, o).stepsPerPeriod;
+  }
+  EXPECT_GT(steps[1], 8);  // the closed contact sets the step, not the 8 asked for
+  EXPECT_EQ(steps[0], steps[1]);
 }
 
 TEST(TravellingWaveIntegration, RefusesWhatItCannotIntegrate) {

@@ -298,6 +298,23 @@ DiscForcedResponse solveDiscForcedResponse(const mesh::Mesh& mesh, const DiscRed
                                          out.curve.peakOmega, models.sectors, spec.engineOrder, *options.peakInTime);
     log::info(out.peakInTime->text);
   }
+  if (options.sweepInTime) {
+    SweepInTimeOptions band = *options.sweepInTime;
+    if (band.fromHz == 0 && band.toHz == 0) {
+      band.fromHz = out.estimate ? 0.9 * out.estimate->stuckHz : out.fromHz;
+      band.toHz = out.estimate ? 1.01 * out.estimate->stuckHz : out.toHz;
+    }
+    const auto preloads = options.sweepPreloads.empty() ? std::vector<double>{spec.contact.preload} : options.sweepPreloads;
+    log::info("time domain: the ring swept over " + numberText(band.fromHz, 6) + ".." + numberText(band.toHz, 6) +
+              " Hz at " + std::to_string(band.frequencies) + " frequencies and " + std::to_string(preloads.size()) +
+              " preload(s), up to " + std::to_string(band.periods) + " periods each");
+    out.sweepsInTime = sweepPreloadsInTime(mesh, models, spec, preloads, band, [](const SweepInTimePoint& p) {
+      log::info("time domain at " + numberText(p.hz, 6) + " Hz: max|x(t)| " + numberText(p.largest) +
+                (p.steady() ? " (steady, " : " (not steady: smallest " + numberText(p.smallest) + ", ") +
+                std::to_string(p.periods) + " periods, " + std::to_string(std::lround(p.seconds)) + " s)");
+    });
+    log::info(out.sweepsInTime->text());
+  }
   return out;
 }
 

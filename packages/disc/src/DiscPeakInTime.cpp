@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
@@ -46,31 +47,50 @@ std::string peakInTimeText(const PeakInTime& r) {
 
 }  // namespace
 
+std::unique_ptr<hbm::HarmonicBalanceSystem> causalTimeSystem(const response::ForcedResponseSetup& setup, long sectors,
+                                                             int engineOrder, double residualHz, const std::string& key) {
+  if (!setup.system->receptance())
+    throw InputError(key, "needs reduced models with modes (hybrid, truncation, Guyan or Craig-Bampton): the time "
+                          "domain integrates their modes");
+  const long step = std::gcd(long(engineOrder), sectors);
+  std::vector<long> phases;
+  for (long q = 0; q < sectors; q += step) phases.push_back(q);
+  const auto causal = hbm::causalModalModel(*setup.system->receptance(), phases, 2 * M_PI * residualHz);
+  auto timeSystem = hbm::withReceptance(*setup.system, causal);
+  timeSystem->useDynamicStiffness(true);  // the realized static correction makes its dynamic stiffness invertible
+  return timeSystem;
+}
+
+hbm::TravellingWaveOptions travellingWaveOptions(const response::ForcedResponseSetup& setup, int stepsPerPeriod,
+                                                 int maxPeriods, double amplitudeTolerance) {
+  hbm::TravellingWaveOptions opt;
+  opt.stepsPerPeriod = stepsPerPeriod;
+  opt.maxPeriods = maxPeriods;
+  opt.steadyDofs = {setup.outputDofs.front()};
+  opt.amplitudeTolerance = amplitudeTolerance;
+  opt.excitationScale = setup.excitationScale;
+  return opt;
+}
+
+std::pair<double, double> modulationRange(const std::vector<double>& a) {
+  if (a.empty()) return {0.0, 0.0};
+  // On the hammering default disc it took 200 of 400 periods to leave the periodic
+  // state, and its modulation's cycle is about 45 periods (docs/studies/time_domain_disc.md).
+  const auto tail = a.end() - std::min<long>(long(a.size()), std::max<long>(50, long(a.size()) / 4));
+  return {*std::max_element(tail, a.end()), *std::min_element(tail, a.end())};
+}
+
 PeakInTime integratePeakInTime(const response::ForcedResponseSetup& setup, const Eigen::VectorXd& x, double omega,
                                long sectors, int engineOrder, const PeakInTimeOptions& options) {
   const auto& system = *setup.system;
-  if (!system.receptance())
-    throw InputError("disc_response/time_domain_check",
-                     "needs reduced models with modes (hybrid, truncation, Guyan or Craig-Bampton): the time domain "
-                     "integrates their modes");
   if (setup.outputDofs.empty()) throw InputError("disc_response/time_domain_check", "needs an output DOF");
   if (!(options.stepsPerPeriod >= 16) || !(options.maxPeriods >= 2 * 50) || !(options.residualHz > 0))
     throw InputError("disc_response/time_domain_check",
                      "steps_per_period must be at least 16, periods at least 100 and the residual frequency positive");
   Timer timer;
-  const long step = std::gcd(long(engineOrder), sectors);
-  std::vector<long> phases;
-  for (long q = 0; q < sectors; q += step) phases.push_back(q);
-  const auto causal = hbm::causalModalModel(*system.receptance(), phases, 2 * M_PI * options.residualHz);
-  auto timeSystem = hbm::withReceptance(system, causal);
-  timeSystem->useDynamicStiffness(true);  // the realized static correction makes its dynamic stiffness invertible
+  const auto timeSystem = causalTimeSystem(setup, sectors, engineOrder, options.residualHz, "disc_response/time_domain_check");
   const int out = setup.outputDofs.front();
-  hbm::TravellingWaveOptions opt;
-  opt.stepsPerPeriod = options.stepsPerPeriod;
-  opt.maxPeriods = options.maxPeriods;
-  opt.steadyDofs = {out};
-  opt.amplitudeTolerance = options.amplitudeTolerance;
-  opt.excitationScale = setup.excitationScale;
+  const auto opt = travellingWaveOptions(setup, options.stepsPerPeriod, options.maxPeriods, options.amplitudeTolerance);
   const hbm::TravellingWaveState start = hbm::travellingWaveStart(*timeSystem, x, omega, setup.excitationScale);
   const auto td = hbm::integrateTravellingWave(*timeSystem, omega, opt, &start);
 
@@ -82,17 +102,8 @@ PeakInTime integratePeakInTime(const response::ForcedResponseSetup& setup, const
   r.periods = td.periods, r.stepsPerPeriod = td.stepsPerPeriod, r.sectors = td.sectors;
   r.amplitudeHistory = td.amplitudeHistory;
   r.lastAmplitude = td.peak(out);
-  if (r.steady()) {
-    r.largest = r.smallest = r.lastAmplitude;
-  } else {
-    // The last quarter of the run (at least 50 periods): past the transient from the
-    // periodic state (on the hammering default disc it took 200 of 400 periods to leave
-    // it), and two cycles of a modulation of 45 periods (docs/studies/time_domain_disc.md).
-    const auto& a = r.amplitudeHistory;
-    const auto tail = a.end() - std::min<long>(long(a.size()), std::max<long>(50, long(a.size()) / 4));
-    r.largest = *std::max_element(tail, a.end());
-    r.smallest = *std::min_element(tail, a.end());
-  }
+  if (r.steady()) r.largest = r.smallest = r.lastAmplitude;
+  else std::tie(r.largest, r.smallest) = modulationRange(r.amplitudeHistory);
   r.seconds = timer.seconds();
   r.text = peakInTimeText(r);
   return r;

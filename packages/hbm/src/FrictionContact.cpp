@@ -476,6 +476,13 @@ void FrictionContact::sampledForce(const Aft& aft, const Eigen::MatrixXd& W, Eig
   march.coefficientJacobian(dzStart);
 }
 
+Eigen::MatrixXd FrictionContact::stiffestTangent() const {
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(dimension(), dimension());
+  for (int t = 0; t < p_.tangentialDirections; ++t) k(t, t) = p_.kt;
+  k(p_.tangentialDirections, p_.tangentialDirections) = p_.kn;
+  return k;
+}
+
 Eigen::VectorXd FrictionContact::incremental(const Eigen::VectorXd& w, const Eigen::VectorXd&, Eigen::VectorXd& state,
                                              Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const {
   const int d = dimension(), dt = p_.tangentialDirections;

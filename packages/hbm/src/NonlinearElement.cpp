@@ -12,6 +12,14 @@ Eigen::MatrixXd NonlinearElement::forceSamples(const Aft& aft, const Eigen::Matr
   return f;
 }
 
+Eigen::MatrixXd NonlinearElement::stiffestTangent() const {
+  const int d = dimension();
+  Eigen::VectorXd state = initialState(), zero = Eigen::VectorXd::Zero(d);
+  Eigen::MatrixXd k, kdot;
+  incremental(zero, zero, state, k, kdot);
+  return k;
+}
+
 void NonlinearElement::stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                                  Eigen::VectorXd& f) const {
   Eigen::MatrixXd dfdw, dfdwdot;

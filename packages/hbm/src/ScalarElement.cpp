@@ -4,6 +4,12 @@
 
 namespace cyclone::hbm {
 
+double ScalarElement::stiffestTangent() const {
+  double state = 0, k = 0, kdot = 0;
+  incremental(0.0, 0.0, state, k, kdot);
+  return k;
+}
+
 double ScalarElement::incremental(double w, double wdot, double&, double& dfdw, double& dfdwdot) const {
   Eigen::VectorXd W(1), V(1), f;
   W(0) = w, V(0) = wdot;

@@ -74,8 +74,8 @@ std::vector<Phase> integratedPhases(const HarmonicBalanceSystem& sys, int sector
   return out;
 }
 
-// The largest frequency of the modes with every element at its state at rest (a
-// friction contact stuck and closed by its preload): the explicit step's limit.
+// The largest frequency of the modes with every element at its stiffest (a friction
+// contact stuck and closed, with or without a preload): the explicit step's limit.
 double largestStuckFrequency(const HarmonicBalanceSystem& sys, const std::vector<Phase>& phases) {
   const int n = sys.numDofs(), N = sys.cyclic().sectors;
   double top = 0;
@@ -83,10 +83,7 @@ double largestStuckFrequency(const HarmonicBalanceSystem& sys, const std::vector
     const double a = 2 * M_PI * double(ph.p) / double(N);
     Eigen::MatrixXcd K = Eigen::MatrixXcd::Zero(n, n);
     for (const auto& conn : sys.elements()) {
-      const int d = conn.element->dimension();
-      Eigen::VectorXd state = conn.element->initialState(), zero = Eigen::VectorXd::Zero(d);
-      Eigen::MatrixXd k, kdot;
-      conn.element->incremental(zero, zero, state, k, kdot);
+      const Eigen::MatrixXd k = conn.element->stiffestTangent();
       Eigen::MatrixXcd B = conn.W.transpose().cast<cd>();  // w = B x~ for phase p's motion
       if (conn.Wnext.size()) B += cd(std::cos(a), -std::sin(a)) * conn.Wnext.transpose().cast<cd>();
       K.noalias() += B.adjoint() * k.cast<cd>() * B;

@@ -14,6 +14,7 @@
 #include "cyclone/disc/DiscHarmonicBalance.hpp"
 #include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/disc/DiscReducedModels.hpp"
+#include "cyclone/disc/DiscSweepInTime.hpp"
 #include "cyclone/response/ForcedResponse.hpp"
 
 namespace cyclone::mesh {
@@ -42,6 +43,13 @@ struct DiscSweepOptions {
       discContinuationOptions(continuation::ContinuationOptions::Engine::Loca);
   /// The peak checked in the time domain (DiscPeakInTime.hpp; none: not checked).
   std::optional<PeakInTimeOptions> peakInTime;
+  /// The band swept in the time domain (DiscSweepInTime.hpp; none: not swept) after the
+  /// curve, at each of `sweepPreloads` (empty: the spec's preload). A band of 0, 0: 0.9 to
+  /// 1.01 times the estimate's stuck frequency (the hammering shroud's resonance lies
+  /// below the stuck one: 8 % below it with no preload on the default disc), else the
+  /// curve's range.
+  std::optional<SweepInTimeOptions> sweepInTime;
+  std::vector<double> sweepPreloads;
 };
 
 /// The peak a disc run reports: the harmonics check's highest level found.
@@ -92,6 +100,8 @@ struct DiscForcedResponse {
   /// The time domain at the traced curve's largest point, where DiscSweepOptions::peakInTime
   /// asks for it and the headline was found.
   std::optional<PeakInTime> peakInTime;
+  /// The band swept in time, where DiscSweepOptions::sweepInTime asks for it.
+  std::optional<PreloadSweepsInTime> sweepsInTime;
   double sectorSize = 0;  ///< the mesh's bounding box's diagonal (mm)
   /// The contacts' normal stiffness over the sector's own at their pairs, the largest
   /// (kn times the structure's compliance along the contact's normal, the engine order's

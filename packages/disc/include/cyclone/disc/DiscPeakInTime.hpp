@@ -19,7 +19,9 @@
 // (docs/studies/time_domain_disc.md), so a difference of a few percent where the motion is
 // steady is the two models', not the harmonics'.
 #include <cmath>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cyclone/hbm/TravellingWaveIntegration.hpp"
@@ -68,6 +70,23 @@ struct PeakInTime {
 constexpr double kPeakInTimeModelDifference = 0.05;
 
 inline bool PeakInTime::agrees() const { return steady() && std::abs(difference()) <= kPeakInTimeModelDifference; }
+
+/// The system the time domain integrates: setup's with its receptance replaced by the
+/// causal modal model of the phases `sectors` and `engineOrder` reach (the static
+/// correction realized by modes at residualHz). InputError naming `key` where setup's
+/// system has no modal receptance model.
+std::unique_ptr<hbm::HarmonicBalanceSystem> causalTimeSystem(const response::ForcedResponseSetup& setup, long sectors,
+                                                             int engineOrder, double residualHz, const std::string& key);
+
+/// The integration's options for setup's first output DOF (the one whose amplitude must
+/// be steady) and excitation scale.
+hbm::TravellingWaveOptions travellingWaveOptions(const response::ForcedResponseSetup& setup, int stepsPerPeriod,
+                                                 int maxPeriods, double amplitudeTolerance);
+
+/// max |x(t)| per period over the last quarter of a run that did not settle (at least 50
+/// periods: past the transient, two cycles of the hammering disc's 45-period modulation):
+/// {largest, smallest}.
+std::pair<double, double> modulationRange(const std::vector<double>& amplitudeHistory);
 
 /// The ring integrated in time at the point `x` (a solution of setup's system at
 /// `omega`), from that periodic state; `sectors` and `engineOrder` give the phases the

@@ -68,6 +68,9 @@ public:
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
   void stepForce(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                  Eigen::VectorXd& f) const override;
+  /// Stuck and closed: kt on each tangential direction, kn on the normal (with no
+  /// preload or a clearance the contact is open at rest, so the rest tangent is zero).
+  Eigen::MatrixXd stiffestTangent() const override;
   /// kt, kn, stiffness (kn = kt = value together), mu, preload.
   std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
 

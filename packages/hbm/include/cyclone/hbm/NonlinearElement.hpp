@@ -66,6 +66,12 @@ public:
   /// copy). dfdw and dfdwdot are set to d x d.
   virtual Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                                       Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const = 0;
+  /// The largest tangent stiffness (d x d) the law takes: what limits an explicit time
+  /// step. By default the tangent at the initial state (w = 0); a law whose rest state is
+  /// softer than its closed one (a contact with no preload or with a clearance, open at
+  /// rest) gives its closed, stuck tangent, or a step sized at rest is unstable the
+  /// moment it closes.
+  virtual Eigen::MatrixXd stiffestTangent() const;
   /// The same step without its derivatives, f set to d values: what an explicit time
   /// integration calls for every element of every sector at every step (by default
   /// `incremental`; elements with a cheaper force alone override it).

@@ -48,6 +48,9 @@ public:
   /// converged step; `state` is updated in place for the trial (the caller keeps
   /// the committed copy). Memoryless elements use evaluate() on one sample.
   virtual double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const;
+  /// The largest tangent stiffness the law takes (NonlinearElement::stiffestTangent): by
+  /// default its tangent at rest.
+  virtual double stiffestTangent() const;
 
   /// A copy with one named parameter changed; InputError if it has no such parameter.
   virtual std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const;

@@ -26,6 +26,7 @@ public:
   Eigen::VectorXd incremental(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& state,
                               Eigen::MatrixXd& dfdw, Eigen::MatrixXd& dfdwdot) const override;
   std::shared_ptr<const NonlinearElement> withParameter(const std::string& name, double value) const override;
+  Eigen::MatrixXd stiffestTangent() const override { return Eigen::MatrixXd::Constant(1, 1, element_->stiffestTangent()); }
 
 private:
   std::shared_ptr<const ScalarElement> element_;

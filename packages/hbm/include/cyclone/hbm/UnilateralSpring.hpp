@@ -26,6 +26,8 @@ public:
   void lawSamples(const Eigen::VectorXd& w, const Eigen::VectorXd& wdot, Eigen::VectorXd& f) const override;
   /// The law itself at one instant (the time integration's).
   double incremental(double w, double wdot, double& state, double& dfdw, double& dfdwdot) const override;
+  /// Closed: k (with a gap the spring is open at rest).
+  double stiffestTangent() const override { return k_; }
 
   std::shared_ptr<const ScalarElement> withParameter(const std::string& name, double value) const override;
 private:
