@@ -96,6 +96,30 @@ void responseSections(std::ostringstream& r, const std::string& outDir) {
   }
 }
 
+// The time domain (disc_response/time_domain_check, time_domain_sweep): this run's files
+// only, as the studies'.
+void timeDomainSections(std::ostringstream& r, const std::string& outDir, const SceneSummary& summary) {
+  const auto wrote = [&summary](const std::string& name) {
+    for (const auto& path : summary.written)
+      if (std::filesystem::path(path).filename() == name) return true;
+    return false;
+  };
+  if (wrote("disc_peak_in_time.svg"))
+    r << "## The peak in the time domain\n\nThe ring of reduced sectors integrated in time at the curve's largest "
+         "point, started from its periodic state (`disc_peak_in_time.csv`: max |x(t)| per period; dashed, the "
+         "harmonic balance's periodic amplitude):\n\n![the peak in time](disc_peak_in_time.svg)\n\n";
+  if (!wrote("disc_time_sweep.svg")) return;
+  r << "## The band swept in time\n\nThe ring of reduced sectors integrated at each frequency of the band, upwards, "
+       "each from the last one's end (`disc_time_sweep.csv`: per preload and frequency the largest and smallest "
+       "max |x(t)| per period over the end of the run, and whether it settled; dashed, the smallest where it did "
+       "not):\n\n![the band swept in time](disc_time_sweep.svg)\n\n";
+  if (wrote("disc_time_sweep_preload.svg"))
+    r << "Per preload the largest amplitude over the band, the optimum preload (the smallest) marked "
+         "(`disc_time_sweep_preload.csv`):\n\n![the largest amplitude against the preload]"
+         "(disc_time_sweep_preload.svg)\n\n"
+      << csvTable(outDir + "/disc_time_sweep_preload.csv", 50) << "\n";
+}
+
 // The value-list studies' figures and tables, and the peaks followed over a parameter:
 // this run's only (an earlier run's study_* files in the same directory made a section of
 // a run that had no studies).
@@ -144,6 +168,7 @@ void writeRunReport(const std::string& outDir, const std::string& source, const 
   }
   modalSections(r, outDir);
   responseSections(r, outDir);
+  timeDomainSections(r, outDir, summary);
   studySections(r, outDir, summary);
   r << "## Files\n\n";
   for (const auto& f : summary.written) r << "- `" << std::filesystem::path(f).filename().string() << "`\n";

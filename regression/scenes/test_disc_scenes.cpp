@@ -763,6 +763,12 @@ TEST(Scenes, ATimeDomainSweepTablesEveryPreloadAndMarksTheSmallest) {
   }
   EXPECT_TRUE(fs::exists(dir / "disc_time_sweep.svg"));
   EXPECT_TRUE(fs::exists(dir / "disc_time_sweep_preload.svg"));
+  // The report shows both figures and the table.
+  std::ifstream in(dir / "report.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("![the band swept in time](disc_time_sweep.svg)"), std::string::npos);
+  EXPECT_NE(report.find("![the largest amplitude against the preload](disc_time_sweep_preload.svg)"), std::string::npos);
+  EXPECT_NE(report.find("| preload_n | largest_mm |"), std::string::npos);
 }
 
 // Its keys are refused with their names before any work (no reduced model built).
