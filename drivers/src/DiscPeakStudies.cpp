@@ -161,6 +161,7 @@ void followDiscPeaks(const std::vector<PeakStudySpec>& studies, const mesh::Mesh
     if (comm->getRank() == 0)
       for (const auto& path : post::writePeakFollowingFiles(outDir, name, unit, f, listedHere))
         summary.written.push_back(path);
+    if (f.continued) summary.continuedPeakStudies.push_back(name);
     std::string line = peakStudyLine(name, {study.from, study.to}, f, listedHere);
     for (const auto& w : f.warnings) line += "; warning: " + w;
     summary.computed.push_back(line);

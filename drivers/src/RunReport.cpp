@@ -1,4 +1,5 @@
 // The report a person reads after a run: Markdown next to the figures.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -142,8 +143,8 @@ void studySections(std::ostringstream& r, const std::string& outDir, const Scene
     const std::string base = name.substr(0, name.size() - 4);
     if (!studies) r << "## Parameter studies\n\n", studies = true;
     const std::string parameter = base.substr(5);
-    bool continued = false;  // said by the study's summary line
-    for (const auto& line : summary.computed) continued |= line.rfind("peak continued over the " + parameter + " ", 0) == 0;
+    const auto& byLoca = summary.continuedPeakStudies;
+    const bool continued = std::find(byLoca.begin(), byLoca.end(), parameter) != byLoca.end();
     r << "### " << parameter << ": the peak followed\n\n"
       << (continued ? "The reference curve's peak continued over the range by one LOCA continuation"
                     : "One peak search per value from the reference curve's peak")

@@ -29,6 +29,9 @@ struct SceneSummary {
   std::vector<std::string> computed;  ///< one line per result, for the final summary
   std::vector<std::string> written;   ///< files produced
   std::vector<StageRecord> stages;    ///< for the report's table of error against run time
+  /// The peak studies' parameters whose peak was continued by LOCA (the others: a peak
+  /// search per value), for the report's words.
+  std::vector<std::string> continuedPeakStudies;
 };
 
 /// `source` names the scene in messages (a file name or "embedded demo scene").
