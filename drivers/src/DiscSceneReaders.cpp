@@ -207,9 +207,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   }
   plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
   plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
-  if (plan.modelSpec.checkFrequencies < 0)
-    throw InputError(r.where("check_frequencies"), std::to_string(plan.modelSpec.checkFrequencies) +
-                                                       ": must be >= 0 (0: no check of the reduced models)");
+  r.underKey("check_frequencies", [&] { disc::checkModelCheckFrequencies(plan.modelSpec.checkFrequencies); });
   plan.rebuildCache = cache == "rebuild" && !plan.cacheDir.empty();
   r.rejectUnknownKeys();
   disc::checkReducedModelCache(mesh, plan.modelSpec, plan.nds, plan.cacheDir);  // before the modes' and static work

@@ -5,6 +5,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "DiscStages.hpp"
 
@@ -39,8 +40,11 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
     disc::PeakInTimeOptions o;
     o.maxPeriods = td.getInt("periods", o.maxPeriods);
     o.stepsPerPeriod = td.getInt("steps_per_period", o.stepsPerPeriod);
-    if (o.maxPeriods < 100) throw InputError(td.where("periods"), "must be at least 100 (the steadiness is judged over the last 50)");
-    if (o.stepsPerPeriod < 16) throw InputError(td.where("steps_per_period"), "must be at least 16");
+    try {
+      disc::checkPeakInTimeOptions(o);
+    } catch (const InputError& e) {
+      throw InputError(td.where(e.where()), e.problem());
+    }
     td.rejectUnknownKeys();
     sweep.peakInTime = o;
   }

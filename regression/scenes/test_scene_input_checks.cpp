@@ -903,3 +903,97 @@ TEST(Scenes, ALocaPointBudgetIsNamed) {
     said = said || line.find("the point budget (max_points 2) was reached") != std::string::npos;
   EXPECT_TRUE(said) << (summary.computed.empty() ? "" : summary.computed.front());
 }
+
+// A disc scene's mistakes in keys that only later stages read, refused before the first FE
+// solve and with nothing written: the log's first FE line stops the run (a refusal that
+// came after it fails the test at once, not after the minutes the work would take).
+namespace {
+
+struct FeWorkBegan {
+  std::string line;
+};
+
+// The refusal's message, or "" (a failure added) where the scene ran into FE work or
+// through; the output directory then holds nothing but the run's manifest.
+std::string refusedBeforeFeWork(const std::string& yaml, const fs::path& dir) {
+  log::setQuiet(false);
+  log::setSink([](log::Level, const std::string& m) {
+    for (const char* fe : {"static analysis", "prestress", "nodal diameter model", "reduced model", "forced response"})
+      if (m.find(fe) != std::string::npos) throw FeWorkBegan{m};
+  });
+  std::string message;
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  try {
+    scenes::runSceneText(yaml, "bad.yaml", o, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "the scene ran through";
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const FeWorkBegan& e) {
+    ADD_FAILURE() << "FE work began before the scene was refused: " << e.line;
+  }
+  log::setSink({});
+  log::setQuiet(true);
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "run_manifest.txt" || name == ".cyclone_run.lock") << name << " written by a refused scene";
+  }
+  return message;
+}
+
+}  // namespace
+
+// disc_response/time_domain_check: not a section, too few periods or steps, an unknown key,
+// and a run too large for it (steps_per_period 1e9 ran out of memory after the curve;
+// periods x steps over the limit would integrate for hours; issue 49's sixth probe). A
+// matrix system takes no time-domain check: the key is refused there, named.
+TEST(Scenes, TimeDomainCheckIsRefusedBeforeAnyFeWork) {
+  const auto dir = freshDir("time_domain_check");
+  const std::string disc = discResponseScene();
+  struct Case {
+    std::string keys, named, why;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"600", "disc_response/time_domain_check'", "expects a section"},
+           {"[600]", "disc_response/time_domain_check'", "expects a section"},
+           {"{periods: 99}", "time_domain_check/periods'", "must be at least 100"},
+           {"{periods: 1.5}", "time_domain_check/periods'", "expected an integer"},
+           {"{steps_per_period: 15}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{steps_per_period: 65537}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{steps_per_period: 1000000000}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{periods: 100000}", "time_domain_check/periods'", "more than the 2e+07 the check takes"},
+           {"{periods: 2000, steps_per_period: 65536}", "time_domain_check/steps_per_period'",
+            "more than the 2e+07 the check takes"},
+           {"{periods: 600, stepz: 64}", "time_domain_check/stepz'", "unknown key (known here: periods, steps_per_period)"},
+       }) {
+    const auto msg = refusedBeforeFeWork(disc + "    time_domain_check: " + c.keys + "\n", dir);
+    EXPECT_NE(msg.find("bad.yaml"), std::string::npos) << c.keys << ": " << msg;
+    EXPECT_NE(msg.find(c.named), std::string::npos) << c.keys << ": " << msg;
+    EXPECT_NE(msg.find(c.why), std::string::npos) << c.keys << ": " << msg;
+  }
+  // The largest run taken: periods x steps_per_period at the limit, 20000 x 1000.
+  const auto taken = linesUntil(disc + "    time_domain_check: {periods: 20000, steps_per_period: 1000}\n",
+                                freshDir("time_domain_check_taken"), "nodal diameter model");
+  EXPECT_NE(taken.back().find("nodal diameter model"), std::string::npos) << joined(taken);
+  // A matrix system: at the top level an unknown key, inside disc_response a section it does not read.
+  const auto top = refusedBeforeFeWork(duffingSceneWith("  samples: 64\n", "  samples: 64\n  time_domain_check: {periods: 600}\n"), dir);
+  EXPECT_NE(top.find("cyclone/time_domain_check': unknown key"), std::string::npos) << top;
+  const auto nested = refusedBeforeFeWork(
+      duffingSceneWith("  samples: 64\n", "  samples: 64\n  disc_response:\n    time_domain_check: {periods: 600}\n"), dir);
+  EXPECT_NE(nested.find("cyclone/disc_response': is not read by a matrix system's forced_response"), std::string::npos)
+      << nested;
+}
+
+// reduced_model/check_frequencies: 100000 built the models and ran the check for hours
+// (issue 49's sixth probe); refused before any FE work, with the bound and why.
+TEST(Scenes, CheckFrequenciesBeyondTheBoundAreRefusedBeforeAnyFeWork) {
+  const auto dir = freshDir("check_frequencies");
+  const std::string disc = discResponseScene();
+  const std::string at = "    check_frequencies: 0\n";
+  for (const std::string value : {"100000", "201", "-1"}) {
+    std::string yaml = disc;
+    yaml.replace(yaml.find(at), at.size(), "    check_frequencies: " + value + "\n");
+    const auto msg = refusedBeforeFeWork(yaml, dir);
+    EXPECT_NE(msg.find("reduced_model/check_frequencies': " + value + ": must lie in 0..200"), std::string::npos) << msg;
+  }
+}
