@@ -997,3 +997,39 @@ TEST(Scenes, CheckFrequenciesBeyondTheBoundAreRefusedBeforeAnyFeWork) {
     EXPECT_NE(msg.find("reduced_model/check_frequencies': " + value + ": must lie in 0..200"), std::string::npos) << msg;
   }
 }
+
+// harmonics_check_to's cost refused under its own key: 1000 was refused as 'harmonics'
+// on a curve of H = 1 (issue 49's sixth probe).
+TEST(Scenes, AHarmonicsCheckTooCostlyIsRefusedUnderItsKey) {
+  const auto dir = freshDir("check_to_key");
+  const auto msg = refusedBeforeFeWork(discResponseScene() + "    harmonics_check_to: 1000\n", dir);
+  EXPECT_NE(msg.find("disc_response/harmonics_check_to': harmonics up to 1000"), std::string::npos) << msg;
+  // The curve's own harmonics stay named as such.
+  const auto curve = refusedBeforeFeWork(std::regex_replace(discResponseScene(), std::regex("    harmonics: 1\n"),
+                                                            "    harmonics: 1000\n"),
+                                         dir);
+  EXPECT_NE(curve.find("disc_response/harmonics': "), std::string::npos) << curve;
+}
+
+// A scene refused after its mesh was built wrote mesh.exo and mesh.inp first (over a
+// complete run's in the same directory; issue 49's sixth probe): the copies are written
+// once the whole scene is checked.
+TEST(Scenes, ARefusedSceneWritesNoCopyOfItsMesh) {
+  const auto dir = freshDir("mesh_copies");
+  std::string yaml = discResponseScene() + "      muu: 0.3\n";  // under the excitation section
+  yaml = std::regex_replace(yaml, std::regex("    source: shrouded_sector\n"),
+                            "    source: shrouded_sector\n    write: [exodus, inp]\n");
+  const auto msg = refusedBeforeFeWork(yaml, dir);
+  EXPECT_NE(msg.find("disc_response/excitation/muu': unknown key"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "mesh.exo"));
+  EXPECT_FALSE(fs::exists(dir / "mesh.inp"));
+  // The same scene without the mistake, as a mesh scene, writes them.
+  const auto written = freshDir("mesh_copies_written");
+  scenes::SceneOverrides o;
+  o.outputDirectory = written.string();
+  scenes::runSceneText(std::regex_replace(discScene("mesh"), std::regex("    source: shrouded_sector\n"),
+                                          "    source: shrouded_sector\n    write: [exodus, inp]\n"),
+                       "mesh.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_TRUE(fs::exists(written / "mesh.exo"));
+  EXPECT_TRUE(fs::exists(written / "mesh.inp"));
+}
