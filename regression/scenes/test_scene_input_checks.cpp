@@ -1033,3 +1033,16 @@ TEST(Scenes, ARefusedSceneWritesNoCopyOfItsMesh) {
   EXPECT_TRUE(fs::exists(written / "mesh.exo"));
   EXPECT_TRUE(fs::exists(written / "mesh.inp"));
 }
+
+// An expansion point above the computed modes, knowable only once they are: said with the
+// scene's key and the number as a number (1e300 came out as 301 digits and "omega0:").
+TEST(Scenes, AnOmega0AboveTheModesIsNamedWithItsKey) {
+  const std::string at = "    check_frequencies: 0\n";
+  std::string yaml = discResponseScene();
+  yaml.replace(yaml.find(at), at.size(), at + "    omega0: 1.0e300\n");
+  const auto msg = failure(yaml, freshDir("omega0_huge"));
+  EXPECT_NE(msg.find("reduced_model/omega0: 1e+300 rad/s is not below the highest computed natural frequency"),
+            std::string::npos)
+      << msg;
+  EXPECT_LT(msg.size(), 400u) << msg;
+}

@@ -319,9 +319,18 @@ BuiltModel reduceModel(const std::shared_ptr<rom::NodalDiameterModel>& full, con
     }
     out.record->fullModelEigenvalues = modes.eigenvalues;
   } else {
+    // The expansion point named as the scene's key (the message said "omega0: 1e+300 ...").
+    const auto staticCompliance = [&] {
+      try {
+        return full->staticCompliance(spec.omega0, modes);
+      } catch (const InputError& e) {
+        if (e.where() == "omega0") throw InputError("reduced_model/omega0", e.problem());
+        throw;
+      }
+    };
     const auto hybrid =
         spec.kind == ReducedModelKind::Hybrid
-            ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes), spec.lossFactor)
+            ? std::make_shared<rom::HybridFrfModel>(modes, staticCompliance(), spec.lossFactor)
             : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
     out.model = hybrid;
     out.record = io::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies);
