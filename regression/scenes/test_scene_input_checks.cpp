@@ -1046,3 +1046,18 @@ TEST(Scenes, AnOmega0AboveTheModesIsNamedWithItsKey) {
       << msg;
   EXPECT_LT(msg.size(), 400u) << msg;
 }
+
+// Numbers in refusals as numbers: max_step 1e300 came out as 301 digits, a speed of -1e12
+// as -1000000000000.000000, an amplitude of 0 as 0.000000 (issue 49's sixth probe).
+TEST(Scenes, NumbersInRefusalsAreWrittenAsNumbers) {
+  const auto dir = freshDir("numbers");
+  const auto step = failure(discResponseScene() + "    continuation: {max_step: 1.0e300}\n", dir);
+  EXPECT_NE(step.find("continuation/max_step': 1e+300: must be at most 1"), std::string::npos) << step;
+  const auto speed = failure(std::regex_replace(smallScene(), std::regex("speed_rpm: 10000.0"), "speed_rpm: -1.0e12"), dir);
+  EXPECT_NE(speed.find("loads/speed_rpm': -1e+12: must be >= 0"), std::string::npos) << speed;
+  const auto force = failure(std::regex_replace(discResponseScene(), std::regex("amplitude: 20.0"), "amplitude: 0.0"), dir);
+  EXPECT_NE(force.find("excitation/amplitude': must be finite and not zero (a force to respond to), got 0"),
+            std::string::npos)
+      << force;
+  for (const auto& msg : {step, speed, force}) EXPECT_EQ(msg.find("000000"), std::string::npos) << msg;
+}
