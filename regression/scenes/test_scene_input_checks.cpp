@@ -1061,3 +1061,23 @@ TEST(Scenes, NumbersInRefusalsAreWrittenAsNumbers) {
       << force;
   for (const auto& msg : {step, speed, force}) EXPECT_EQ(msg.find("000000"), std::string::npos) << msg;
 }
+
+// An empty list inside a flow mapping, valid YAML, was "not a valid YAML scene ... Parser
+// failure at line 80 column 27" (issue 49's sixth probe): read as the same list in block
+// form is, refused by what it means for the key, or taken.
+TEST(Scenes, AnEmptyListInAFlowMappingIsReadAsInABlock) {
+  const auto dir = freshDir("flow_empty_list");
+  for (const std::string studies : {"    studies: {preload: []}\n", "    studies: {mu: [0.3], preload: [ ]}\n",
+                                    "    studies:\n      preload: []\n"}) {
+    const auto msg = failure(discResponseScene() + studies, dir);
+    EXPECT_NE(msg.find("disc_response/studies/preload': needs a list of values"), std::string::npos) << studies << msg;
+  }
+  const auto taken = freshDir("flow_empty_list_taken");
+  scenes::SceneOverrides o;
+  o.outputDirectory = taken.string();
+  scenes::runSceneText("cyclone:\n  analysis: mesh\n  mesh: {source: shrouded_sector, write: [], shrouded_sector: "
+                       "{sectors: 8, bore_radius: 70.0, mesh_size: 14.0}}\n",
+                       "flow.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_FALSE(fs::exists(taken / "mesh.exo"));
+  EXPECT_TRUE(fs::exists(taken / "run_manifest.txt"));
+}
