@@ -412,7 +412,7 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       {"      mu: 0.4\n", "      mu: 0.4\n      normal: [1.0, 0.0, 0.0]\n      tangent: [1.0, 0.0, 0.0]\n",
        "cyclone/disc_response/contact/normal, contact/tangent", "contact frame not orthonormal"},
       {"    modes: 20\n", "    modes: 20\n    check_frequencies: -1\n", "cyclone/reduced_model/check_frequencies",
-       "-1: must be >= 0"},
+       "-1: must lie in 0..200"},
       // Refused only after the reduced models were built, or late in the stage, or under
       // another key (a second probe of the shipped build).
       {"    engine_order: 3\n", "    engine_order: 3\n    family: 99\n", "cyclone/disc_response/family",
@@ -471,7 +471,7 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       // mm-N-s-t one ran the prestress and failed as "10000 rpm cannot be reached")
       {"    E: 1.16e5\n    nu: 0.34\n    rho: 4.507e-9\n", "    units: SI\n    E: 1.16e11\n    nu: 0.34\n    rho: 4507.0\n",
        "cyclone/mesh", "its outermost radius about the axis is 164"},
-      {"speed_rpm: 10000.0", "speed_rpm: -100.0", "cyclone/loads/speed_rpm", "-100.000000: must be >= 0"},
+      {"speed_rpm: 10000.0", "speed_rpm: -100.0", "cyclone/loads/speed_rpm", "-100: must be >= 0"},
       {"mesh_size: 12.0", "mesh_size: 1.0e300", "cyclone/mesh/shrouded_sector",
        "parameter 'mesh_size' must be at most"},
       {"    excitation:\n      node_set: mid_blade\n      direction: [0.0, 0.0, 1.0]\n      amplitude: 20.0\n", "",
