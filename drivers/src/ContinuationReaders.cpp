@@ -48,7 +48,7 @@ void readContinuationSteps(SceneSection& cs, continuation::ContinuationOptions& 
     for (const auto& [key, value] : {std::pair<const char*, double>{"initial_step", opt.initialStep},
                                      {"max_step", opt.maxStep}})
       if (value > 1)
-        throw InputError(cs.where(key), std::to_string(value) + ": must be at most 1 (the steps are in the scaled "
+        throw InputError(cs.where(key), numberText(value) + ": must be at most 1 (the steps are in the scaled "
                                         "space x / |x|, p / |to - from|, where 1 spans the whole range)");
   if (opt.maxSteps < 2) throw InputError(cs.where("max_points"), "must be at least 2");
   if (!(opt.turnAngle > 0 && opt.turnAngle < 1.5))

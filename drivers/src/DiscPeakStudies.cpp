@@ -11,6 +11,7 @@
 #include "cyclone/disc/DiscPeakFollowing.hpp"
 #include "cyclone/core/AtomicFile.hpp"
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/post/PeakFollowingFiles.hpp"
@@ -119,7 +120,7 @@ std::vector<PeakStudySpec> readPeakStudies(SceneSection peakStudies, const DiscR
     if (name != "loss_factor" && name != "speed")
       refValue = s.underKey("range", [&] { return disc::discReferenceValue(spec, *disc::discStudyParameterFromName(name)); });
     if (!(refValue >= range[0] && refValue <= range[1]))
-      throw InputError(s.where("range"), "must contain the scene's " + name + " (" + std::to_string(refValue) +
+      throw InputError(s.where("range"), "must contain the scene's " + name + " (" + numberText(refValue) +
                                              "): the following starts at the reference curve's peak");
     out.push_back({name, range[0], range[1], values, byContinuation});
   }

@@ -194,8 +194,13 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
       const int samples = spec.samples > 0 ? spec.samples : disc::discAutomaticSamples(set);
       std::ostringstream what;
       what << "harmonics up to " << top << " on " << pairs << (spec.contact.patches > 0 ? " shroud contact patches" : " shroud contact pairs");
+      // Named by the key that asks for the top level: the check's (harmonics_check_to 1000 was
+      // refused as 'harmonics' of H = 1, issue 49's sixth probe) or the curve's.
+      const char* costKey = plan.harmonicsCheckTo <= maxHarmonic ? "harmonics"
+                            : target.tolerance > 0                ? "harmonics_max"
+                                                                  : "harmonics_check_to";
       response::checkElementJacobianCost(samples, set.numCoefficients(), std::vector<int>(std::size_t(pairs), 3),
-                                         what.str(), d.where("harmonics"));
+                                         what.str(), d.where(costKey));
       // A sample count far above the automatic one: said with its cost on the curve's harmonics.
       if (spec.samples > 0) {
         const hbm::HarmonicSet curve(spec.harmonics);
@@ -212,9 +217,7 @@ DiscPlan readDiscPlan(SceneSection& scene, SceneSection& r, SceneSection& d, con
   }
   plan.cacheDir = cache == "off" ? std::string() : outDir + "/reduced_models";
   plan.modelSpec.checkFrequencies = r.getInt("check_frequencies", 12);
-  if (plan.modelSpec.checkFrequencies < 0)
-    throw InputError(r.where("check_frequencies"), std::to_string(plan.modelSpec.checkFrequencies) +
-                                                       ": must be >= 0 (0: no check of the reduced models)");
+  r.underKey("check_frequencies", [&] { disc::checkModelCheckFrequencies(plan.modelSpec.checkFrequencies); });
   plan.rebuildCache = cache == "rebuild" && !plan.cacheDir.empty();
   r.rejectUnknownKeys();
   disc::checkReducedModelCache(mesh, plan.modelSpec, plan.nds, plan.cacheDir);  // before the modes' and static work

@@ -6,6 +6,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/disc/DiscForcedResponse.hpp"
+#include "cyclone/disc/DiscPeakInTime.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "DiscStages.hpp"
 
@@ -40,8 +41,11 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
     disc::PeakInTimeOptions o;
     o.maxPeriods = td.getInt("periods", o.maxPeriods);
     o.stepsPerPeriod = td.getInt("steps_per_period", o.stepsPerPeriod);
-    if (o.maxPeriods < 100) throw InputError(td.where("periods"), "must be at least 100 (the steadiness is judged over the last 50)");
-    if (o.stepsPerPeriod < 16) throw InputError(td.where("steps_per_period"), "must be at least 16");
+    try {
+      disc::checkPeakInTimeOptions(o);
+    } catch (const InputError& e) {
+      throw InputError(td.where(e.where()), e.problem());
+    }
     td.rejectUnknownKeys();
     sweep.peakInTime = o;
   }
@@ -57,11 +61,14 @@ disc::DiscSweepOptions readSweepOptions(SceneSection& d, const DiscPlan& plan,
       throw InputError(ts.where("band"), "needs two increasing positive frequencies [from, to] in Hz");
     if (!band.empty()) o.fromHz = band[0], o.toHz = band[1];
     o.frequencies = ts.getInt("frequencies", 12);
-    if (o.frequencies < 2 || o.frequencies > 1000) throw InputError(ts.where("frequencies"), "must lie in 2..1000");
+    if (o.frequencies < 2) throw InputError(ts.where("frequencies"), "must lie in 2..1000 (a band)");
     o.periods = ts.getInt("periods", o.periods);
-    if (o.periods < 100) throw InputError(ts.where("periods"), "must be at least 100 (the steadiness is judged over the last 50)");
     o.stepsPerPeriod = ts.getInt("steps_per_period", o.stepsPerPeriod);
-    if (o.stepsPerPeriod < 16) throw InputError(ts.where("steps_per_period"), "must be at least 16");
+    try {  // the library's ranges, under this section's keys
+      disc::checkSweepInTimeOptions(o);
+    } catch (const InputError& e) {
+      throw InputError(ts.where(e.where()), e.problem());
+    }
     sweep.sweepPreloads = ts.getDoubleList("preloads", {});
     for (std::size_t i = 0; i < sweep.sweepPreloads.size(); ++i)
       if (!(sweep.sweepPreloads[i] >= 0 && std::isfinite(sweep.sweepPreloads[i])) ||

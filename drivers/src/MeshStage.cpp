@@ -39,14 +39,15 @@ mesh::ShroudedSectorParameters readSectorParameters(SceneSection s) {
 
 }  // namespace
 
-// The mesh stage: built-in generator or a file; optional copies in Exodus and .inp.
+// The mesh stage: built-in generator or a file; the formats of its copies checked.
 mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std::string& sceneDir,
-                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary,
-                     int& builtInSectors) {
+                     SceneSummary& summary, int& builtInSectors, std::vector<std::string>& copies) {
   builtInSectors = 0;
-  const bool writer = comm.getRank() == 0;
   const std::string source = s.getString("source", "shrouded_sector");
-  const auto write = s.getStringList("write", {});
+  copies = s.getStringList("write", {});
+  for (const auto& format : copies)
+    if (format != "exodus" && format != "inp")
+      throw InputError(s.where("write"), "unknown mesh format '" + format + "' (use exodus, inp)");
   SceneSection sector = s.section("shrouded_sector");
   mesh::Mesh mesh;
   if (source == "shrouded_sector") {
@@ -72,20 +73,22 @@ mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std:
   std::ostringstream line;
   line << "mesh: " << mesh.numNodes() << " nodes, " << mesh.numElements() << " elements (" << mesh.source << ")";
   summary.computed.push_back(line.str());
-  for (const auto& format : write) {
-    if (format == "exodus") {
-      const std::string path = outDir + "/mesh.exo";
-      if (writer) mesh::writeExodus(path, mesh);
-      summary.written.push_back(path);
-    } else if (format == "inp") {
-      const std::string path = outDir + "/mesh.inp";
-      if (writer) mesh::writeAbaqusInp(path, mesh);
-      summary.written.push_back(path);
-    } else {
-      throw InputError(s.where("write"), "unknown mesh format '" + format + "' (use exodus, inp)");
-    }
-  }
   return mesh;
+}
+
+void writeMeshCopies(const mesh::Mesh& mesh, const std::vector<std::string>& copies, const std::string& outDir,
+                     const linalg::Comm& comm, SceneSummary& summary) {
+  const bool writer = comm.getRank() == 0;
+  for (const auto& format : copies) {
+    const std::string path = outDir + (format == "exodus" ? "/mesh.exo" : "/mesh.inp");
+    if (writer) {
+      if (format == "exodus")
+        mesh::writeExodus(path, mesh);
+      else
+        mesh::writeAbaqusInp(path, mesh);
+    }
+    summary.written.push_back(path);
+  }
 }
 
 }  // namespace cyclone::scenes

@@ -244,7 +244,8 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
   }
   int builtInSectors = 0;
   Timer stage;
-  auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, outDir, *comm, summary, builtInSectors);
+  std::vector<std::string> meshCopies;
+  auto mesh = meshStage(scene.section("mesh"), overrides, sceneDir, summary, builtInSectors, meshCopies);
   // A node in no element has no stiffness: named here, not by the factorization's
   // "not positive definite" (issue 20). Writing the mesh alone does not need it.
   if (const auto orphans = mesh::orphanNodes(mesh);
@@ -268,6 +269,7 @@ void runStages(SceneSection& scene, const std::vector<std::string>& analyses, co
   if (wants("disc_response") || wants("reduced_model"))
     discPlan.emplace(readDiscStagePlan(scene, mesh, builtInSectors, wants("disc_response"), outDir, checkpoints));
   unreadNotes = checkUnreadSections(scene, mesh, builtInSectors, outDir, checkpoints);
+  writeMeshCopies(mesh, meshCopies, outDir, *comm, summary);
   if (staticProblem) {
     stage.restart();
     staticStage(*staticProblem, mesh, outDir, comm, summary);

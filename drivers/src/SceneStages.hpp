@@ -36,9 +36,14 @@ using response::ForcedResponseSetup;
 class RunManifest;
 
 /// The mesh stage (MeshStage.cpp): the built-in sector (`builtInSectors` its sector
-/// count, else 0) or a mesh file, its copies in `write`'s formats; the summary's line.
+/// count, else 0) or a mesh file, `write`'s formats checked into `copies`; the summary's line.
 mesh::Mesh meshStage(SceneSection s, const SceneOverrides& overrides, const std::string& sceneDir,
-                     const std::string& outDir, const linalg::Comm& comm, SceneSummary& summary, int& builtInSectors);
+                     SceneSummary& summary, int& builtInSectors, std::vector<std::string>& copies);
+/// The mesh's copies in those formats (mesh.exo, mesh.inp), written once the whole scene
+/// is checked: a scene refused after its mesh was built left them behind, over a complete
+/// run's (issue 49's sixth probe).
+void writeMeshCopies(const mesh::Mesh& mesh, const std::vector<std::string>& copies, const std::string& outDir,
+                     const linalg::Comm& comm, SceneSummary& summary);
 /// The static analysis and static.exo (StaticStage.cpp).
 void staticStage(const analysis::StaticProblem& problem, const mesh::Mesh& mesh, const std::string& outDir,
                  linalg::CommPtr comm, SceneSummary& summary);

@@ -62,11 +62,13 @@ void checkSceneLimits(const std::string& yaml, const std::string& source) {
 // each gave a parser state number): a UTF-8 byte-order mark (an editor's, valid YAML) is
 // dropped; a block list whose dashes stand at its key's own indentation (valid YAML, a
 // common style) is indented under its key; anchors and aliases (&name, *name) are refused
-// naming the line. `[]` becomes kEmptyList.
+// naming the line. A key's `[]` becomes kEmptyList.
 constexpr std::size_t kLongestPlainLine = 2000;
 
 std::string plainSceneText(const std::string& yaml, const std::string& source) {
-  static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\]([ \t]*(#.*)?)$)");
+  // A key's empty list at the line's end or inside a flow mapping ({preload: []} was
+  // "Parser failure at line 80 column 27"; issue 49's sixth probe).
+  static const std::regex emptyList(R"((:[ \t]*)\[[ \t]*\](?=[ \t]*([,}]|#|$)))");
   static const std::regex valuelessKey(R"(^[^#\s-][^:#]*:[ \t]*(#.*)?$)");
   static const std::regex anchorOrAlias(R"((^|[:\[,{-])[ \t]*[&*][A-Za-z0-9_.-]+)");
   const bool bom = yaml.rfind("\xEF\xBB\xBF", 0) == 0;
@@ -149,7 +151,7 @@ std::string plainSceneText(const std::string& yaml, const std::string& source) {
       keyIndent = std::regex_search(content, valuelessKey) ? indent : -1;
     }
     if (listIndent >= 0 && !blank) line.insert(0, "  ");
-    text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList + "$2") << "\n";
+    text << std::regex_replace(line, emptyList, std::string("$1") + kEmptyList) << "\n";
   }
   if (!anything)
     throw InputError(source, "the scene is empty (nothing but blank lines and comments): it needs `cyclone:` and its "

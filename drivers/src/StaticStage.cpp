@@ -7,6 +7,7 @@
 
 #include "cyclone/analysis/StaticAnalysis.hpp"
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Log.hpp"
 #include "cyclone/scenes/SceneSection.hpp"
 #include "SceneStages.hpp"
@@ -43,7 +44,7 @@ void readStaticSolver(SceneSection s, analysis::StaticProblem& problem) {
 void readStaticLoads(SceneSection l, const mesh::Mesh& mesh, analysis::StaticProblem& problem) {
   problem.speedRpm = l.getDouble("speed_rpm", 0.0);
   if (!(problem.speedRpm >= 0 && std::isfinite(problem.speedRpm)))
-    throw InputError(l.where("speed_rpm"), std::to_string(problem.speedRpm) +
+    throw InputError(l.where("speed_rpm"), numberText(problem.speedRpm) +
                                                ": must be >= 0 and finite (the centrifugal load does not depend on "
                                                "the sense of rotation: give its magnitude)");
   problem.axis = readRotationAxis(l);

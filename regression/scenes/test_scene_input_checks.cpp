@@ -412,7 +412,7 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       {"      mu: 0.4\n", "      mu: 0.4\n      normal: [1.0, 0.0, 0.0]\n      tangent: [1.0, 0.0, 0.0]\n",
        "cyclone/disc_response/contact/normal, contact/tangent", "contact frame not orthonormal"},
       {"    modes: 20\n", "    modes: 20\n    check_frequencies: -1\n", "cyclone/reduced_model/check_frequencies",
-       "-1: must be >= 0"},
+       "-1: must lie in 0..200"},
       // Refused only after the reduced models were built, or late in the stage, or under
       // another key (a second probe of the shipped build).
       {"    engine_order: 3\n", "    engine_order: 3\n    family: 99\n", "cyclone/disc_response/family",
@@ -471,7 +471,7 @@ TEST(Scenes, EveryKeyIsCheckedBeforeAnyWork) {
       // mm-N-s-t one ran the prestress and failed as "10000 rpm cannot be reached")
       {"    E: 1.16e5\n    nu: 0.34\n    rho: 4.507e-9\n", "    units: SI\n    E: 1.16e11\n    nu: 0.34\n    rho: 4507.0\n",
        "cyclone/mesh", "its outermost radius about the axis is 164"},
-      {"speed_rpm: 10000.0", "speed_rpm: -100.0", "cyclone/loads/speed_rpm", "-100.000000: must be >= 0"},
+      {"speed_rpm: 10000.0", "speed_rpm: -100.0", "cyclone/loads/speed_rpm", "-100: must be >= 0"},
       {"mesh_size: 12.0", "mesh_size: 1.0e300", "cyclone/mesh/shrouded_sector",
        "parameter 'mesh_size' must be at most"},
       {"    excitation:\n      node_set: mid_blade\n      direction: [0.0, 0.0, 1.0]\n      amplitude: 20.0\n", "",
@@ -902,4 +902,182 @@ TEST(Scenes, ALocaPointBudgetIsNamed) {
   for (const auto& line : summary.computed)
     said = said || line.find("the point budget (max_points 2) was reached") != std::string::npos;
   EXPECT_TRUE(said) << (summary.computed.empty() ? "" : summary.computed.front());
+}
+
+// A disc scene's mistakes in keys that only later stages read, refused before the first FE
+// solve and with nothing written: the log's first FE line stops the run (a refusal that
+// came after it fails the test at once, not after the minutes the work would take).
+namespace {
+
+struct FeWorkBegan {
+  std::string line;
+};
+
+// The refusal's message, or "" (a failure added) where the scene ran into FE work or
+// through; the output directory then holds nothing but the run's manifest.
+std::string refusedBeforeFeWork(const std::string& yaml, const fs::path& dir) {
+  log::setQuiet(false);
+  log::setSink([](log::Level, const std::string& m) {
+    for (const char* fe : {"static analysis", "prestress", "nodal diameter model", "reduced model", "forced response"})
+      if (m.find(fe) != std::string::npos) throw FeWorkBegan{m};
+  });
+  std::string message;
+  scenes::SceneOverrides o;
+  o.outputDirectory = dir.string();
+  try {
+    scenes::runSceneText(yaml, "bad.yaml", o, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "the scene ran through";
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const FeWorkBegan& e) {
+    ADD_FAILURE() << "FE work began before the scene was refused: " << e.line;
+  }
+  log::setSink({});
+  log::setQuiet(true);
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "run_manifest.txt" || name == ".cyclone_run.lock") << name << " written by a refused scene";
+  }
+  return message;
+}
+
+}  // namespace
+
+// disc_response/time_domain_check: not a section, too few periods or steps, an unknown key,
+// and a run too large for it (steps_per_period 1e9 ran out of memory after the curve;
+// periods x steps over the limit would integrate for hours; issue 49's sixth probe). A
+// matrix system takes no time-domain check: the key is refused there, named.
+TEST(Scenes, TimeDomainCheckIsRefusedBeforeAnyFeWork) {
+  const auto dir = freshDir("time_domain_check");
+  const std::string disc = discResponseScene();
+  struct Case {
+    std::string keys, named, why;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"600", "disc_response/time_domain_check'", "expects a section"},
+           {"[600]", "disc_response/time_domain_check'", "expects a section"},
+           {"{periods: 99}", "time_domain_check/periods'", "must be at least 100"},
+           {"{periods: 1.5}", "time_domain_check/periods'", "expected an integer"},
+           {"{steps_per_period: 15}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{steps_per_period: 65537}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{steps_per_period: 1000000000}", "time_domain_check/steps_per_period'", "must lie in 16..65536"},
+           {"{periods: 100000}", "time_domain_check/periods'", "more than the 2e+07 the check takes"},
+           {"{periods: 2000, steps_per_period: 65536}", "time_domain_check/steps_per_period'",
+            "more than the 2e+07 the check takes"},
+           {"{periods: 600, stepz: 64}", "time_domain_check/stepz'", "unknown key (known here: periods, steps_per_period)"},
+       }) {
+    const auto msg = refusedBeforeFeWork(disc + "    time_domain_check: " + c.keys + "\n", dir);
+    EXPECT_NE(msg.find("bad.yaml"), std::string::npos) << c.keys << ": " << msg;
+    EXPECT_NE(msg.find(c.named), std::string::npos) << c.keys << ": " << msg;
+    EXPECT_NE(msg.find(c.why), std::string::npos) << c.keys << ": " << msg;
+  }
+  // The largest run taken: periods x steps_per_period at the limit, 20000 x 1000.
+  const auto taken = linesUntil(disc + "    time_domain_check: {periods: 20000, steps_per_period: 1000}\n",
+                                freshDir("time_domain_check_taken"), "nodal diameter model");
+  EXPECT_NE(taken.back().find("nodal diameter model"), std::string::npos) << joined(taken);
+  // A matrix system: at the top level an unknown key, inside disc_response a section it does not read.
+  const auto top = refusedBeforeFeWork(duffingSceneWith("  samples: 64\n", "  samples: 64\n  time_domain_check: {periods: 600}\n"), dir);
+  EXPECT_NE(top.find("cyclone/time_domain_check': unknown key"), std::string::npos) << top;
+  const auto nested = refusedBeforeFeWork(
+      duffingSceneWith("  samples: 64\n", "  samples: 64\n  disc_response:\n    time_domain_check: {periods: 600}\n"), dir);
+  EXPECT_NE(nested.find("cyclone/disc_response': is not read by a matrix system's forced_response"), std::string::npos)
+      << nested;
+}
+
+// reduced_model/check_frequencies: 100000 built the models and ran the check for hours
+// (issue 49's sixth probe); refused before any FE work, with the bound and why.
+TEST(Scenes, CheckFrequenciesBeyondTheBoundAreRefusedBeforeAnyFeWork) {
+  const auto dir = freshDir("check_frequencies");
+  const std::string disc = discResponseScene();
+  const std::string at = "    check_frequencies: 0\n";
+  for (const std::string value : {"100000", "201", "-1"}) {
+    std::string yaml = disc;
+    yaml.replace(yaml.find(at), at.size(), "    check_frequencies: " + value + "\n");
+    const auto msg = refusedBeforeFeWork(yaml, dir);
+    EXPECT_NE(msg.find("reduced_model/check_frequencies': " + value + ": must lie in 0..200"), std::string::npos) << msg;
+  }
+}
+
+// harmonics_check_to's cost refused under its own key: 1000 was refused as 'harmonics'
+// on a curve of H = 1 (issue 49's sixth probe).
+TEST(Scenes, AHarmonicsCheckTooCostlyIsRefusedUnderItsKey) {
+  const auto dir = freshDir("check_to_key");
+  const auto msg = refusedBeforeFeWork(discResponseScene() + "    harmonics_check_to: 1000\n", dir);
+  EXPECT_NE(msg.find("disc_response/harmonics_check_to': harmonics up to 1000"), std::string::npos) << msg;
+  // The curve's own harmonics stay named as such.
+  const auto curve = refusedBeforeFeWork(std::regex_replace(discResponseScene(), std::regex("    harmonics: 1\n"),
+                                                            "    harmonics: 1000\n"),
+                                         dir);
+  EXPECT_NE(curve.find("disc_response/harmonics': "), std::string::npos) << curve;
+}
+
+// A scene refused after its mesh was built wrote mesh.exo and mesh.inp first (over a
+// complete run's in the same directory; issue 49's sixth probe): the copies are written
+// once the whole scene is checked.
+TEST(Scenes, ARefusedSceneWritesNoCopyOfItsMesh) {
+  const auto dir = freshDir("mesh_copies");
+  std::string yaml = discResponseScene() + "      muu: 0.3\n";  // under the excitation section
+  yaml = std::regex_replace(yaml, std::regex("    source: shrouded_sector\n"),
+                            "    source: shrouded_sector\n    write: [exodus, inp]\n");
+  const auto msg = refusedBeforeFeWork(yaml, dir);
+  EXPECT_NE(msg.find("disc_response/excitation/muu': unknown key"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir / "mesh.exo"));
+  EXPECT_FALSE(fs::exists(dir / "mesh.inp"));
+  // The same scene without the mistake, as a mesh scene, writes them.
+  const auto written = freshDir("mesh_copies_written");
+  scenes::SceneOverrides o;
+  o.outputDirectory = written.string();
+  scenes::runSceneText(std::regex_replace(discScene("mesh"), std::regex("    source: shrouded_sector\n"),
+                                          "    source: shrouded_sector\n    write: [exodus, inp]\n"),
+                       "mesh.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_TRUE(fs::exists(written / "mesh.exo"));
+  EXPECT_TRUE(fs::exists(written / "mesh.inp"));
+}
+
+// An expansion point above the computed modes, knowable only once they are: said with the
+// scene's key and the number as a number (1e300 came out as 301 digits and "omega0:").
+TEST(Scenes, AnOmega0AboveTheModesIsNamedWithItsKey) {
+  const std::string at = "    check_frequencies: 0\n";
+  std::string yaml = discResponseScene();
+  yaml.replace(yaml.find(at), at.size(), at + "    omega0: 1.0e300\n");
+  const auto msg = failure(yaml, freshDir("omega0_huge"));
+  EXPECT_NE(msg.find("reduced_model/omega0: 1e+300 rad/s is not below the highest computed natural frequency"),
+            std::string::npos)
+      << msg;
+  EXPECT_LT(msg.size(), 400u) << msg;
+}
+
+// Numbers in refusals as numbers: max_step 1e300 came out as 301 digits, a speed of -1e12
+// as -1000000000000.000000, an amplitude of 0 as 0.000000 (issue 49's sixth probe).
+TEST(Scenes, NumbersInRefusalsAreWrittenAsNumbers) {
+  const auto dir = freshDir("numbers");
+  const auto step = failure(discResponseScene() + "    continuation: {max_step: 1.0e300}\n", dir);
+  EXPECT_NE(step.find("continuation/max_step': 1e+300: must be at most 1"), std::string::npos) << step;
+  const auto speed = failure(std::regex_replace(smallScene(), std::regex("speed_rpm: 10000.0"), "speed_rpm: -1.0e12"), dir);
+  EXPECT_NE(speed.find("loads/speed_rpm': -1e+12: must be >= 0"), std::string::npos) << speed;
+  const auto force = failure(std::regex_replace(discResponseScene(), std::regex("amplitude: 20.0"), "amplitude: 0.0"), dir);
+  EXPECT_NE(force.find("excitation/amplitude': must be finite and not zero (a force to respond to), got 0"),
+            std::string::npos)
+      << force;
+  for (const auto& msg : {step, speed, force}) EXPECT_EQ(msg.find("000000"), std::string::npos) << msg;
+}
+
+// An empty list inside a flow mapping, valid YAML, was "not a valid YAML scene ... Parser
+// failure at line 80 column 27" (issue 49's sixth probe): read as the same list in block
+// form is, refused by what it means for the key, or taken.
+TEST(Scenes, AnEmptyListInAFlowMappingIsReadAsInABlock) {
+  const auto dir = freshDir("flow_empty_list");
+  for (const std::string studies : {"    studies: {preload: []}\n", "    studies: {mu: [0.3], preload: [ ]}\n",
+                                    "    studies:\n      preload: []\n"}) {
+    const auto msg = failure(discResponseScene() + studies, dir);
+    EXPECT_NE(msg.find("disc_response/studies/preload': needs a list of values"), std::string::npos) << studies << msg;
+  }
+  const auto taken = freshDir("flow_empty_list_taken");
+  scenes::SceneOverrides o;
+  o.outputDirectory = taken.string();
+  scenes::runSceneText("cyclone:\n  analysis: mesh\n  mesh: {source: shrouded_sector, write: [], shrouded_sector: "
+                       "{sectors: 8, bore_radius: 70.0, mesh_size: 14.0}}\n",
+                       "flow.yaml", o, Tpetra::getDefaultComm());
+  EXPECT_FALSE(fs::exists(taken / "mesh.exo"));
+  EXPECT_TRUE(fs::exists(taken / "run_manifest.txt"));
 }

@@ -339,7 +339,7 @@ void checkDiscResponse(const mesh::Mesh& mesh, int sectors, const mesh::Rotation
   if (!(spec.excitation.direction.stableNorm() > 0)) throw InputError("excitation/direction", "must not be zero");
   if (!std::isfinite(spec.excitation.amplitude) || spec.excitation.amplitude == 0)
     throw InputError("excitation/amplitude", "must be finite and not zero (a force to respond to), got " +
-                                                 std::to_string(spec.excitation.amplitude));
+                                                 numberText(spec.excitation.amplitude));
   // (the same bound the trace holds it to, response::checkExcitationSize, here before the
   // models: 1e300 was refused after them, as a response too small)
   if (!(std::abs(spec.excitation.amplitude) < response::kLargestTraceable))

@@ -80,13 +80,33 @@ std::pair<double, double> modulationRange(const std::vector<double>& a) {
   return {*std::max_element(tail, a.end()), *std::min_element(tail, a.end())};
 }
 
+void checkPeakInTimeOptions(const PeakInTimeOptions& o) {
+  if (o.maxPeriods < 2 * 50)
+    throw InputError("periods", std::to_string(o.maxPeriods) + ": must be at least 100 (the steadiness is judged over "
+                                                               "the last 50)");
+  if (o.stepsPerPeriod < 16 || o.stepsPerPeriod > kPeakInTimeMaxStepsPerPeriod)
+    throw InputError("steps_per_period", std::to_string(o.stepsPerPeriod) + ": must lie in 16.." +
+                                             std::to_string(kPeakInTimeMaxStepsPerPeriod) +
+                                             " (the ring's motion over a period is held in memory, twice)");
+  if (const double steps = double(o.maxPeriods) * double(o.stepsPerPeriod); steps > double(kPeakInTimeMaxSteps))
+    throw InputError(o.maxPeriods / 600.0 >= o.stepsPerPeriod / 1024.0 ? "periods" : "steps_per_period",
+                     std::to_string(o.maxPeriods) + " periods of " + std::to_string(o.stepsPerPeriod) +
+                         " steps are " + numberText(steps) + " steps, more than the " +
+                         numberText(double(kPeakInTimeMaxSteps)) +
+                         " the check takes (the default's 600 x 1024 is 614400, about 70 s on the default disc at mesh "
+                         "size 12; each step updates every sector's modes and contacts)");
+  if (!(o.residualHz > 0)) throw InputError("residual frequency", "must be positive");
+}
+
 PeakInTime integratePeakInTime(const response::ForcedResponseSetup& setup, const Eigen::VectorXd& x, double omega,
                                long sectors, int engineOrder, const PeakInTimeOptions& options) {
   const auto& system = *setup.system;
   if (setup.outputDofs.empty()) throw InputError("disc_response/time_domain_check", "needs an output DOF");
-  if (!(options.stepsPerPeriod >= 16) || !(options.maxPeriods >= 2 * 50) || !(options.residualHz > 0))
-    throw InputError("disc_response/time_domain_check",
-                     "steps_per_period must be at least 16, periods at least 100 and the residual frequency positive");
+  try {
+    checkPeakInTimeOptions(options);
+  } catch (const InputError& e) {
+    throw InputError("disc_response/time_domain_check/" + e.where(), e.problem());
+  }
   Timer timer;
   const auto timeSystem = causalTimeSystem(setup, sectors, engineOrder, options.residualHz, "disc_response/time_domain_check");
   const int out = setup.outputDofs.front();

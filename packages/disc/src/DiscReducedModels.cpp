@@ -165,6 +165,14 @@ double ReducedModelCheck::maxError() const {
   return e;
 }
 
+void checkModelCheckFrequencies(int frequencies) {
+  if (frequencies < 0 || frequencies > kMaxCheckFrequencies)
+    throw InputError("check_frequencies",
+                     std::to_string(frequencies) + ": must lie in 0.." + std::to_string(kMaxCheckFrequencies) +
+                         " (0: no check; each frequency is a complex factorization of the nodal diameter's full FE "
+                         "system, spread from half the first natural frequency to the fifth's)");
+}
+
 std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,
                                                    const DiscModelSpec& spec, linalg::CommPtr comm) {
   if (spec.prestress == cyclic::PrestressKind::None || spec.rpm == 0) return std::nullopt;
@@ -311,9 +319,18 @@ BuiltModel reduceModel(const std::shared_ptr<rom::NodalDiameterModel>& full, con
     }
     out.record->fullModelEigenvalues = modes.eigenvalues;
   } else {
+    // The expansion point named as the scene's key (the message said "omega0: 1e+300 ...").
+    const auto staticCompliance = [&] {
+      try {
+        return full->staticCompliance(spec.omega0, modes);
+      } catch (const InputError& e) {
+        if (e.where() == "omega0") throw InputError("reduced_model/omega0", e.problem());
+        throw;
+      }
+    };
     const auto hybrid =
         spec.kind == ReducedModelKind::Hybrid
-            ? std::make_shared<rom::HybridFrfModel>(modes, full->staticCompliance(spec.omega0, modes), spec.lossFactor)
+            ? std::make_shared<rom::HybridFrfModel>(modes, staticCompliance(), spec.lossFactor)
             : std::make_shared<rom::HybridFrfModel>(rom::HybridFrfModel::modalTruncation(modes, spec.lossFactor));
     out.model = hybrid;
     out.record = io::makeReducedModelRecord(*hybrid, k, spec.sectors, spec.rpm, nodes, directions, copies);
@@ -380,6 +397,11 @@ DiscReducedModels buildDiscReducedModels(const mesh::Mesh& mesh, const DiscModel
                                          const std::vector<int>& nodalDiameters, const std::string& cacheDirectory,
                                          linalg::CommPtr comm) {
   if (spec.modes < 1) throw InputError("reduced_model/modes", "must be at least 1");
+  try {
+    checkModelCheckFrequencies(spec.checkFrequencies);
+  } catch (const InputError& e) {
+    throw InputError("reduced_model/" + e.where(), e.problem());
+  }
   if (nodalDiameters.empty()) throw InputError("reduced_model", "no nodal diameters asked for");
   Timer timer;
   DiscReducedModels out;

@@ -19,18 +19,34 @@ namespace {
 
 constexpr const char* kKey = "disc_response/time_domain_sweep";
 
+// The options with the band required (the scene's default band is set after the curve).
 void checkOptions(const SweepInTimeOptions& o) {
-  if (o.frequencies < 1 || o.frequencies > 1000)
-    throw InputError(std::string(kKey) + "/frequencies", "must lie in 1..1000");
-  if (!(o.fromHz > 0 && std::isfinite(o.toHz) && (o.toHz > o.fromHz || (o.frequencies == 1 && o.toHz == o.fromHz))))
-    throw InputError(std::string(kKey) + "/band", "needs [from, to] in Hz with 0 < from < to");
-  if (o.periods < 100) throw InputError(std::string(kKey) + "/periods", "must be at least 100 (the steadiness is judged over the last 50)");
-  if (o.stepsPerPeriod < 16) throw InputError(std::string(kKey) + "/steps_per_period", "must be at least 16");
-  if (!(o.residualHz > 0) || !(o.amplitudeTolerance > 0))
-    throw InputError(kKey, "the residual frequency and the amplitude tolerance must be positive");
+  if (o.fromHz == 0 && o.toHz == 0) throw InputError(std::string(kKey) + "/band", "needs [from, to] in Hz");
+  try {
+    checkSweepInTimeOptions(o);
+  } catch (const InputError& e) {
+    throw InputError(std::string(kKey) + "/" + e.where(), e.problem());
+  }
 }
 
 }  // namespace
+
+void checkSweepInTimeOptions(const SweepInTimeOptions& o) {
+  if (o.frequencies < 1 || o.frequencies > 1000) throw InputError("frequencies", "must lie in 1..1000");
+  const bool band = !(o.fromHz == 0 && o.toHz == 0);  // 0, 0: the caller's default, set later
+  if (band && !(o.fromHz > 0 && std::isfinite(o.toHz) && (o.toHz > o.fromHz || (o.frequencies == 1 && o.toHz == o.fromHz))))
+    throw InputError("band", "needs [from, to] in Hz with 0 < from < to");
+  if (o.periods < 100) throw InputError("periods", "must be at least 100 (the steadiness is judged over the last 50)");
+  // The time-domain check's limits, per frequency (the first frequency's run, from rest,
+  // takes up to twice the periods).
+  if (o.stepsPerPeriod < 16 || o.stepsPerPeriod > kPeakInTimeMaxStepsPerPeriod)
+    throw InputError("steps_per_period", "must lie in 16.." + std::to_string(kPeakInTimeMaxStepsPerPeriod));
+  if (2.0 * double(o.periods) * double(o.stepsPerPeriod) > double(kPeakInTimeMaxSteps))
+    throw InputError("periods", "twice the periods times steps_per_period (the first frequency's run) must be at "
+                                "most " + numberText(double(kPeakInTimeMaxSteps)));
+  if (!(o.residualHz > 0) || !(o.amplitudeTolerance > 0))
+    throw InputError("residual frequency", "the residual frequency and the amplitude tolerance must be positive");
+}
 
 std::size_t SweepInTime::largestIndex() const {
   std::size_t best = 0;

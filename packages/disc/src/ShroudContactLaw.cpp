@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cyclone/core/Error.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/disc/ShroudContactPatches.hpp"
 #include "cyclone/mesh/TributaryArea.hpp"
 
@@ -19,7 +20,7 @@ ShroudContactValues shroudContactValues(const mesh::Mesh& mesh, const mesh::Node
     for (const auto& [name, value] : {std::pair<const char*, double>{"kn", contact.kn}, {"kt", contact.kt},
                                       {"preload", contact.preload}})
       if (!(std::isfinite(value) && value >= 0))
-        throw InputError(std::string("contact/") + name, "must be finite and >= 0, got " + std::to_string(value));
+        throw InputError(std::string("contact/") + name, "must be finite and >= 0, got " + numberText(value));
   const std::size_t n = pairs.right.size();
   if (contact.patches < 0 || std::size_t(contact.patches) > n)
     throw InputError("contact/patches", "must lie in 0.." + std::to_string(n) + " (0: every node pair a contact; " +

@@ -10,6 +10,7 @@
 
 #include "cyclone/core/Error.hpp"
 #include "cyclone/core/Log.hpp"
+#include "cyclone/core/NumberText.hpp"
 #include "cyclone/core/Timer.hpp"
 #include "cyclone/cyclic/CyclicModalAnalysis.hpp"
 #include "cyclone/cyclic/CyclicTransform.hpp"
@@ -370,15 +371,15 @@ StaticCompliance NodalDiameterModel::staticCompliance(double omega0, const Retai
     log::info("static compliance: " + note.str());
   } else {
     if (out.shift >= modes.eigenvalues.back())
-      throw InputError("omega0", std::to_string(omega0) + " rad/s is not below the highest computed natural "
-                                 "frequency (" + std::to_string(hz(modes.eigenvalues.back())) +
+      throw InputError("omega0", numberText(omega0) + " rad/s is not below the highest computed natural "
+                                 "frequency (" + numberText(hz(modes.eigenvalues.back())) +
                                  " Hz): compute more modes or lower omega0");
     for (int j = 0; j < modes.numModes(); ++j) {
       const double l = modes.eigenvalues[j];
       if (std::abs(l - out.shift) <= 1e-3 * std::abs(l))
-        throw InputError("omega0", std::to_string(omega0) + " rad/s (" + std::to_string(hz(out.shift)) +
+        throw InputError("omega0", numberText(omega0) + " rad/s (" + numberText(hz(out.shift)) +
                                        " Hz) is on natural frequency " + std::to_string(j / modes.copies + 1) + " (" +
-                                       std::to_string(hz(l)) + " Hz): K - omega0^2 M is singular there; "
+                                       numberText(hz(l)) + " Hz): K - omega0^2 M is singular there; "
                                        "choose omega0 away from the natural frequencies (0 for a held sector)");
     }
     note << "sigma = omega0^2 = " << out.shift << " (rad/s)^2";

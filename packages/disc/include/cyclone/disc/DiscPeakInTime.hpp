@@ -88,6 +88,20 @@ hbm::TravellingWaveOptions travellingWaveOptions(const response::ForcedResponseS
 /// {largest, smallest}.
 std::pair<double, double> modulationRange(const std::vector<double>& amplitudeHistory);
 
+/// The largest run asked for: periods x steps per period steps (the default's 600 x 1024 is
+/// 614 400, about 70 s on the default disc at mesh size 12), and the steps per period (the
+/// ring's motion over a period is held twice: 2 x steps x DOFs doubles).
+constexpr long kPeakInTimeMaxSteps = 20'000'000;
+constexpr int kPeakInTimeMaxStepsPerPeriod = 65536;
+
+/// The options' limits, checked before any work: InputError naming the key under
+/// disc_response/time_domain_check ("periods" or "steps_per_period") where periods < 100
+/// (the steadiness is judged over the last 50), steps_per_period < 16 or above
+/// kPeakInTimeMaxStepsPerPeriod, or periods x steps_per_period above kPeakInTimeMaxSteps
+/// (a steps_per_period of 1e9 ran out of memory after the curve; periods 2e9 of a motion
+/// that does not settle would have run for ever; issue 49's sixth probe).
+void checkPeakInTimeOptions(const PeakInTimeOptions& options);
+
 /// The ring integrated in time at the point `x` (a solution of setup's system at
 /// `omega`), from that periodic state; `sectors` and `engineOrder` give the phases the
 /// excitation and contacts reach (multiples of gcd(engine order, sectors)). InputError

@@ -49,6 +49,15 @@ struct DiscModelSpec {
   int checkFrequencies = 12;            ///< how many frequencies the check spans (first to fifth family)
 };
 
+/// The most frequencies the check of a reduced model spans (log-spaced from half the first
+/// natural frequency to the fifth's: 200 are steps of about 1.5 %); each one is a complex
+/// factorization of the nodal diameter's full FE system.
+constexpr int kMaxCheckFrequencies = 200;
+
+/// DiscModelSpec::checkFrequencies against 0..kMaxCheckFrequencies: InputError naming
+/// "check_frequencies" (100000 ran the check for hours, issue 49's sixth probe).
+void checkModelCheckFrequencies(int frequencies);
+
 /// The centrifugal prestress the spec's models are built on (k = 0 transform of `sector`);
 /// none when spec.prestress is None or the speed is 0.
 std::optional<cyclic::PrestressState> discPrestress(const mesh::Mesh& mesh, const cyclic::CyclicSector& sector,

@@ -67,6 +67,11 @@ struct SweepInTime {
   std::string text() const;  ///< one line: the largest amplitude, where, steady or its range
 };
 
+/// The options' ranges, before any work: InputError whose `where` is the scene key under
+/// disc_response/time_domain_sweep (band, frequencies, periods, steps_per_period); a band
+/// of 0, 0 (the caller's default, set later) passes.
+void checkSweepInTimeOptions(const SweepInTimeOptions& options);
+
 /// The band swept in time on setup's system (a disc's: makeDiscForcedResponse); `sectors`
 /// and `engineOrder` give the phases the excitation and contacts reach. `progress` (may
 /// be empty) is told each frequency's point as it is done. InputError naming
