@@ -361,7 +361,7 @@ def forced_response(mesh, models, engine_order, harmonics=(0, 1, 2, 3), preload=
     of harmonics 0..harmonics_max (nodal_diameters_for; an InputError naming models before
     the trace otherwise). time_domain_check: the peak integrated in time, a dict as the
     scenes' disc_response/time_domain_check: {"periods": 600 (>= 100), "steps_per_period":
-    1024 (>= 16)}, the result's time_domain_check (a PeakInTime; None without a peak); its
+    1024 (>= 16), at most 65536 steps a period and 2e7 steps in all}, the result's time_domain_check (a PeakInTime; None without a peak); its
     models must hold every nodal diameter the engine order reaches (harmonics 0..4 for EO 3
     on 24 sectors)."""
     spec = _core.DiscResponseSpec()

@@ -235,6 +235,11 @@ void bindDiscResponse(py::module_& m) {
           disc::PeakInTimeOptions o;
           o.maxPeriods = timeDomainCheck["periods"].cast<int>();
           o.stepsPerPeriod = timeDomainCheck["steps_per_period"].cast<int>();
+          try {  // the library's limits (its upper ones too) before the trace, under the argument's key
+            disc::checkPeakInTimeOptions(o);
+          } catch (const InputError& e) {
+            throw InputError("time_domain_check/" + e.where(), e.problem());
+          }
           sweep.peakInTime = o;
         }
         applyDiscContinuation(continuation, sweep);

@@ -141,6 +141,9 @@ REFUSALS = [
     (dict(time_domain_check={"periods": 99}), "time_domain_check/periods"),
     (dict(time_domain_check={"periods": 150.5}), "time_domain_check/periods"),
     (dict(time_domain_check={"steps_per_period": 15}), "time_domain_check/steps_per_period"),
+    # the library's upper limits, before the trace (they were met only after it)
+    (dict(time_domain_check={"steps_per_period": 70000}), "time_domain_check/steps_per_period"),
+    (dict(time_domain_check={"periods": 100000}), "time_domain_check/periods"),
     (dict(time_domain_check={"period": 100}), "time_domain_check"),
     (dict(time_domain_check=100), "time_domain_check"),
 ]
