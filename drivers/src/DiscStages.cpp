@@ -126,7 +126,9 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
   summary.stages.push_back(
       {"forced response (H = " + std::to_string(solved.setup.system->aft().harmonics().maxHarmonic()) + ", " +
            std::to_string(reference.branch.points.size()) + " points)",
-       timer.seconds(),
+       // the time domain's own stages are not the curve's (they have their rows)
+       timer.seconds() - (solved.peakInTime ? solved.peakInTime->seconds : 0.0) -
+           (solved.sweepsInTime ? solved.sweepsInTime->seconds : 0.0),
        "Newton tolerance " + numberText(sweep.continuation.tolerance) + " (residual relative to the forces); " +
            reference.samplesCheck.text + "; " + reference.harmonicsCheck.text});
   // The headline: the peak at the highest harmonic count reached, converged or labelled
@@ -139,6 +141,12 @@ disc::DiscForcedResponse referenceStage(const mesh::Mesh& mesh, const DiscReduce
                                  *solved.peakInTime);
       summary.written.push_back(outDir + "/disc_peak_in_time.csv");
       summary.written.push_back(outDir + "/disc_peak_in_time.svg");
+      const auto& td = *solved.peakInTime;
+      summary.stages.push_back({"time-domain check at the peak", td.seconds,
+                                "the ring of " + std::to_string(td.sectors) + " sectors by the central difference, " +
+                                    std::to_string(td.stepsPerPeriod) + " steps a period, " +
+                                    std::to_string(td.periods) + " periods: " +
+                                    (td.steady() ? "settled" : "not settled (its range is the answer)")});
     }
     if (solved.beyondSmallDisplacements()) {
       const std::string why = "disc_frc: the peak's motion, " + numberText(solved.headline.peak.value) +

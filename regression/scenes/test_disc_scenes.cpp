@@ -763,6 +763,14 @@ TEST(Scenes, ATimeDomainSweepTablesEveryPreloadAndMarksTheSmallest) {
   }
   EXPECT_TRUE(fs::exists(dir / "disc_time_sweep.svg"));
   EXPECT_TRUE(fs::exists(dir / "disc_time_sweep_preload.svg"));
+  // The sweep's time is its own stage's, not the curve's (the curve's row held both).
+  double curveSeconds = -1, sweepSeconds = -1;
+  for (const auto& st : summary.stages) {
+    if (st.stage.rfind("forced response", 0) == 0) curveSeconds = st.seconds;
+    if (st.stage.rfind("time-domain sweep", 0) == 0) sweepSeconds = st.seconds;
+  }
+  ASSERT_GT(sweepSeconds, 0.0);
+  EXPECT_LT(curveSeconds, sweepSeconds);  // the thin disc's curve takes about a second, its sweep ten
   // The report shows both figures and the table.
   std::ifstream in(dir / "report.md");
   const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
